@@ -1,0 +1,83 @@
+// The IMU emulator: sensor profile + motion source + settings -> one sample per step.
+// Sample k covers [start_time_s + k dt, start_time_s + (k+1) dt]; its stamp is the END of the
+// interval (so the first stamp is start_time_s + dt). Rates are exact interval averages and
+// increments are average * dt. Same profile, scenario and settings (seed) -> bit-identical output.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <memory>
+
+#include "imu_lab/emulator/motion_source.h"
+#include "imu_lab/emulator/scenario.h"
+#include "imu_lab/emulator/sensor_profile.h"
+
+namespace imu_lab {
+namespace emulator {
+
+struct EmulatorSettings {
+  double rate_hz = 100.0;
+  double start_time_s = 0.0;  // from the config, never now()
+  std::uint64_t seed = 1;
+};
+
+// Truth at the sample's stamp.
+struct TruthSample {
+  double stamp_s = 0.0;
+  Eigen::Quaterniond attitude_body_to_enu = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();    // body axes
+  Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();   // body axes
+  double latitude_rad = 0.0;
+  double longitude_rad = 0.0;
+  double height_m = 0.0;
+  Eigen::Vector3d velocity_enu_m_s = Eigen::Vector3d::Zero();
+  double temperature_c = 0.0;
+};
+
+struct ImuSample {
+  double stamp_s = 0.0;  // end of the interval
+  Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();   // interval average
+  Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();  // interval average
+  Eigen::Vector3d delta_angle_rad = Eigen::Vector3d::Zero();      // = average * dt
+  Eigen::Vector3d delta_velocity_m_s = Eigen::Vector3d::Zero();   // = average * dt
+  double temperature_c = 0.0;
+  // Per-axis variance of one sample's stationary noise (for sensor_msgs/Imu covariance
+  // diagonals): white, white-angle, quantization, Markov, flicker bank. Excludes biases, random
+  // walk and deterministic terms.
+  Eigen::Vector3d angular_rate_variance_rad2_s2 = Eigen::Vector3d::Zero();
+  Eigen::Vector3d specific_force_variance_m2_s4 = Eigen::Vector3d::Zero();
+  TruthSample truth;
+};
+
+class TriadChannel;  // sensor_channel.h
+
+class ImuEmulator {
+ public:
+  ImuEmulator(const SensorProfile& profile, std::unique_ptr<MotionSource> motion,
+              const EmulatorSettings& settings);
+  ImuEmulator(const SensorProfile& profile, const ScenarioConfig& scenario,
+              const EmulatorSettings& settings);
+  ~ImuEmulator();
+  ImuEmulator(ImuEmulator&&) noexcept;
+  ImuEmulator& operator=(ImuEmulator&&) noexcept;
+
+  ImuSample next();
+
+  double sample_interval_s() const { return interval_s_; }
+  std::uint64_t samples_emitted() const { return sample_index_; }
+  const SensorProfile& profile() const { return profile_; }
+  const EmulatorSettings& settings() const { return settings_; }
+
+ private:
+  SensorProfile profile_;
+  EmulatorSettings settings_;
+  double interval_s_ = 0.0;
+  std::uint64_t sample_index_ = 0;
+  std::unique_ptr<MotionSource> motion_;
+  std::unique_ptr<TriadChannel> gyro_;
+  std::unique_ptr<TriadChannel> accelerometer_;
+};
+
+}  // namespace emulator
+}  // namespace imu_lab

@@ -1,0 +1,57 @@
+// Sensor error-model profile: per triad, output = b + K * input + nonlinearity + g-sensitivity
+// + noise (seed 001 section 3.3), with K = I + diag(scale_factor_error) + misalignment.
+// Loaded from YAML with strict validation (every refusal is a ConfigError naming the dotted key).
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "imu_lab/noise/process_parameters.h"
+
+namespace YAML {
+class Node;
+}
+
+namespace imu_lab {
+namespace emulator {
+
+// One triad (gyro or accelerometer). "u" = rad/s (gyro) or m/s^2 (accelerometer); "v" = rad or m/s.
+struct TriadErrorModel {
+  Eigen::Vector3d bias_fixed = Eigen::Vector3d::Zero();           // [u]
+  Eigen::Vector3d bias_turn_on_sigma = Eigen::Vector3d::Zero();   // run-to-run 1-sigma [u]
+  Eigen::Vector3d scale_factor_error_ppm = Eigen::Vector3d::Zero();
+  // Off-diagonal small-angle misalignment / non-orthogonality [rad]; the diagonal is zero.
+  Eigen::Matrix3d misalignment_rad = Eigen::Matrix3d::Zero();
+  // output_i += c_i * input_i^2  [1/u]
+  Eigen::Vector3d quadratic_nonlinearity_per_unit = Eigen::Vector3d::Zero();
+  // Gyro only: rate error = G * specific_force  [rad/s per m/s^2]. Zero for accelerometers.
+  Eigen::Matrix3d g_sensitivity = Eigen::Matrix3d::Zero();
+  // Anti-alias low-pass corner (first order); 0 = none. Applied exactly to the white rate noise
+  // (white -> Gauss-Markov); see sensor_channel.h for what it does not filter.
+  double bandwidth_hz = 0.0;
+  // Physical quantization: cumulative increment rounded to whole pulses of this weight [v]
+  // with carry; 0 = none. (The white-angle model is a noise process instead.)
+  double pulse_weight = 0.0;
+  // Independent noise processes per axis (x, y, z), each switchable and combinable.
+  std::array<std::vector<noise::ProcessParameters>, 3> noise_per_axis;
+
+  // K = I + diag(scale_factor_error_ppm * 1e-6) + misalignment_rad.
+  Eigen::Matrix3d scale_misalignment_matrix() const;
+};
+
+struct SensorProfile {
+  std::string name;
+  std::string source;  // file it came from (for messages)
+  TriadErrorModel gyro;
+  TriadErrorModel accelerometer;
+};
+
+// Throws ConfigError (key = dotted path, e.g. "gyro.noise.markov[1].correlation_time_s").
+SensorProfile load_sensor_profile(const std::string& path);
+SensorProfile sensor_profile_from_yaml(const YAML::Node& root, const std::string& source_name);
+
+}  // namespace emulator
+}  // namespace imu_lab
