@@ -1,0 +1,94 @@
+#!/usr/bin/python3
+"""Plots the stability CSV written by imu_lab's `allan` tool: log-log deviation against tau,
+gyro and accelerometer panels, chi-squared confidence bands, and slope guides.
+
+usage: plot_allan.py REPORT_DIR [--statistic oadev] [--out REPORT_DIR/allan.png]
+"""
+import argparse
+import csv
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def read_curves(path):
+    with open(path, newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    if not rows:
+        raise ValueError(f"{path}: no rows")
+    channels = [name[: -len("_dev_" + name.split("_dev_")[1])] for name in rows[0] if "_dev_" in name]
+    curves = {}
+    for channel in channels:
+        unit = next(name.split("_dev_")[1] for name in rows[0] if name.startswith(channel + "_dev_"))
+        taus, dev, lo, hi = [], [], [], []
+        for row in rows:
+            value = row[f"{channel}_dev_{unit}"]
+            if value == "":
+                continue
+            taus.append(float(row["tau_s"]))
+            dev.append(float(value))
+            lo.append(float(row[f"{channel}_lo_{unit}"]))
+            hi.append(float(row[f"{channel}_hi_{unit}"]))
+        curves[channel] = (unit, taus, dev, lo, hi)
+    return curves
+
+
+def slope_guides(axis, taus, devs):
+    """Dashed lines of slope -1, -1/2, 0, +1/2, +1 through the curve's middle point."""
+    if len(taus) < 3:
+        return
+    middle = len(taus) // 2
+    tau_ref, dev_ref = taus[middle], devs[middle]
+    span = [taus[0], taus[-1]]
+    for slope, label in ((-1.0, "-1"), (-0.5, "-1/2"), (0.0, "0"), (0.5, "+1/2"), (1.0, "+1")):
+        axis.plot(span, [dev_ref * (t / tau_ref) ** slope for t in span], color="0.75", linewidth=0.7,
+                  linestyle="--", zorder=0)
+        axis.annotate(label, (span[-1], dev_ref * (span[-1] / tau_ref) ** slope), fontsize=7, color="0.5")
+
+
+def plot(report_dir, statistic, out_path):
+    path = os.path.join(report_dir, f"{statistic}.csv")
+    curves = read_curves(path)
+    sensors = [s for s in ("gyro", "accel") if any(c.startswith(s) for c in curves)] or ["all"]
+    figure, axes = plt.subplots(1, len(sensors), figsize=(6.5 * len(sensors), 5), squeeze=False)
+    for axis, sensor in zip(axes[0], sensors):
+        members = [c for c in curves if sensor == "all" or c.startswith(sensor)]
+        unit = curves[members[0]][0].replace("_", "/").replace("s2", "s^2")
+        for channel in members:
+            _, taus, dev, lo, hi = curves[channel]
+            line, = axis.loglog(taus, dev, marker=".", label=channel)
+            axis.fill_between(taus, lo, hi, color=line.get_color(), alpha=0.2, linewidth=0)
+        _, taus, dev, _, _ = curves[members[0]]
+        slope_guides(axis, taus, dev)
+        axis.set_xlabel("tau [s]")
+        axis.set_ylabel(f"{statistic.upper()} [{unit}]")
+        axis.set_title(f"{sensor}: {statistic} with 68.3 % chi-squared bounds")
+        axis.grid(True, which="both", alpha=0.3)
+        axis.legend()
+    figure.tight_layout()
+    figure.savefig(out_path + ".tmp.png", dpi=110)
+    os.replace(out_path + ".tmp.png", out_path)  # atomic: a reader never sees half a picture
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("report_dir")
+    parser.add_argument("--statistic", default="oadev")
+    parser.add_argument("--out", default=None)
+    args = parser.parse_args()
+    out = args.out or os.path.join(args.report_dir, "allan.png")
+    try:
+        plot(args.report_dir, args.statistic, out)
+    except (OSError, ValueError, KeyError) as error:
+        print(f"plot_allan: {error}", file=sys.stderr)
+        return 1
+    print(f"plot_allan: wrote {out}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
