@@ -1,0 +1,66 @@
+// Strapdown navigation from IMU increments (no ROS).
+//
+//   NavigatorConfig config;                  // Earth model, vertical channel, corrections
+//   Navigator navigator(config);
+//   navigator.initialise(initial_state);     // attitude from StaticAligner or given
+//   const NavState& s = navigator.update(delta_angle_rad, delta_velocity_mps, dt_s);
+//
+// Mechanisation (Savage 1998 structure), internally in the local-level ENU frame, so the state is
+// exposed as-is (see nav_state.h for the frames):
+//  - coning / sculling / rotation compensation of the increments (coning_sculling.h);
+//  - velocity: dv = [I - zeta/2 x] C(k-1) dv_b + (g - (2 w_ie + w_en) x v) dt, with zeta =
+//    (w_ie + w_en) dt from the state at the interval start and normal gravity (earth_model.h);
+//  - position: trapezoidal velocity on lat / lon / height with the ellipsoid's radii;
+//  - vertical channel feedback (vertical_channel.h);
+//  - attitude: q(k) = exp(-zeta) q(k-1) exp(phi), zeta evaluated at mid-interval, normalised.
+// Not valid within a few metres of the poles (ENU and longitude are singular there).
+#pragma once
+
+#include <Eigen/Core>
+
+#include "imu_lab/nav/coning_sculling.h"
+#include "imu_lab/nav/earth_model.h"
+#include "imu_lab/nav/imu_increment.h"
+#include "imu_lab/nav/nav_state.h"
+#include "imu_lab/nav/vertical_channel.h"
+
+namespace imu_lab {
+namespace nav {
+
+struct NavigatorConfig {
+  EarthModelConfig earth;
+  VerticalChannelConfig vertical;
+  ConingScullingConfig corrections;
+};
+
+class Navigator {
+ public:
+  explicit Navigator(const NavigatorConfig& config = NavigatorConfig());
+
+  // Starts (or restarts) navigation from a known state; forgets the previous increment.
+  void initialise(const NavState& initial_state);
+  bool initialised() const { return initialised_; }
+
+  // One IMU interval: increments in the body frame; stamp advances by dt_s.
+  // Throws std::logic_error before initialise(), InputError for a bad increment.
+  const NavState& update(const Eigen::Vector3d& delta_angle_rad,
+                         const Eigen::Vector3d& delta_velocity_mps, double dt_s);
+  const NavState& update(const ImuIncrement& increment);
+
+  // Height aiding for the held vertical channel (e.g. from a barometer topic).
+  void setReferenceHeight(double reference_height_m) { vertical_.setReferenceHeight(reference_height_m); }
+  void clearReferenceHeight() { vertical_.clearReferenceHeight(); }
+
+  const NavState& state() const { return state_; }
+  const EarthModel& earth() const { return earth_; }
+
+ private:
+  EarthModel earth_;
+  VerticalChannel vertical_;
+  ConingScullingCompensator compensator_;
+  NavState state_;
+  bool initialised_ = false;
+};
+
+}  // namespace nav
+}  // namespace imu_lab

@@ -1,0 +1,81 @@
+#include "imu_lab/nav/earth_model.h"
+
+#include <cmath>
+
+#include "imu_lab/common/config_error.h"
+
+namespace imu_lab {
+namespace nav {
+
+namespace {
+bool isSphere(const EarthModelConfig& config) {
+  return config.shape == EarthShape::kSphereNonRotating;
+}
+}  // namespace
+
+EarthModel::EarthModel(const EarthModelConfig& config) : config_(config) {
+  if (isSphere(config_)) {
+    if (!(config_.sphere_radius_m > 0.0)) {
+      throw ConfigError("nav", "earth.sphere_radius_m", "must be a positive radius in metres");
+    }
+    if (!(config_.sphere_surface_gravity_mps2 > 0.0)) {
+      throw ConfigError("nav", "earth.sphere_surface_gravity_mps2",
+                        "must be a positive acceleration in m/s^2");
+    }
+  }
+}
+
+double EarthModel::gravity_mps2(double latitude_rad, double height_m) const {
+  if (isSphere(config_)) {
+    const double g0 = config_.sphere_surface_gravity_mps2;
+    if (config_.sphere_gravity_law == SphereGravityLaw::kConstant) return g0;
+    const double ratio = config_.sphere_radius_m / (config_.sphere_radius_m + height_m);
+    return g0 * ratio * ratio;
+  }
+  const double sin2 = std::sin(latitude_rad) * std::sin(latitude_rad);
+  const double surface = wgs84::kEquatorialGravity_mps2 * (1.0 + wgs84::kSomiglianaConstant * sin2) /
+                         std::sqrt(1.0 - wgs84::kEccentricitySquared * sin2);
+  const double a = wgs84::kSemiMajorAxis_m;
+  const double f = wgs84::kFlattening;
+  const double height_factor =
+      1.0 - 2.0 / a * (1.0 + f + wgs84::kGravityRatio - 2.0 * f * sin2) * height_m +
+      3.0 * height_m * height_m / (a * a);
+  return surface * height_factor;
+}
+
+double EarthModel::meridianRadius_m(double latitude_rad) const {
+  if (isSphere(config_)) return config_.sphere_radius_m;
+  const double sin2 = std::sin(latitude_rad) * std::sin(latitude_rad);
+  const double w = 1.0 - wgs84::kEccentricitySquared * sin2;
+  return wgs84::kSemiMajorAxis_m * (1.0 - wgs84::kEccentricitySquared) / (w * std::sqrt(w));
+}
+
+double EarthModel::primeVerticalRadius_m(double latitude_rad) const {
+  if (isSphere(config_)) return config_.sphere_radius_m;
+  const double sin2 = std::sin(latitude_rad) * std::sin(latitude_rad);
+  return wgs84::kSemiMajorAxis_m / std::sqrt(1.0 - wgs84::kEccentricitySquared * sin2);
+}
+
+double EarthModel::earthRate_rad_s() const {
+  return isSphere(config_) ? 0.0 : wgs84::kEarthRate_rad_s;
+}
+
+Eigen::Vector3d EarthModel::earthRateEnu_rad_s(double latitude_rad) const {
+  const double rate = earthRate_rad_s();
+  return Eigen::Vector3d(0.0, rate * std::cos(latitude_rad), rate * std::sin(latitude_rad));
+}
+
+Eigen::Vector3d EarthModel::transportRateEnu_rad_s(const Eigen::Vector3d& velocity_enu_mps,
+                                                   double latitude_rad, double height_m) const {
+  const double east_radius = primeVerticalRadius_m(latitude_rad) + height_m;
+  const double north_radius = meridianRadius_m(latitude_rad) + height_m;
+  return Eigen::Vector3d(-velocity_enu_mps.y() / north_radius, velocity_enu_mps.x() / east_radius,
+                         velocity_enu_mps.x() * std::tan(latitude_rad) / east_radius);
+}
+
+double EarthModel::schulerRate_rad_s() const {
+  return std::sqrt(gravity_mps2(0.0, 0.0) / primeVerticalRadius_m(0.0));
+}
+
+}  // namespace nav
+}  // namespace imu_lab

@@ -1,0 +1,87 @@
+#include "imu_lab/nav/navigator.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "imu_lab/nav/rotation.h"
+
+namespace imu_lab {
+namespace nav {
+
+namespace {
+
+double wrapLongitude(double longitude_rad) {
+  return std::remainder(longitude_rad, 2.0 * M_PI);
+}
+
+}  // namespace
+
+Navigator::Navigator(const NavigatorConfig& config)
+    : earth_(config.earth), vertical_(config.vertical), compensator_(config.corrections) {}
+
+void Navigator::initialise(const NavState& initial_state) {
+  state_ = initial_state;
+  state_.q_body_to_enu.normalize();
+  state_.longitude_rad = wrapLongitude(state_.longitude_rad);
+  compensator_.reset();
+  initialised_ = true;
+}
+
+const NavState& Navigator::update(const Eigen::Vector3d& delta_angle_rad,
+                                  const Eigen::Vector3d& delta_velocity_mps, double dt_s) {
+  ImuIncrement increment;
+  increment.delta_angle_rad = delta_angle_rad;
+  increment.delta_velocity_mps = delta_velocity_mps;
+  increment.dt_s = dt_s;
+  return update(increment);
+}
+
+const NavState& Navigator::update(const ImuIncrement& increment) {
+  if (!initialised_) throw std::logic_error("nav: Navigator::update called before initialise");
+  validateIncrement(increment);
+  const double dt = increment.dt_s;
+  const CompensatedIncrement body = compensator_.compensate(increment);
+
+  const NavState old = state_;
+  const Eigen::Vector3d earth_rate = earth_.earthRateEnu_rad_s(old.latitude_rad);
+  const Eigen::Vector3d transport_rate =
+      earth_.transportRateEnu_rad_s(old.velocity_enu_mps, old.latitude_rad, old.height_m);
+
+  // Velocity: specific force rotated with the attitude at the interval start, corrected for the
+  // nav frame turning during the interval; gravity and Coriolis from the start-of-interval state.
+  const Eigen::Vector3d nav_rotation_start = (earth_rate + transport_rate) * dt;
+  const Eigen::Vector3d specific_force_dv = old.q_body_to_enu * body.delta_velocity_mps;
+  const Eigen::Vector3d gravity(0.0, 0.0, -earth_.gravity_mps2(old.latitude_rad, old.height_m));
+  const Eigen::Vector3d coriolis = -(2.0 * earth_rate + transport_rate).cross(old.velocity_enu_mps);
+  state_.velocity_enu_mps = old.velocity_enu_mps + specific_force_dv -
+                            0.5 * nav_rotation_start.cross(specific_force_dv) +
+                            (gravity + coriolis) * dt;
+
+  // Position: trapezoidal velocity; radii at mid-interval height and latitude.
+  const Eigen::Vector3d mean_velocity = 0.5 * (old.velocity_enu_mps + state_.velocity_enu_mps);
+  state_.height_m = old.height_m + mean_velocity.z() * dt;
+  const double mid_height = 0.5 * (old.height_m + state_.height_m);
+  state_.latitude_rad = old.latitude_rad +
+                        mean_velocity.y() / (earth_.meridianRadius_m(old.latitude_rad) + mid_height) * dt;
+  const double mid_latitude = 0.5 * (old.latitude_rad + state_.latitude_rad);
+  state_.longitude_rad = wrapLongitude(
+      old.longitude_rad + mean_velocity.x() /
+                              ((earth_.primeVerticalRadius_m(mid_latitude) + mid_height) *
+                               std::cos(mid_latitude)) *
+                              dt);
+  vertical_.applyFeedback(state_.height_m, state_.velocity_enu_mps.z(), dt);
+
+  // Attitude: nav frame rotation at mid-interval, which also keeps the Schuler loop from
+  // gaining energy through the explicit velocity step above.
+  const Eigen::Vector3d nav_rotation_mid =
+      (earth_.earthRateEnu_rad_s(mid_latitude) +
+       earth_.transportRateEnu_rad_s(mean_velocity, mid_latitude, mid_height)) *
+      dt;
+  state_.q_body_to_enu =
+      propagateAttitude(old.q_body_to_enu, body.rotation_vector_rad, nav_rotation_mid);
+  state_.stamp_s = old.stamp_s + dt;
+  return state_;
+}
+
+}  // namespace nav
+}  // namespace imu_lab
