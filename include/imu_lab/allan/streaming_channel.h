@@ -1,0 +1,38 @@
+// One input channel: removes its offset, integrates the rate into phase (compensated, so 1e8
+// samples keep full precision), and feeds every pyramid level its sub-sampled phase.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "imu_lab/allan/checkpoint_codec.h"
+#include "imu_lab/allan/streaming_compensated_sum.h"
+#include "imu_lab/allan/streaming_level.h"
+#include "imu_lab/allan/streaming_tau_plan.h"
+
+namespace imu_lab {
+namespace allan {
+
+class ChannelAccumulator {
+ public:
+  ChannelAccumulator(const TauPlan& plan, double offset);
+
+  void push(double value);  // a finite value; the caller screens NaN/Inf
+  void break_segment();     // a gap: the next value starts a new segment
+
+  double offset() const { return offset_; }
+  const std::vector<ResolutionLevel>& levels() const { return levels_; }
+
+  std::size_t heap_bytes() const;
+  void save(BinaryWriter& out) const;
+  void load(BinaryReader& in);
+
+ private:
+  double offset_;
+  CompensatedSum phase_;
+  std::int64_t segment_sample_count_ = 0;
+  std::vector<ResolutionLevel> levels_;
+};
+
+}  // namespace allan
+}  // namespace imu_lab

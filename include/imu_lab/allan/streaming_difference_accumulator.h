@@ -1,0 +1,41 @@
+// Allan-type (order 2) or Hadamard-type (order 3) phase differences at a set of averaging
+// factors, accumulated one phase point at a time: fully overlapping (every start index) and
+// non-overlapping (start indices that are multiples of m). Sums persist across segments, which
+// pools them; only the per-segment position is reset.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "imu_lab/allan/streaming_difference_sums.h"
+#include "imu_lab/allan/streaming_phase_ring.h"
+
+namespace imu_lab {
+namespace allan {
+
+class DifferenceAccumulator {
+ public:
+  // averaging_factors ascending; the ring must hold order * max(m) + 1 points.
+  DifferenceAccumulator(int order, std::vector<int> averaging_factors);
+
+  void start_segment();
+  void update(const PhaseRing& ring);  // after the ring received a new phase point
+
+  int order() const { return order_; }
+  const DifferenceSums& overlapping(std::size_t tau_index) const { return overlapping_[tau_index]; }
+  const DifferenceSums& non_overlapping(std::size_t tau_index) const { return non_overlapping_[tau_index]; }
+  std::size_t heap_bytes() const;
+
+  void save(BinaryWriter& out) const;
+  void load(BinaryReader& in);
+
+ private:
+  int order_;
+  std::vector<int> averaging_factors_;
+  std::vector<DifferenceSums> overlapping_;
+  std::vector<DifferenceSums> non_overlapping_;
+  std::vector<std::int64_t> next_non_overlapping_end_;  // phase index ending the next such term
+};
+
+}  // namespace allan
+}  // namespace imu_lab

@@ -1,0 +1,136 @@
+#include "imu_lab/allan/streaming_block_autocorrelation.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace imu_lab {
+namespace allan {
+
+void BlockMeanAutocorrelation::SeriesMoments::add(double value) {
+  if (count == 0) {
+    first = value;
+  } else {
+    lag1_products.add(last * value);
+  }
+  last = value;
+  sum.add(value);
+  squares.add(value * value);
+  ++count;
+}
+
+double BlockMeanAutocorrelation::SeriesMoments::centred_lag1() const {
+  if (count < 2) return 0.0;
+  const double mean = sum.value() / count;
+  const double all_but_last = sum.value() - last;
+  const double all_but_first = sum.value() - first;
+  return lag1_products.value() - mean * (all_but_last + all_but_first) + (count - 1) * mean * mean;
+}
+
+double BlockMeanAutocorrelation::SeriesMoments::centred_squares() const {
+  if (count < 1) return 0.0;
+  return std::max(0.0, squares.value() - sum.value() * (sum.value() / count));
+}
+
+BlockMeanAutocorrelation::BlockMeanAutocorrelation(std::vector<int> averaging_factors)
+    : averaging_factors_(std::move(averaging_factors)),
+      open_(averaging_factors_.size()),
+      closed_(averaging_factors_.size()),
+      next_block_end_(averaging_factors_.size()) {
+  for (std::size_t i = 0; i < averaging_factors_.size(); ++i) next_block_end_[i] = averaging_factors_[i];
+}
+
+void BlockMeanAutocorrelation::fold(const Chain& segment, BlockSeriesSummary& pooled) {
+  for (int d = 0; d <= kMaxBlockDifferences; ++d) {
+    const SeriesMoments& moments = segment[d];
+    if (moments.count == 0) continue;
+    pooled.lag1_numerator[d] += moments.centred_lag1();
+    pooled.centred_squares[d] += moments.centred_squares();
+    pooled.raw_squares[d] += moments.squares.value();
+    pooled.count[d] += moments.count;
+  }
+}
+
+void BlockMeanAutocorrelation::start_segment() {
+  for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {
+    fold(open_[i], closed_[i]);
+    open_[i] = Chain();
+    next_block_end_[i] = averaging_factors_[i];
+  }
+}
+
+void BlockMeanAutocorrelation::update(const PhaseRing& ring) {
+  const std::int64_t newest = ring.newest();
+  for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {
+    if (newest != next_block_end_[i]) continue;
+    const int m = averaging_factors_[i];
+    next_block_end_[i] += m;
+    Chain& chain = open_[i];
+    double value = (ring.at(newest) - ring.at(newest - m)) / m;
+    for (int d = 0; d <= kMaxBlockDifferences; ++d) {
+      const bool had_previous = chain[d].count > 0;
+      const double previous = chain[d].last;
+      chain[d].add(value);
+      if (!had_previous) break;
+      value -= previous;  // the next difference
+    }
+  }
+}
+
+BlockSeriesSummary BlockMeanAutocorrelation::summary(std::size_t tau_index) const {
+  BlockSeriesSummary pooled = closed_[tau_index];
+  fold(open_[tau_index], pooled);
+  return pooled;
+}
+
+std::size_t BlockMeanAutocorrelation::heap_bytes() const {
+  return averaging_factors_.capacity() * sizeof(int) + open_.capacity() * sizeof(Chain) +
+         closed_.capacity() * sizeof(BlockSeriesSummary) + next_block_end_.capacity() * sizeof(std::int64_t);
+}
+
+void BlockMeanAutocorrelation::save(BinaryWriter& out) const {
+  out.put_u64(averaging_factors_.size());
+  for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {
+    for (const SeriesMoments& moments : open_[i]) {
+      moments.sum.save(out);
+      moments.squares.save(out);
+      moments.lag1_products.save(out);
+      out.put_f64(moments.first);
+      out.put_f64(moments.last);
+      out.put_i64(moments.count);
+    }
+    const BlockSeriesSummary& pooled = closed_[i];
+    for (int d = 0; d <= kMaxBlockDifferences; ++d) {
+      out.put_f64(pooled.lag1_numerator[d]);
+      out.put_f64(pooled.centred_squares[d]);
+      out.put_f64(pooled.raw_squares[d]);
+      out.put_i64(pooled.count[d]);
+    }
+  }
+  out.put_i64s(next_block_end_);
+}
+
+void BlockMeanAutocorrelation::load(BinaryReader& in) {
+  in.expect_u64(averaging_factors_.size(), "number of averaging factors");
+  for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {
+    for (SeriesMoments& moments : open_[i]) {
+      moments.sum.load(in);
+      moments.squares.load(in);
+      moments.lag1_products.load(in);
+      moments.first = in.get_f64();
+      moments.last = in.get_f64();
+      moments.count = in.get_i64();
+    }
+    BlockSeriesSummary& pooled = closed_[i];
+    for (int d = 0; d <= kMaxBlockDifferences; ++d) {
+      pooled.lag1_numerator[d] = in.get_f64();
+      pooled.centred_squares[d] = in.get_f64();
+      pooled.raw_squares[d] = in.get_f64();
+      pooled.count[d] = in.get_i64();
+    }
+  }
+  next_block_end_ = in.get_i64s();
+  if (next_block_end_.size() != averaging_factors_.size()) in.fail("block autocorrelation factor count");
+}
+
+}  // namespace allan
+}  // namespace imu_lab

@@ -1,0 +1,55 @@
+#include "imu_lab/allan/streaming_channel.h"
+
+#include <cmath>
+
+namespace imu_lab {
+namespace allan {
+
+ChannelAccumulator::ChannelAccumulator(const TauPlan& plan, double offset) : offset_(offset) {
+  levels_.reserve(plan.levels.size());
+  for (const PlannedLevel& planned : plan.levels) levels_.emplace_back(planned.level, planned.level_averaging_factors);
+}
+
+void ChannelAccumulator::push(double value) {
+  phase_.add(value - offset_);
+  ++segment_sample_count_;
+  const double phase = phase_.value();
+  for (ResolutionLevel& level : levels_) {
+    const std::int64_t block_mask = (std::int64_t{1} << level.level()) - 1;
+    // Sub-sampling the phase every 2^L samples is averaging the rate over blocks of 2^L;
+    // dividing by 2^L (exact) expresses it in samples of that level.
+    if ((segment_sample_count_ & block_mask) == 0) level.push_phase(std::ldexp(phase, -level.level()));
+  }
+}
+
+void ChannelAccumulator::break_segment() {
+  if (segment_sample_count_ == 0) return;
+  phase_ = CompensatedSum();
+  segment_sample_count_ = 0;
+  for (ResolutionLevel& level : levels_) level.restart_segment();
+}
+
+std::size_t ChannelAccumulator::heap_bytes() const {
+  std::size_t bytes = levels_.capacity() * sizeof(ResolutionLevel);
+  for (const ResolutionLevel& level : levels_) bytes += level.heap_bytes();
+  return bytes;
+}
+
+void ChannelAccumulator::save(BinaryWriter& out) const {
+  out.put_f64(offset_);
+  phase_.save(out);
+  out.put_i64(segment_sample_count_);
+  out.put_u64(levels_.size());
+  for (const ResolutionLevel& level : levels_) level.save(out);
+}
+
+void ChannelAccumulator::load(BinaryReader& in) {
+  offset_ = in.get_f64();
+  phase_.load(in);
+  segment_sample_count_ = in.get_i64();
+  in.expect_u64(levels_.size(), "number of pyramid levels");
+  for (ResolutionLevel& level : levels_) level.load(in);
+}
+
+}  // namespace allan
+}  // namespace imu_lab

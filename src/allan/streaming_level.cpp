@@ -1,0 +1,123 @@
+#include "imu_lab/allan/streaming_level.h"
+
+#include <utility>
+
+#include "imu_lab/allan/streaming_total_ends.h"
+
+namespace imu_lab {
+namespace allan {
+namespace {
+
+constexpr int kAllanOrder = 2;
+constexpr int kHadamardOrder = 3;
+
+int largest(const std::vector<int>& ascending) { return ascending.empty() ? 1 : ascending.back(); }
+
+}  // namespace
+
+ResolutionLevel::ResolutionLevel(int level, std::vector<int> averaging_factors)
+    : level_(level),
+      averaging_factors_(std::move(averaging_factors)),
+      head_capacity_(2 * static_cast<std::size_t>(largest(averaging_factors_))),
+      // Hadamard and modified Allan reach back 3m points.
+      ring_(3 * static_cast<std::size_t>(largest(averaging_factors_)) + 1),
+      allan_(kAllanOrder, averaging_factors_),
+      hadamard_(kHadamardOrder, averaging_factors_),
+      modified_(averaging_factors_),
+      block_autocorrelation_(averaging_factors_),
+      closed_total_end_terms_(averaging_factors_.size()) {
+  head_.reserve(head_capacity_);
+  push_phase(0.0);
+}
+
+void ResolutionLevel::push_phase(double phase) {
+  ring_.push(phase);
+  if (head_.size() < head_capacity_) head_.push_back(phase);
+  allan_.update(ring_);
+  hadamard_.update(ring_);
+  modified_.update(ring_);
+  block_autocorrelation_.update(ring_);
+}
+
+void ResolutionLevel::restart_segment() {
+  if (open_segment_has_data()) {
+    for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {
+      const int m = averaging_factors_[i];
+      if (ring_.count() >= 2 * static_cast<std::int64_t>(m) + 1) {
+        closed_total_end_terms_[i].add(total_end_terms(head_, ring_, m));
+      }
+    }
+    ++closed_segment_phase_counts_[ring_.count()];
+  }
+  ring_.clear();
+  head_.clear();
+  allan_.start_segment();
+  hadamard_.start_segment();
+  modified_.start_segment();
+  block_autocorrelation_.start_segment();
+  push_phase(0.0);
+}
+
+double ResolutionLevel::total_end_terms_sum(std::size_t tau_index) const {
+  double sum = closed_total_end_terms_[tau_index].value();
+  const int m = averaging_factors_[tau_index];
+  if (ring_.count() >= 2 * static_cast<std::int64_t>(m) + 1) sum += total_end_terms(head_, ring_, m);
+  return sum;
+}
+
+std::map<std::int64_t, std::int64_t> ResolutionLevel::segment_phase_counts() const {
+  std::map<std::int64_t, std::int64_t> counts = closed_segment_phase_counts_;
+  if (open_segment_has_data()) ++counts[ring_.count()];
+  return counts;
+}
+
+std::size_t ResolutionLevel::heap_bytes() const {
+  // A map node holds the pair plus about four pointers of bookkeeping.
+  const std::size_t map_node_bytes = 2 * sizeof(std::int64_t) + 4 * sizeof(void*);
+  return averaging_factors_.capacity() * sizeof(int) + ring_.heap_bytes() + head_.capacity() * sizeof(double) +
+         allan_.heap_bytes() + hadamard_.heap_bytes() + modified_.heap_bytes() +
+         block_autocorrelation_.heap_bytes() +
+         closed_total_end_terms_.capacity() * sizeof(CompensatedSum) +
+         closed_segment_phase_counts_.size() * map_node_bytes;
+}
+
+void ResolutionLevel::save(BinaryWriter& out) const {
+  out.put_i64(level_);
+  out.put_u64(averaging_factors_.size());
+  ring_.save(out);
+  out.put_f64s(head_);
+  allan_.save(out);
+  hadamard_.save(out);
+  modified_.save(out);
+  block_autocorrelation_.save(out);
+  for (const CompensatedSum& sum : closed_total_end_terms_) sum.save(out);
+  out.put_u64(closed_segment_phase_counts_.size());
+  for (const auto& entry : closed_segment_phase_counts_) {
+    out.put_i64(entry.first);
+    out.put_i64(entry.second);
+  }
+}
+
+void ResolutionLevel::load(BinaryReader& in) {
+  in.expect_u64(static_cast<std::uint64_t>(level_), "pyramid level");
+  in.expect_u64(averaging_factors_.size(), "number of averaging factors");
+  ring_.load(in);
+  head_ = in.get_f64s();
+  if (head_.size() > head_capacity_) in.fail("head buffer longer than its capacity");
+  head_.reserve(head_capacity_);
+  allan_.load(in);
+  hadamard_.load(in);
+  modified_.load(in);
+  block_autocorrelation_.load(in);
+  for (CompensatedSum& sum : closed_total_end_terms_) sum.load(in);
+  closed_segment_phase_counts_.clear();
+  const std::uint64_t entries = in.get_u64();
+  for (std::uint64_t i = 0; i < entries; ++i) {
+    const std::int64_t phase_count = in.get_i64();
+    closed_segment_phase_counts_[phase_count] = in.get_i64();
+  }
+}
+
+}  // namespace allan
+}  // namespace imu_lab
+

@@ -1,0 +1,121 @@
+#include "imu_lab/allan/streaming_points.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "imu_lab/allan/confidence.h"
+#include "imu_lab/allan/edf.h"
+#include "imu_lab/allan/streaming_noise_type.h"
+
+namespace imu_lab {
+namespace allan {
+namespace {
+
+struct VarianceEstimate {
+  double variance = 0.0;  // in accumulated units squared; TVAR in accumulated units times seconds, squared
+  long long term_count = 0;
+};
+
+double squared(double value) { return value * value; }
+
+// Sum of squared binomial coefficients of the (order-1)-th difference of the mean rate: 2 for
+// Allan, 6 for Hadamard.
+double difference_normaliser(int order) { return order == 2 ? 2.0 : 6.0; }
+
+VarianceEstimate mean_square_estimate(const DifferenceSums& sums, int order, int m, bool remove_mean) {
+  const double spread = remove_mean ? sums.mean_square() - squared(sums.mean()) : sums.mean_square();
+  return {std::max(0.0, spread) / (difference_normaliser(order) * squared(m)), sums.count};
+}
+
+long long total_normaliser(const ResolutionLevel& level, int m) {
+  long long normaliser = 0;
+  for (const auto& entry : level.segment_phase_counts()) {
+    if (entry.first >= 2LL * m + 1) normaliser += (entry.first - 2) * entry.second;
+  }
+  return normaliser;
+}
+
+VarianceEstimate estimate(Statistic statistic, const ResolutionLevel& level, std::size_t i, double tau_s) {
+  const int m = level.averaging_factors()[i];
+  switch (statistic) {
+    case Statistic::kAllan: return mean_square_estimate(level.allan().non_overlapping(i), 2, m, false);
+    case Statistic::kOverlappingAllan: return mean_square_estimate(level.allan().overlapping(i), 2, m, false);
+    case Statistic::kAllanKrobka: return mean_square_estimate(level.allan().overlapping(i), 2, m, true);
+    case Statistic::kHadamard: return mean_square_estimate(level.hadamard().non_overlapping(i), 3, m, false);
+    case Statistic::kOverlappingHadamard:
+      return mean_square_estimate(level.hadamard().overlapping(i), 3, m, false);
+    case Statistic::kHadamardKrobka: return mean_square_estimate(level.hadamard().overlapping(i), 3, m, true);
+    case Statistic::kModifiedAllan:
+    case Statistic::kTime: {
+      // Each term sums m second differences: MVAR = <W^2> / (2 m^4) in rate units
+      // (NIST SP 1065 eq. 14 with x = tau0 * accumulated phase).
+      const DifferenceSums& terms = level.modified().terms(i);
+      const double modified = terms.mean_square() / (2.0 * std::pow(static_cast<double>(m), 4));
+      const double scale = statistic == Statistic::kTime ? tau_s * tau_s / 3.0 : 1.0;
+      return {modified * scale, terms.count};
+    }
+    case Statistic::kTotal: {
+      // The N-2m interior terms are the overlapping Allan terms; the ends come from head and tail.
+      const long long normaliser = total_normaliser(level, m);
+      if (normaliser == 0) return {};
+      const double squares = level.allan().overlapping(i).squares.value() + level.total_end_terms_sum(i);
+      return {squares / (2.0 * squared(m) * normaliser), normaliser};
+    }
+  }
+  throw std::invalid_argument("streaming_points: unknown statistic");
+}
+
+int noise_alpha(Statistic statistic, const ResolutionLevel& level, std::size_t i) {
+  const int m = level.averaging_factors()[i];
+  const VarianceEstimate allan = estimate(Statistic::kOverlappingAllan, level, i, 0.0);
+  const VarianceEstimate modified = estimate(Statistic::kModifiedAllan, level, i, 0.0);
+  const double ratio = modified.term_count > 0 && allan.variance > 0.0 ? modified.variance / allan.variance : -1.0;
+  return streaming_noise_alpha(statistic, level.block_autocorrelation().summary(i), m, ratio);
+}
+
+// Independent segments add their degrees of freedom.
+double pooled_edf(Statistic statistic, const ResolutionLevel& level, int m, int alpha) {
+  double edf = 0.0;
+  for (const auto& entry : level.segment_phase_counts()) {
+    if (term_count(statistic, static_cast<std::size_t>(entry.first), m) <= 0) continue;
+    try {
+      edf += entry.second * equivalent_degrees_of_freedom(statistic, alpha, m, entry.first);
+    } catch (const std::invalid_argument&) {
+      // Too short a segment for an EDF: it adds its terms but no confidence.
+    }
+  }
+  return edf;
+}
+
+}  // namespace
+
+std::vector<StabilityPoint> streaming_points(Statistic statistic, const ChannelAccumulator& channel,
+                                             const PointUnits& units) {
+  std::vector<StabilityPoint> points;
+  for (const ResolutionLevel& level : channel.levels()) {
+    const int block = 1 << level.level();
+    for (std::size_t i = 0; i < level.averaging_factors().size(); ++i) {
+      const int level_m = level.averaging_factors()[i];
+      StabilityPoint point;
+      point.averaging_factor = level_m * block;
+      point.tau_s = point.averaging_factor * units.tau0_s;
+      const VarianceEstimate variance = estimate(statistic, level, i, point.tau_s);
+      if (variance.term_count <= 0) continue;
+      point.term_count = variance.term_count;
+      point.deviation = std::sqrt(variance.variance) * units.value_scale;
+      point.alpha = noise_alpha(statistic, level, i);
+      point.edf = pooled_edf(statistic, level, level_m, point.alpha);
+      if (point.edf > 0.0) {
+        const DeviationBounds bounds = chi_squared_bounds(point.deviation, point.edf, units.confidence);
+        point.deviation_lower = bounds.lower;
+        point.deviation_upper = bounds.upper;
+      }
+      points.push_back(point);
+    }
+  }
+  return points;
+}
+
+}  // namespace allan
+}  // namespace imu_lab

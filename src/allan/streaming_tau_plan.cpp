@@ -1,0 +1,57 @@
+#include "imu_lab/allan/streaming_tau_plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <set>
+
+namespace imu_lab {
+namespace allan {
+namespace {
+
+std::vector<std::int64_t> requested_factors(const StreamingOptions& options, std::int64_t max_factor) {
+  std::vector<std::int64_t> factors;
+  if (options.tau_spacing == TauSpacing::kEveryM) {
+    for (std::int64_t m = 1; m <= max_factor; ++m) factors.push_back(m);
+    return factors;
+  }
+  for (int i = 0;; ++i) {
+    const double m = std::round(std::pow(10.0, i / options.points_per_decade));
+    if (m > static_cast<double>(max_factor)) break;
+    if (factors.empty() || factors.back() != static_cast<std::int64_t>(m)) {
+      factors.push_back(static_cast<std::int64_t>(m));
+    }
+  }
+  return factors;
+}
+
+}  // namespace
+
+TauPlan plan_taus(const StreamingOptions& options, double tau0_s) {
+  // Far beyond any run length; keeps the count integral.
+  const double max_factor_real = std::min(std::floor(options.max_tau_s / tau0_s), 1.0e15);
+  const std::int64_t max_factor = std::max<std::int64_t>(1, static_cast<std::int64_t>(max_factor_real));
+  const std::int64_t exact_limit = options.exact_max_averaging_factor;
+
+  std::map<int, std::set<int>> factors_by_level;
+  for (const std::int64_t m : requested_factors(options, max_factor)) {
+    int level = 0;
+    while (m > (exact_limit << level)) ++level;
+    // Rounding up keeps every level's reported factors above the previous level's.
+    const std::int64_t block = std::int64_t{1} << level;
+    factors_by_level[level].insert(static_cast<int>((m + block - 1) / block));
+  }
+
+  TauPlan plan;
+  for (const auto& entry : factors_by_level) {
+    PlannedLevel planned;
+    planned.level = entry.first;
+    planned.level_averaging_factors.assign(entry.second.begin(), entry.second.end());
+    plan.levels.push_back(planned);
+  }
+  return plan;
+}
+
+}  // namespace allan
+}  // namespace imu_lab
