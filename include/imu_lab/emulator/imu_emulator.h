@@ -68,6 +68,9 @@ class ImuEmulator {
   std::uint64_t samples_emitted() const { return sample_index_; }
   const SensorProfile& profile() const { return profile_; }
   const EmulatorSettings& settings() const { return settings_; }
+  // The triads' realised error models (turn-on bias drawn for this run, K, noise processes).
+  const TriadChannel& gyro_channel() const { return *gyro_; }
+  const TriadChannel& accelerometer_channel() const { return *accelerometer_; }
 
  private:
   SensorProfile profile_;
@@ -77,6 +80,8 @@ class ImuEmulator {
   std::unique_ptr<MotionSource> motion_;
   std::unique_ptr<TriadChannel> gyro_;
   std::unique_ptr<TriadChannel> accelerometer_;
+  Eigen::Vector3d gyro_variance_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d accelerometer_variance_ = Eigen::Vector3d::Zero();
 };
 
 }  // namespace emulator

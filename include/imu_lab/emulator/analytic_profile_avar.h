@@ -1,0 +1,16 @@
+// The Allan variance a profile promises for one axis: the sum of its independent noise
+// processes' analytic AVARs (DESIGN.md section 5; independent processes add in AVAR).
+#pragma once
+
+#include "imu_lab/emulator/sensor_profile.h"
+
+namespace imu_lab {
+namespace emulator {
+
+// tau0_s is needed for the bandwidth-defined terms (white angle noise given as a density).
+// Not included: the anti-alias filter's attenuation of the white noise at taus near its time
+// constant, and turn-on/fixed biases (constant, AVAR zero).
+double analytic_axis_avar(const TriadErrorModel& triad, int axis, double tau_s, double tau0_s);
+
+}  // namespace emulator
+}  // namespace imu_lab

@@ -1,0 +1,48 @@
+// One triad's measurement: output = b_fixed + b_turn_on + K * input + c .* input.^2
+// + G * specific_force (gyro) + sum of noise processes, then optional pulse quantization of the
+// increment. Rates in and out are interval averages. The quadratic term is applied to the
+// interval average of the input (exact for static and constant-rate inputs only).
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "imu_lab/emulator/sensor_profile.h"
+#include "imu_lab/noise/noise_process.h"
+#include "imu_lab/noise/pulse_quantizer.h"
+
+namespace imu_lab {
+namespace emulator {
+
+class TriadChannel {
+ public:
+  // triad_name ("gyro", "accelerometer") names the RNG streams: seed ^ hash("gyro.x.markov#1").
+  TriadChannel(const TriadErrorModel& model, const std::string& triad_name, std::uint64_t seed);
+
+  Eigen::Vector3d measure(const Eigen::Vector3d& true_average,
+                          const Eigen::Vector3d& specific_force_average, double elapsed_start_s,
+                          double interval_s);
+
+  // Per-axis variance of one sample's stationary noise (see ImuSample).
+  Eigen::Vector3d sample_variance(double interval_s) const;
+  // b_fixed + the run-to-run bias drawn for this run.
+  Eigen::Vector3d total_bias() const { return model_.bias_fixed + turn_on_bias_; }
+  const Eigen::Matrix3d& scale_misalignment_matrix() const { return scale_misalignment_; }
+  const std::vector<std::unique_ptr<noise::NoiseProcess>>& processes(int axis) const {
+    return processes_[axis];
+  }
+
+ private:
+  TriadErrorModel model_;
+  Eigen::Matrix3d scale_misalignment_;
+  Eigen::Vector3d turn_on_bias_;
+  std::array<std::vector<std::unique_ptr<noise::NoiseProcess>>, 3> processes_;
+  std::array<noise::PulseQuantizer, 3> quantizers_;
+};
+
+}  // namespace emulator
+}  // namespace imu_lab

@@ -1,0 +1,69 @@
+#include "imu_lab/emulator/imu_emulator.h"
+
+#include <stdexcept>
+
+#include "imu_lab/emulator/sensor_channel.h"
+
+namespace imu_lab {
+namespace emulator {
+
+ImuEmulator::ImuEmulator(const SensorProfile& profile, std::unique_ptr<MotionSource> motion,
+                         const EmulatorSettings& settings)
+    : profile_(profile),
+      settings_(settings),
+      interval_s_(1.0 / settings.rate_hz),
+      motion_(std::move(motion)),
+      gyro_(std::make_unique<TriadChannel>(profile.gyro, "gyro", settings.seed)),
+      accelerometer_(
+          std::make_unique<TriadChannel>(profile.accelerometer, "accelerometer", settings.seed)) {
+  if (!(settings.rate_hz > 0.0)) throw std::invalid_argument("ImuEmulator: rate_hz must be positive");
+  if (!motion_) throw std::invalid_argument("ImuEmulator: no motion source");
+}
+
+ImuEmulator::ImuEmulator(const SensorProfile& profile, const ScenarioConfig& scenario,
+                         const EmulatorSettings& settings)
+    : ImuEmulator(profile, make_motion_source(scenario), settings) {}
+
+ImuEmulator::~ImuEmulator() = default;
+ImuEmulator::ImuEmulator(ImuEmulator&&) noexcept = default;
+ImuEmulator& ImuEmulator::operator=(ImuEmulator&&) noexcept = default;
+
+ImuSample ImuEmulator::next() {
+  // Times from the index (not accumulated) so long runs do not drift.
+  const double elapsed_start_s = static_cast<double>(sample_index_) * interval_s_;
+  const double start_s = settings_.start_time_s + elapsed_start_s;
+  ++sample_index_;
+  const TruthIncrement truth_increment = motion_->increment(start_s, interval_s_);
+  const Eigen::Vector3d true_rate = truth_increment.delta_angle_rad / interval_s_;
+  const Eigen::Vector3d true_force = truth_increment.delta_velocity_m_s / interval_s_;
+
+  ImuSample sample;
+  sample.stamp_s = settings_.start_time_s + static_cast<double>(sample_index_) * interval_s_;
+  sample.angular_rate_rad_s = gyro_->measure(true_rate, true_force, elapsed_start_s, interval_s_);
+  sample.specific_force_m_s2 =
+      accelerometer_->measure(true_force, Eigen::Vector3d::Zero(), elapsed_start_s, interval_s_);
+  sample.delta_angle_rad = sample.angular_rate_rad_s * interval_s_;
+  sample.delta_velocity_m_s = sample.specific_force_m_s2 * interval_s_;
+  sample.temperature_c = truth_increment.mean_temperature_c;
+  if (sample_index_ == 1) {
+    gyro_variance_ = gyro_->sample_variance(interval_s_);
+    accelerometer_variance_ = accelerometer_->sample_variance(interval_s_);
+  }
+  sample.angular_rate_variance_rad2_s2 = gyro_variance_;
+  sample.specific_force_variance_m2_s4 = accelerometer_variance_;
+
+  const TruthState truth = motion_->truth_at(sample.stamp_s);
+  sample.truth.stamp_s = sample.stamp_s;
+  sample.truth.attitude_body_to_enu = truth.attitude_body_to_enu;
+  sample.truth.angular_rate_rad_s = truth.angular_rate_body_rad_s;
+  sample.truth.specific_force_m_s2 = truth.specific_force_body_m_s2;
+  sample.truth.latitude_rad = truth.latitude_rad;
+  sample.truth.longitude_rad = truth.longitude_rad;
+  sample.truth.height_m = truth.height_m;
+  sample.truth.velocity_enu_m_s = truth.velocity_enu_m_s;
+  sample.truth.temperature_c = truth.temperature_c;
+  return sample;
+}
+
+}  // namespace emulator
+}  // namespace imu_lab

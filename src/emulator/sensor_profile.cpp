@@ -1,0 +1,209 @@
+#include "imu_lab/emulator/sensor_profile.h"
+
+#include <functional>
+#include <stdexcept>
+
+#include "imu_lab/common/config_error.h"
+#include "imu_lab/noise/flicker_bank.h"
+#include "imu_lab/noise/zero_dc_noise.h"
+#include "yaml_fields.h"
+
+namespace imu_lab {
+namespace emulator {
+
+namespace {
+
+// Unit suffixes of one triad's keys: rate "u", integral "v", squared rate.
+struct TriadUnits {
+  std::string rate;
+  std::string integral;
+  std::string rate_squared;
+};
+
+using noise::ProcessParameters;
+
+// Adds one parameter set per axis, built from per-axis field values.
+template <typename Make>
+void add_per_axis(TriadErrorModel& model, Make make) {
+  for (int axis = 0; axis < 3; ++axis) model.noise_per_axis[axis].push_back(make(axis));
+}
+
+void read_list_or_single(const YamlFields& noise_fields, const std::string& key,
+                         const std::function<void(const YamlFields&)>& read_one) {
+  const YAML::Node value = noise_fields.raw(key);
+  if (value.IsMap()) {
+    read_one(YamlFields(value, noise_fields.key_path(key), noise_fields.source()));
+    return;
+  }
+  if (!value.IsSequence()) noise_fields.fail(key, "expected a mapping or a list of mappings");
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const std::string path = noise_fields.key_path(key) + "[" + std::to_string(i) + "]";
+    if (!value[i].IsMap()) throw ConfigError(noise_fields.source(), path, "expected a mapping");
+    read_one(YamlFields(value[i], path, noise_fields.source()));
+  }
+}
+
+void read_noise(const YamlFields& fields, const TriadUnits& u, TriadErrorModel& model) {
+  const std::string white = "white_rate", flicker = "bias_instability", walk = "random_walk",
+                    ramp = "rate_ramp", markov = "markov", sinusoid = "sinusoid",
+                    angle = "white_angle", zero_dc = "zero_dc_family";
+  fields.allow_only({"white_rate", "bias_instability", "random_walk", "rate_ramp", "markov",
+                     "sinusoid", "white_angle", "zero_dc_family"});
+  if (fields.has(white)) {
+    const YamlFields f = fields.child(white);
+    const std::string key = "density_" + u.rate + "_per_sqrt_hz";
+    f.allow_only({key.c_str()});
+    const Eigen::Vector3d n = f.per_axis(key, true);
+    add_per_axis(model, [&](int a) -> ProcessParameters { return noise::WhiteRateParameters{n[a]}; });
+  }
+  if (fields.has(flicker)) {
+    const YamlFields f = fields.child(flicker);
+    const std::string key = "coefficient_" + u.rate;
+    f.allow_only({key.c_str(), "cutoff_frequency_hz", "valid_tau_range_s"});
+    const Eigen::Vector3d b = f.per_axis(key, true);
+    const double cutoff = f.positive("cutoff_frequency_hz");
+    const YAML::Node range = f.raw("valid_tau_range_s");
+    if (!range.IsSequence() || range.size() != 2) {
+      f.fail("valid_tau_range_s", "expected [tau_min_s, tau_max_s]");
+    }
+    const double tau_min = f.number_at(range[0], "valid_tau_range_s[0]");
+    const double tau_max = f.number_at(range[1], "valid_tau_range_s[1]");
+    for (int a = 0; a < 3; ++a) {
+      if (b[a] == 0.0) continue;
+      noise::BiasInstabilityParameters p{b[a], cutoff, tau_min, tau_max};
+      try {
+        noise::design_flicker_bank(p);
+      } catch (const std::invalid_argument& error) {
+        f.fail("valid_tau_range_s", error.what());
+      }
+      model.noise_per_axis[a].push_back(p);
+    }
+  }
+  if (fields.has(walk)) {
+    const YamlFields f = fields.child(walk);
+    const std::string key = "density_" + u.rate + "_per_sqrt_s";
+    f.allow_only({key.c_str()});
+    const Eigen::Vector3d k = f.per_axis(key, true);
+    add_per_axis(model, [&](int a) -> ProcessParameters { return noise::RandomWalkParameters{k[a]}; });
+  }
+  if (fields.has(ramp)) {
+    const YamlFields f = fields.child(ramp);
+    const std::string key = "slope_" + u.rate + "_per_s";
+    f.allow_only({key.c_str()});
+    const Eigen::Vector3d r = f.per_axis(key, false);
+    add_per_axis(model, [&](int a) -> ProcessParameters { return noise::RateRampParameters{r[a]}; });
+  }
+  if (fields.has(markov)) {
+    read_list_or_single(fields, markov, [&](const YamlFields& f) {
+      const std::string key = "q_c_" + u.rate + "_per_sqrt_s";
+      f.allow_only({key.c_str(), "correlation_time_s"});
+      const Eigen::Vector3d q = f.per_axis(key, true);
+      const Eigen::Vector3d t = f.per_axis("correlation_time_s", true);
+      if (t.minCoeff() <= 0.0) f.fail("correlation_time_s", "must be positive");
+      add_per_axis(model, [&](int a) -> ProcessParameters { return noise::MarkovParameters{q[a], t[a]}; });
+    });
+  }
+  if (fields.has(sinusoid)) {
+    read_list_or_single(fields, sinusoid, [&](const YamlFields& f) {
+      const std::string key = "amplitude_" + u.rate;
+      f.allow_only({key.c_str(), "frequency_hz", "phase_rad"});
+      const Eigen::Vector3d amplitude = f.per_axis(key, true);
+      const double frequency = f.positive("frequency_hz");
+      const Eigen::Vector3d phase = f.per_axis_or_zero("phase_rad");
+      add_per_axis(model, [&](int a) -> ProcessParameters {
+        return noise::SinusoidParameters{amplitude[a], frequency, phase[a]};
+      });
+    });
+  }
+  if (fields.has(angle)) {
+    const YamlFields f = fields.child(angle);
+    const std::string key = "density_" + u.integral + "_per_sqrt_hz";
+    f.allow_only({key.c_str()});
+    const Eigen::Vector3d d = f.per_axis(key, true);
+    add_per_axis(model, [&](int a) -> ProcessParameters { return noise::WhiteAngleParameters{0.0, d[a]}; });
+  }
+  if (fields.has(zero_dc)) {
+    const YamlFields f = fields.child(zero_dc);
+    const std::string key = "alpha_" + u.rate_squared + "_per_hz_n_plus_1";
+    f.allow_only({"exponent_n", key.c_str(), "beta_s"});
+    if (f.number("exponent_n") != 2.0) {
+      f.fail("exponent_n", "only n = 2 is generated (n = 1 has a divergent angle variance, "
+                           "n = 3 is not implemented)");
+    }
+    const Eigen::Vector3d alpha = f.per_axis(key, true);
+    const double beta = f.positive("beta_s");
+    add_per_axis(model, [&](int a) -> ProcessParameters {
+      return noise::ZeroDcFamilyParameters{2, alpha[a], beta};
+    });
+  }
+}
+
+void read_quantization(const YamlFields& f, const TriadUnits& u, TriadErrorModel& model) {
+  const std::string pulse_key = "pulse_weight_" + u.integral;
+  const std::string sigma_key = "q_" + u.integral;
+  f.allow_only({"model", pulse_key.c_str(), sigma_key.c_str()});
+  const std::string kind = f.text("model");
+  if (kind == "pulses") {
+    model.pulse_weight = f.positive(pulse_key);
+  } else if (kind == "white_angle") {
+    const Eigen::Vector3d q = f.per_axis(sigma_key, true);
+    add_per_axis(model, [&](int a) -> ProcessParameters { return noise::WhiteAngleParameters{q[a], 0.0}; });
+  } else {
+    f.fail("model", "expected 'pulses' or 'white_angle', got '" + kind + "'");
+  }
+}
+
+TriadErrorModel read_triad(const YamlFields& f, const TriadUnits& u, bool is_gyro) {
+  const std::string bias = "bias_fixed_" + u.rate, turn_on = "bias_turn_on_sigma_" + u.rate,
+                    quadratic = "quadratic_nonlinearity_per_" + u.rate,
+                    g_sensitivity = "g_sensitivity_rad_s_per_m_s2";
+  if (is_gyro) {
+    f.allow_only({bias.c_str(), turn_on.c_str(), "scale_factor_error_ppm", "misalignment_rad",
+                  quadratic.c_str(), g_sensitivity.c_str(), "bandwidth_hz", "quantization", "noise"});
+  } else {
+    f.allow_only({bias.c_str(), turn_on.c_str(), "scale_factor_error_ppm", "misalignment_rad",
+                  quadratic.c_str(), "bandwidth_hz", "quantization", "noise"});
+  }
+  TriadErrorModel model;
+  model.bias_fixed = f.per_axis(bias, false);
+  model.bias_turn_on_sigma = f.per_axis(turn_on, true);
+  model.scale_factor_error_ppm = f.per_axis("scale_factor_error_ppm", false);
+  if (!f.has("misalignment_rad")) f.fail("misalignment_rad", "missing required key");
+  model.misalignment_rad = f.matrix3_or_zero("misalignment_rad");
+  if (model.misalignment_rad.diagonal().cwiseAbs().maxCoeff() != 0.0) {
+    f.fail("misalignment_rad", "the diagonal must be zero (scale errors go in scale_factor_error_ppm)");
+  }
+  model.quadratic_nonlinearity_per_unit = f.per_axis_or_zero(quadratic);
+  if (is_gyro) model.g_sensitivity = f.matrix3_or_zero(g_sensitivity);
+  if (f.has("bandwidth_hz")) model.bandwidth_hz = f.positive("bandwidth_hz");
+  if (f.has("quantization")) read_quantization(f.child("quantization"), u, model);
+  read_noise(f.child("noise"), u, model);
+  return model;
+}
+
+}  // namespace
+
+Eigen::Matrix3d TriadErrorModel::scale_misalignment_matrix() const {
+  Eigen::Matrix3d k = Eigen::Matrix3d::Identity() + misalignment_rad;
+  k.diagonal() += scale_factor_error_ppm * 1e-6;
+  return k;
+}
+
+SensorProfile sensor_profile_from_yaml(const YAML::Node& root, const std::string& source_name) {
+  const YamlFields fields(root, "", source_name);
+  fields.allow_only({"name", "description", "gyro", "accelerometer"});
+  SensorProfile profile;
+  profile.source = source_name;
+  profile.name = fields.text("name");
+  profile.gyro = read_triad(fields.child("gyro"), {"rad_s", "rad", "rad2_s2"}, true);
+  profile.accelerometer =
+      read_triad(fields.child("accelerometer"), {"m_s2", "m_s", "m2_s4"}, false);
+  return profile;
+}
+
+SensorProfile load_sensor_profile(const std::string& path) {
+  return sensor_profile_from_yaml(load_yaml_file(path), path);
+}
+
+}  // namespace emulator
+}  // namespace imu_lab
