@@ -69,7 +69,9 @@ const NavState& Navigator::update(const ImuIncrement& increment) {
                               ((earth_.primeVerticalRadius_m(mid_latitude) + mid_height) *
                                std::cos(mid_latitude)) *
                               dt);
-  vertical_.applyFeedback(state_.height_m, state_.velocity_enu_mps.z(), dt);
+  const VerticalCorrection height_loop = vertical_.feedback(old.height_m, dt);
+  state_.height_m += height_loop.height_m;
+  state_.velocity_enu_mps.z() += height_loop.up_velocity_mps;
 
   // Attitude: nav frame rotation at mid-interval, which also keeps the Schuler loop from
   // gaining energy through the explicit velocity step above.

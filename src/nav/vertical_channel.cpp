@@ -42,11 +42,13 @@ bool VerticalChannel::aiding() const {
   return config_.mode == VerticalChannelMode::kHeld && reference_height_m_.has_value();
 }
 
-void VerticalChannel::applyFeedback(double& height_m, double& up_velocity_mps, double dt_s) const {
-  if (!aiding()) return;
-  const double height_error_m = height_m - *reference_height_m_;
-  height_m += config_.k1_per_s * height_error_m * dt_s;
-  up_velocity_mps += config_.k2_per_s2 * height_error_m * dt_s;
+VerticalCorrection VerticalChannel::feedback(double interval_start_height_m, double dt_s) const {
+  VerticalCorrection correction;
+  if (!aiding()) return correction;
+  const double height_error_m = interval_start_height_m - *reference_height_m_;
+  correction.height_m = config_.k1_per_s * height_error_m * dt_s;
+  correction.up_velocity_mps = config_.k2_per_s2 * height_error_m * dt_s;
+  return correction;
 }
 
 }  // namespace nav

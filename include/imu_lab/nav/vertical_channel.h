@@ -29,6 +29,11 @@ struct VerticalLoopGains {
 // Gains giving a double root at -1 / time_constant_s for a Schuler rate w0.
 VerticalLoopGains criticallyDampedVerticalGains(double time_constant_s, double schuler_rate_rad_s);
 
+struct VerticalCorrection {
+  double height_m = 0.0;
+  double up_velocity_mps = 0.0;
+};
+
 struct VerticalChannelConfig {
   VerticalChannelMode mode = VerticalChannelMode::kHeld;
   // Defaults: criticallyDampedVerticalGains(30 s, sqrt(9.7803253359 / 6378137)).
@@ -48,8 +53,10 @@ class VerticalChannel {
   void clearReferenceHeight();
   bool aiding() const;
 
-  // Feedback of eq. (34) over one step of dt_s, applied after the free inertial step.
-  void applyFeedback(double& height_m, double& up_velocity_mps, double dt_s) const;
+  // Feedback of eq. (34) over one step of dt_s, from the height at the interval start (which
+  // keeps the discrete steady state equal to the continuous one); add it to the free inertial
+  // step's height and up velocity. Zero when not aiding.
+  VerticalCorrection feedback(double interval_start_height_m, double dt_s) const;
 
  private:
   VerticalChannelConfig config_;
