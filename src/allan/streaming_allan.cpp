@@ -5,6 +5,7 @@
 
 #include "imu_lab/allan/checkpoint.h"
 #include "imu_lab/allan/checkpoint_codec.h"
+#include "imu_lab/allan/noise_type.h"
 #include "imu_lab/allan/streaming_points.h"
 #include "imu_lab/allan/streaming_tau_plan.h"
 #include "imu_lab/common/config_error.h"
@@ -54,6 +55,10 @@ StreamingAllan::StreamingAllan(const StreamingOptions& options)
   channel_reports_.resize(options_.channel_count);
 }
 
+std::size_t StreamingAllan::history_capacity() const {
+  return static_cast<std::size_t>(kMinimumLag1Points) * options_.exact_max_averaging_factor + 1;
+}
+
 void StreamingAllan::push(std::int64_t stamp_ns, const std::vector<double>& values) {
   push(stamp_ns, values.data(), values.size());
 }
@@ -87,7 +92,7 @@ void StreamingAllan::finish_warm_up() {
   channels_.clear();
   channels_.reserve(options_.channel_count);
   for (std::size_t c = 0; c < options_.channel_count; ++c) {
-    channels_.emplace_back(plan, offsets[c]);
+    channels_.emplace_back(plan, offsets[c], history_capacity());
     channel_reports_[c].offset = offsets[c];
   }
   stamps_ = StampTracker(tau0_ns, options_.gap_factor, options_.stamp_policy);
@@ -203,7 +208,7 @@ void StreamingAllan::deserialise_state(BinaryReader& in) {
     stamps_.load(in);
     channels_.clear();
     for (std::size_t c = 0; c < options_.channel_count; ++c) {
-      channels_.emplace_back(plan, 0.0);
+      channels_.emplace_back(plan, 0.0, history_capacity());
       channels_.back().load(in);
     }
   }

@@ -5,15 +5,18 @@
 namespace imu_lab {
 namespace allan {
 
-ChannelAccumulator::ChannelAccumulator(const TauPlan& plan, double offset) : offset_(offset) {
+ChannelAccumulator::ChannelAccumulator(const TauPlan& plan, double offset, std::size_t history_capacity)
+    : offset_(offset), history_(history_capacity) {
   levels_.reserve(plan.levels.size());
   for (const PlannedLevel& planned : plan.levels) levels_.emplace_back(planned.level, planned.level_averaging_factors);
+  history_.push(0.0);
 }
 
 void ChannelAccumulator::push(double value) {
   phase_.add(value - offset_);
   ++segment_sample_count_;
   const double phase = phase_.value();
+  history_.push(phase);
   for (ResolutionLevel& level : levels_) {
     const std::int64_t block_mask = (std::int64_t{1} << level.level()) - 1;
     // Sub-sampling the phase every 2^L samples is averaging the rate over blocks of 2^L;
@@ -27,12 +30,14 @@ void ChannelAccumulator::break_segment() {
   phase_ = CompensatedSum();
   segment_sample_count_ = 0;
   for (ResolutionLevel& level : levels_) level.restart_segment();
+  history_.start_segment();
+  history_.push(0.0);
 }
 
 std::size_t ChannelAccumulator::heap_bytes() const {
   std::size_t bytes = levels_.capacity() * sizeof(ResolutionLevel);
   for (const ResolutionLevel& level : levels_) bytes += level.heap_bytes();
-  return bytes;
+  return bytes + history_.heap_bytes();
 }
 
 void ChannelAccumulator::save(BinaryWriter& out) const {
@@ -41,6 +46,7 @@ void ChannelAccumulator::save(BinaryWriter& out) const {
   out.put_i64(segment_sample_count_);
   out.put_u64(levels_.size());
   for (const ResolutionLevel& level : levels_) level.save(out);
+  history_.save(out);
 }
 
 void ChannelAccumulator::load(BinaryReader& in) {
@@ -49,6 +55,7 @@ void ChannelAccumulator::load(BinaryReader& in) {
   segment_sample_count_ = in.get_i64();
   in.expect_u64(levels_.size(), "number of pyramid levels");
   for (ResolutionLevel& level : levels_) level.load(in);
+  history_.load(in);
 }
 
 }  // namespace allan

@@ -66,14 +66,6 @@ VarianceEstimate estimate(Statistic statistic, const ResolutionLevel& level, std
   throw std::invalid_argument("streaming_points: unknown statistic");
 }
 
-int noise_alpha(Statistic statistic, const ResolutionLevel& level, std::size_t i) {
-  const int m = level.averaging_factors()[i];
-  const VarianceEstimate allan = estimate(Statistic::kOverlappingAllan, level, i, 0.0);
-  const VarianceEstimate modified = estimate(Statistic::kModifiedAllan, level, i, 0.0);
-  const double ratio = modified.term_count > 0 && allan.variance > 0.0 ? modified.variance / allan.variance : -1.0;
-  return streaming_noise_alpha(statistic, level.block_autocorrelation().summary(i), m, ratio);
-}
-
 // Independent segments add their degrees of freedom.
 double pooled_edf(Statistic statistic, const ResolutionLevel& level, int m, int alpha) {
   double edf = 0.0;
@@ -104,7 +96,8 @@ std::vector<StabilityPoint> streaming_points(Statistic statistic, const ChannelA
       if (variance.term_count <= 0) continue;
       point.term_count = variance.term_count;
       point.deviation = std::sqrt(variance.variance) * units.value_scale;
-      point.alpha = noise_alpha(statistic, level, i);
+      point.alpha = streaming_noise_alpha(statistic, level.block_autocorrelation().summary(i), channel.history(),
+                                          level.level(), level_m, units.tau0_s);
       point.edf = pooled_edf(statistic, level, level_m, point.alpha);
       if (point.edf > 0.0) {
         const DeviationBounds bounds = chi_squared_bounds(point.deviation, point.edf, units.confidence);

@@ -56,6 +56,7 @@ class StreamingAllan {
 
  private:
   void finish_warm_up();
+  std::size_t history_capacity() const;
   void accept(std::int64_t stamp_ns, const double* values, std::int64_t sample_index);
   std::string serialise() const;
   void deserialise_state(BinaryReader& in);

@@ -8,6 +8,7 @@
 #include "imu_lab/allan/checkpoint_codec.h"
 #include "imu_lab/allan/streaming_compensated_sum.h"
 #include "imu_lab/allan/streaming_level.h"
+#include "imu_lab/allan/streaming_phase_history.h"
 #include "imu_lab/allan/streaming_tau_plan.h"
 
 namespace imu_lab {
@@ -15,13 +16,15 @@ namespace allan {
 
 class ChannelAccumulator {
  public:
-  ChannelAccumulator(const TauPlan& plan, double offset);
+  // history_capacity: see PhaseHistory (kMinimumLag1Points * m_exact + 1).
+  ChannelAccumulator(const TauPlan& plan, double offset, std::size_t history_capacity);
 
   void push(double value);  // a finite value; the caller screens NaN/Inf
   void break_segment();     // a gap: the next value starts a new segment
 
   double offset() const { return offset_; }
   const std::vector<ResolutionLevel>& levels() const { return levels_; }
+  const PhaseHistory& history() const { return history_; }
 
   std::size_t heap_bytes() const;
   void save(BinaryWriter& out) const;
@@ -32,6 +35,7 @@ class ChannelAccumulator {
   CompensatedSum phase_;
   std::int64_t segment_sample_count_ = 0;
   std::vector<ResolutionLevel> levels_;
+  PhaseHistory history_;
 };
 
 }  // namespace allan

@@ -1,0 +1,77 @@
+// Beyond the exact limit the streaming engine equals the decimated batch estimator (rate
+// averaged over 2^L samples, batch statistic at m / 2^L), term counts and EDF included.
+#include <gtest/gtest.h>
+
+#include "allan_streaming_test_support.h"
+#include "imu_lab/allan/decimated_batch.h"
+#include "imu_lab/allan/streaming_tau_plan.h"
+
+namespace imu_lab {
+namespace allan {
+namespace {
+
+using namespace testing_support;
+
+TEST(AllanStreamingDecimated, BeyondTheExactLimitEqualsTheDecimatedBatchEstimator) {
+  StreamingOptions options;
+  options.channel_count = 2;
+  options.exact_max_averaging_factor = 24;
+  options.points_per_decade = 10;
+  options.max_tau_s = 10.0;
+  const std::size_t count = 30001;  // not a multiple of any block: incomplete blocks are dropped
+  const std::vector<std::vector<double>> rates = {synthetic_rate(count, 21, 0.5), synthetic_rate(count, 22)};
+  StreamingAllan engine(options);
+  feed(engine, rates, 0, count);
+  const StreamingSnapshot snapshot = engine.snapshot();
+  const TauPlan plan = plan_taus(options, 1e-3);
+  ASSERT_GE(plan.levels.size(), 6u);
+
+  double worst = 0.0;
+  std::size_t compared = 0;
+  for (const Statistic statistic : kStreamingStatistics) {
+    for (std::size_t c = 0; c < rates.size(); ++c) {
+      const std::vector<StabilityPoint>& curve = snapshot.curve(statistic, c);
+      for (const PlannedLevel& level : plan.levels) {
+        if (level.level == 0) continue;
+        const auto reference = evaluate_decimated_frequency(statistic, rates[c], 1e-3, level.level,
+                                                            level.level_averaging_factors);
+        std::vector<StabilityPoint> streamed;
+        for (const StabilityPoint& point : curve) {
+          for (const StabilityPoint& expected : reference) {
+            if (point.averaging_factor == expected.averaging_factor) streamed.push_back(point);
+          }
+        }
+        worst = std::max(worst, compare_points(streamed, reference,
+                                               statistic_name(statistic) + " level " + std::to_string(level.level)));
+        compared += reference.size();
+      }
+    }
+  }
+  EXPECT_GE(compared, 200u);
+  std::printf("max relative difference to the decimated batch beyond m_exact: %.3g over %zu points\n", worst, compared);
+}
+
+TEST(AllanStreamingDecimated, LevelsCoverOneOctaveEachAndReportMultiplesOfTheirBlock) {
+  StreamingOptions options;
+  options.exact_max_averaging_factor = 100;
+  options.points_per_decade = 10;
+  options.max_tau_s = 1e4;
+  const TauPlan plan = plan_taus(options, 1e-3);
+  int previous_largest = 0;
+  for (const PlannedLevel& level : plan.levels) {
+    for (const int factor : level.level_averaging_factors) {
+      EXPECT_LE(factor, 100);
+      if (level.level > 0) {
+        EXPECT_GT(factor, 50) << "level " << level.level;
+      }
+      EXPECT_GT(factor << level.level, previous_largest);
+      previous_largest = factor << level.level;
+    }
+  }
+  EXPECT_GE(previous_largest, 9000000);
+  EXPECT_LE(previous_largest, 10000000 + (1 << plan.levels.back().level));
+}
+
+}  // namespace
+}  // namespace allan
+}  // namespace imu_lab
