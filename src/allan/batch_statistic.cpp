@@ -23,6 +23,13 @@ std::string statistic_name(Statistic statistic) {
                               std::to_string(static_cast<int>(statistic)));
 }
 
+int difference_order(Statistic statistic) {
+  const bool hadamard = statistic == Statistic::kHadamard ||
+                        statistic == Statistic::kOverlappingHadamard ||
+                        statistic == Statistic::kHadamardKrobka;
+  return hadamard ? 3 : 2;
+}
+
 long long term_count(Statistic statistic, std::size_t phase_count, int m) {
   if (m < 1) {
     throw std::invalid_argument("term_count: averaging factor m = " + std::to_string(m) +

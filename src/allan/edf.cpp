@@ -205,10 +205,8 @@ double total_variance_edf(int alpha, int m, long long phase_count) {
 
 double equivalent_degrees_of_freedom(Statistic statistic, int alpha, int m,
                                      long long phase_count) {
-  const bool hadamard_family = statistic == Statistic::kHadamard ||
-                               statistic == Statistic::kOverlappingHadamard ||
-                               statistic == Statistic::kHadamardKrobka;
-  const int resolved_alpha = std::max(alpha, hadamard_family ? -4 : -2);
+  // Greenhall's algorithm needs alpha + 2d > 1.
+  const int resolved_alpha = std::max(alpha, 2 - 2 * difference_order(statistic));
   switch (statistic) {
     case Statistic::kAllan:
       return greenhall_edf(resolved_alpha, 2, m, phase_count, false, false);

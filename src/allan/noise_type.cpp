@@ -10,11 +10,6 @@ namespace imu_lab {
 namespace allan {
 namespace {
 
-bool is_hadamard_family(Statistic statistic) {
-  return statistic == Statistic::kHadamard || statistic == Statistic::kOverlappingHadamard ||
-         statistic == Statistic::kHadamardKrobka;
-}
-
 // Lag-1 autocorrelation about the mean (Riley & Greenhall eq. 2); 0 for a constant series.
 double lag1_autocorrelation(const std::vector<double>& z) {
   double mean = 0.0;
@@ -139,11 +134,12 @@ double expected_modified_ratio(int alpha, int m) {
 
 int estimate_noise_alpha(Statistic statistic, const std::vector<double>& phase, double tau0_s,
                          int m, SampleKind kind) {
-  const int lowest_alpha = is_hadamard_family(statistic) ? -4 : -2;
+  const int order = difference_order(statistic);
+  const int lowest_alpha = 2 - 2 * order;  // reddest noise it converges for: alpha + 2d > 1
   const std::vector<double> series = series_at_tau(phase, tau0_s, m, kind);
   int alpha = 0;
   if (static_cast<long long>(series.size()) >= kMinimumLag1Points) {
-    alpha = lag1_autocorrelation_alpha(series, is_hadamard_family(statistic) ? 3 : 2, kind);
+    alpha = lag1_autocorrelation_alpha(series, order, kind);
   } else {
     alpha = b1_fallback_alpha(statistic, phase, tau0_s, m, std::max(lowest_alpha, -2));
   }

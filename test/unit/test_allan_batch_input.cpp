@@ -100,6 +100,8 @@ TEST(AllanBatchInput, NonFiniteSamplesAreRefused) {
   for (Statistic statistic : kAllStatistics) {
     expect_refused([&] { variance(statistic, phase, 1.0, 2); }, "sample 37");
     expect_refused([&] { evaluate(statistic, phase, 1.0, {1, 2}); }, "not finite");
+    // Refused even when every requested tau would have been skipped as too long.
+    expect_refused([&] { evaluate(statistic, phase, 1.0, {1000}); }, "not finite");
   }
   std::vector<double> frequency(50, 1.0);
   frequency[3] = std::numeric_limits<double>::infinity();

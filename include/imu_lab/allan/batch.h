@@ -32,6 +32,11 @@ enum class Statistic {
 // Short lowercase name used in file names and reports: "adev", "oadev", ..., "akdev", "hkdev".
 std::string statistic_name(Statistic statistic);
 
+// Order d of the phase differences the statistic is built on: 3 for the Hadamard family (hdev,
+// ohdev, hkdev: blind to a linear frequency drift, resolving noise down to alpha = -4), 2 for
+// the others (resolving down to alpha = -2). It is also the lag-1 test's maximum differencing.
+int difference_order(Statistic statistic);
+
 struct StabilityPoint {
   int averaging_factor = 0;   // m = tau / tau0
   double tau_s = 0.0;
