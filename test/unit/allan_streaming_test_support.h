@@ -55,6 +55,7 @@ inline void feed(StreamingAllan& engine, const std::vector<std::vector<double>>&
 }
 
 inline double relative_difference(double a, double b) {
+  if (a == b) return 0.0;  // also equal infinities (bounds of a zero-spread dispersion)
   const double scale = std::max(std::abs(a), std::abs(b));
   return scale > 0.0 ? std::abs(a - b) / scale : 0.0;
 }
