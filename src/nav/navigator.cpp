@@ -49,12 +49,16 @@ const NavState& Navigator::update(const ImuIncrement& increment) {
 
   // Velocity: specific force rotated with the attitude at the interval start, corrected for the
   // nav frame turning during the interval; gravity and Coriolis from the start-of-interval state.
+  // The nav-rotation term acts on the raw increment, so that it cancels the body's (1/2) a x v
+  // exactly when the body turns with the nav frame (static on the rotating Earth); on the
+  // compensated increment it would add a spurious third-order term zeta x (a x v) / 4.
   const Eigen::Vector3d nav_rotation_start = (earth_rate + transport_rate) * dt;
   const Eigen::Vector3d specific_force_dv = old.q_body_to_enu * body.delta_velocity_mps;
+  const Eigen::Vector3d raw_specific_force_dv = old.q_body_to_enu * increment.delta_velocity_mps;
   const Eigen::Vector3d gravity(0.0, 0.0, -earth_.gravity_mps2(old.latitude_rad, old.height_m));
   const Eigen::Vector3d coriolis = -(2.0 * earth_rate + transport_rate).cross(old.velocity_enu_mps);
   state_.velocity_enu_mps = old.velocity_enu_mps + specific_force_dv -
-                            0.5 * nav_rotation_start.cross(specific_force_dv) +
+                            0.5 * nav_rotation_start.cross(raw_specific_force_dv) +
                             (gravity + coriolis) * dt;
 
   // Position: trapezoidal velocity; radii at mid-interval height and latitude.

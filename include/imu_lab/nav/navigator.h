@@ -8,8 +8,9 @@
 // Mechanisation (Savage 1998 structure), internally in the local-level ENU frame, so the state is
 // exposed as-is (see nav_state.h for the frames):
 //  - coning / sculling / rotation compensation of the increments (coning_sculling.h);
-//  - velocity: dv = [I - zeta/2 x] C(k-1) dv_b + (g - (2 w_ie + w_en) x v) dt, with zeta =
-//    (w_ie + w_en) dt from the state at the interval start and normal gravity (earth_model.h);
+//  - velocity: dv = C(k-1) dv_b - zeta/2 x C(k-1) v + (g - (2 w_ie + w_en) x v) dt, with dv_b the
+//    compensated and v the raw increment, zeta = (w_ie + w_en) dt from the state at the interval
+//    start and normal gravity (earth_model.h);
 //  - position: trapezoidal velocity on lat / lon / height with the ellipsoid's radii;
 //  - vertical channel feedback (vertical_channel.h);
 //  - attitude: q(k) = exp(-zeta) q(k-1) exp(phi), zeta evaluated at mid-interval, normalised.

@@ -1,0 +1,84 @@
+// Earth model values and the mechanisation's consistency on the rotating WGS-84 Earth.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "test_nav_support.h"
+
+namespace imu_lab {
+namespace nav {
+namespace {
+
+using test_support::kDegToRad;
+
+TEST(NavEarthModel, SomiglianaNormalGravity) {
+  const EarthModel earth;
+  EXPECT_NEAR(earth.gravity_mps2(0.0, 0.0), 9.7803253359, 1e-10);
+  EXPECT_NEAR(earth.gravity_mps2(90.0 * kDegToRad, 0.0), 9.8321849378, 1e-9);  // g_p of WGS-84
+  // Free-air gradient about 3.086e-6 (m/s^2)/m near the surface.
+  EXPECT_NEAR(earth.gravity_mps2(45.0 * kDegToRad, 1000.0) - earth.gravity_mps2(45.0 * kDegToRad, 0.0),
+              -3.086e-3, 1e-5);
+  EXPECT_NEAR(earth.meridianRadius_m(0.0), 6335439.327, 1e-3);
+  EXPECT_NEAR(earth.primeVerticalRadius_m(90.0 * kDegToRad), 6399593.626, 1e-3);
+}
+
+TEST(NavEarthModel, TextbookSphere) {
+  const EarthModel sphere(test_support::textbookSphere());
+  EXPECT_DOUBLE_EQ(sphere.gravity_mps2(0.3, 0.0), 9.81);
+  EXPECT_DOUBLE_EQ(sphere.gravity_mps2(0.3, 6371000.0), 9.81 / 4.0);
+  EXPECT_EQ(sphere.earthRateEnu_rad_s(0.3), Eigen::Vector3d::Zero());
+  EXPECT_NEAR(2.0 * M_PI / sphere.schulerRate_rad_s() / 60.0, 84.39, 0.01);
+}
+
+// A perfect static IMU on the rotating ellipsoid: Earth rate, normal gravity, curvature and the
+// nav-frame rotation must cancel exactly, with the vertical channel free.
+TEST(NavRotatingEarth, PerfectStaticImuStaysPut) {
+  test_support::StaticScenario scenario;
+  scenario.config.vertical.mode = VerticalChannelMode::kFree;
+  scenario.latitude_rad = 50.0 * kDegToRad;
+  scenario.q_body_to_enu = Eigen::Quaterniond(Eigen::AngleAxisd(1.0, Eigen::Vector3d(1.0, 2.0, 3.0).normalized()));
+  scenario.duration_s = 3600.0;
+  scenario.dt_s = 0.1;
+  for (const test_support::ErrorSample& s : runStaticScenario(scenario)) {
+    ASSERT_LT(s.position_error_enu_m.norm(), 1e-4) << "t = " << s.time_s;
+    ASSERT_LT(s.attitude_error_rad.norm(), 1e-10) << "t = " << s.time_s;
+  }
+}
+
+// Coriolis: on the rotating Earth the Schuler oscillation's plane turns like Foucault's pendulum,
+// clockwise seen from above in the north. For an initial velocity error dv0 and w_F = W sin L,
+// z = dr_E + i dr_N obeys z'' + 2 i w_F z' + w0^2 z = 0, so z = dv0 exp(-i w_F t) sin(w_s t) / w_s,
+// w_s = sqrt(w0^2 + w_F^2) (neglecting the 24-h coupling, small over 1.5 h).
+TEST(NavRotatingEarth, SchulerOscillationTurnsAtTheFoucaultRate) {
+  test_support::StaticScenario scenario;
+  scenario.config.vertical.fixed_reference_height_m = 0.0;
+  scenario.latitude_rad = 50.0 * kDegToRad;
+  const EarthModel earth;
+  const double w0_squared = earth.gravity_mps2(scenario.latitude_rad, 0.0) /
+                            std::sqrt(earth.meridianRadius_m(scenario.latitude_rad) *
+                                      earth.primeVerticalRadius_m(scenario.latitude_rad));
+  const double foucault_rate = earth.earthRate_rad_s() * std::sin(scenario.latitude_rad);
+  const double schuler_rate = std::sqrt(w0_squared + foucault_rate * foucault_rate);
+  scenario.duration_s = 1.5 * 2.0 * M_PI / schuler_rate;
+  scenario.initial_velocity_error_enu_mps = Eigen::Vector3d(1.0, 0.0, 0.0);
+  double worst_m = 0.0, peak_m = 1.0 / schuler_rate;
+  double quarter_period_angle_rad = 0.0;
+  for (const test_support::ErrorSample& s : runStaticScenario(scenario)) {
+    const double amplitude_m = std::sin(schuler_rate * s.time_s) / schuler_rate;
+    const Eigen::Vector2d expected(amplitude_m * std::cos(foucault_rate * s.time_s),
+                                   -amplitude_m * std::sin(foucault_rate * s.time_s));
+    worst_m = std::max(worst_m, (s.position_error_enu_m.head<2>() - expected).norm());
+    if (std::abs(s.time_s - std::round(0.25 * 2.0 * M_PI / schuler_rate / 60.0) * 60.0) < 1.0) {
+      quarter_period_angle_rad = std::atan2(s.position_error_enu_m.y(), s.position_error_enu_m.x());
+    }
+  }
+  std::printf("[nav] Foucault: error direction at T0/4 turned %.4f rad (expected %.4f), worst deviation "
+              "%.1f m of %.1f m peak\n", quarter_period_angle_rad,
+              -foucault_rate * 0.25 * 2.0 * M_PI / schuler_rate, worst_m, peak_m);
+  EXPECT_LE(worst_m, 0.02 * peak_m);
+  EXPECT_NEAR(quarter_period_angle_rad, -foucault_rate * 0.25 * 2.0 * M_PI / schuler_rate, 0.005);
+}
+
+}  // namespace
+}  // namespace nav
+}  // namespace imu_lab
