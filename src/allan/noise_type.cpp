@@ -30,6 +30,7 @@ std::vector<double> series_at_tau(const std::vector<double>& phase, double tau0_
                                   SampleKind kind) {
   const std::size_t lag = static_cast<std::size_t>(m);
   std::vector<double> series;
+  series.reserve(phase.size() / lag + 1);
   for (std::size_t k = 0; k < phase.size(); k += lag) series.push_back(phase[k]);
   if (kind == SampleKind::kFrequency) {
     for (std::size_t k = 0; k + 1 < series.size(); ++k) {
