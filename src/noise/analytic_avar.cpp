@@ -58,22 +58,22 @@ double sinusoid_avar(double amplitude, double frequency_hz, double tau) {
   return amplitude * amplitude * std::pow(s * s / x, 2.0);
 }
 
-double zero_dc_family_avar(int n, double alpha, double beta, double tau) {
-  const double a = beta * beta + 4.0 * kPi * kPi * tau * tau;
-  const double c = beta * beta + 16.0 * kPi * kPi * tau * tau;
-  const double p2t2 = kPi * kPi * tau * tau;
-  switch (n) {
-    case 1:
-      return -alpha / (4.0 * p2t2) * (std::log(c) - 4.0 * std::log(a) + 6.0 * std::log(beta));
-    case 2:
-      return 96.0 * alpha * p2t2 / (beta * a * c);
-    case 3:
-      return 96.0 * alpha * p2t2 *
-             (5.0 * std::pow(beta, 4) + 60.0 * beta * beta * p2t2 + 60.0 * p2t2 * p2t2) /
-             (beta * beta * a * a * c * c);
-    default:
-      throw std::invalid_argument("zero_dc_family_avar: n must be 1, 2 or 3");
+double zero_dc_family_avar(double n, double alpha, double beta, double tau) {
+  if (n == 1.0) {  // table 7.2, first row
+    const double a = beta * beta + 4.0 * kPi * kPi * tau * tau;
+    const double c = beta * beta + 16.0 * kPi * kPi * tau * tau;
+    return -alpha / (4.0 * kPi * kPi * tau * tau) *
+           (std::log(c) - 4.0 * std::log(a) + 6.0 * std::log(beta));
   }
+  if (!(n > 1.0)) throw std::invalid_argument("zero_dc_family_avar: n must be >= 1");
+  // Table 7.1: alpha Gamma(n-1) / (4 pi^2 tau^2) * 2 Re[3 beta^(1-n) - 4 (beta - 2 i pi tau)^(1-n)
+  //            + (beta - 4 i pi tau)^(1-n)]
+  using Complex = std::complex<double>;
+  const double power = 1.0 - n;
+  const Complex bracket = 3.0 * std::pow(Complex(beta, 0.0), power) -
+                          4.0 * std::pow(Complex(beta, -2.0 * kPi * tau), power) +
+                          std::pow(Complex(beta, -4.0 * kPi * tau), power);
+  return alpha * std::tgamma(n - 1.0) / (2.0 * kPi * kPi * tau * tau) * bracket.real();
 }
 
 }  // namespace noise

@@ -22,9 +22,10 @@ double rate_ramp_avar(double slope_per_s, double tau_s);                       /
 double markov_avar(double q_c_per_sqrt_s, double correlation_time_s, double tau_s);
 // Eq. 5.8, peak amplitude Omega0 (time average over a long record).
 double sinusoid_avar(double amplitude, double frequency_hz, double tau_s);
-// Seed 003 table 7.2, rate PSD alpha f^n exp(-beta f), n = 1, 2 or 3 (the table's f^2 row has a
-// misprint alpha^2 for alpha).
-double zero_dc_family_avar(int exponent_n, double alpha, double beta_s, double tau_s);
+// Seed 003 table 7.1, rate PSD alpha f^n exp(-beta f), any real n > 1; n = 1 from table 7.2.
+// (Table 7.2's f^2 row misprints alpha^2 for alpha; its f^3 row disagrees with table 7.1 and
+// with the numerical integral of eq. 5.1 by ~6 %, so it is not used.)
+double zero_dc_family_avar(double exponent_n, double alpha, double beta_s, double tau_s);
 
 }  // namespace noise
 }  // namespace imu_lab
