@@ -10,12 +10,28 @@ DifferenceAccumulator::DifferenceAccumulator(int order, std::vector<int> averagi
       averaging_factors_(std::move(averaging_factors)),
       overlapping_(averaging_factors_.size()),
       non_overlapping_(averaging_factors_.size()),
+      open_segment_overlapping_(averaging_factors_.size()),
+      closed_spread_(averaging_factors_.size()),
       next_non_overlapping_end_(averaging_factors_.size()) {
   start_segment();
 }
 
+namespace {
+
+double spread(const DifferenceSums& sums) {
+  return sums.count > 0 ? sums.squares.value() - sums.values.value() * sums.mean() : 0.0;
+}
+
+}  // namespace
+
+double DifferenceAccumulator::overlapping_spread(std::size_t tau_index) const {
+  return closed_spread_[tau_index].value() + spread(open_segment_overlapping_[tau_index]);
+}
+
 void DifferenceAccumulator::start_segment() {
   for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {
+    closed_spread_[i].add(spread(open_segment_overlapping_[i]));
+    open_segment_overlapping_[i] = DifferenceSums();
     next_non_overlapping_end_[i] = static_cast<std::int64_t>(order_) * averaging_factors_[i];
   }
 }
@@ -28,6 +44,7 @@ void DifferenceAccumulator::update(const PhaseRing& ring) {
     if (newest < static_cast<std::int64_t>(order_) * m) break;
     const double difference = phase_difference(ring, newest, m, order_);
     overlapping_[i].add(difference);
+    open_segment_overlapping_[i].add(difference);
     if (newest == next_non_overlapping_end_[i]) {
       non_overlapping_[i].add(difference);
       next_non_overlapping_end_[i] += m;
@@ -37,7 +54,9 @@ void DifferenceAccumulator::update(const PhaseRing& ring) {
 
 std::size_t DifferenceAccumulator::heap_bytes() const {
   return averaging_factors_.capacity() * sizeof(int) +
-         (overlapping_.capacity() + non_overlapping_.capacity()) * sizeof(DifferenceSums) +
+         (overlapping_.capacity() + non_overlapping_.capacity() + open_segment_overlapping_.capacity()) *
+             sizeof(DifferenceSums) +
+         closed_spread_.capacity() * sizeof(CompensatedSum) +
          next_non_overlapping_end_.capacity() * sizeof(std::int64_t);
 }
 
@@ -46,6 +65,8 @@ void DifferenceAccumulator::save(BinaryWriter& out) const {
   for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {
     overlapping_[i].save(out);
     non_overlapping_[i].save(out);
+    open_segment_overlapping_[i].save(out);
+    closed_spread_[i].save(out);
   }
   out.put_i64s(next_non_overlapping_end_);
 }
@@ -55,6 +76,8 @@ void DifferenceAccumulator::load(BinaryReader& in) {
   for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {
     overlapping_[i].load(in);
     non_overlapping_[i].load(in);
+    open_segment_overlapping_[i].load(in);
+    closed_spread_[i].load(in);
   }
   next_non_overlapping_end_ = in.get_i64s();
   if (next_non_overlapping_end_.size() != averaging_factors_.size()) in.fail("averaging factor count");

@@ -23,9 +23,16 @@ double squared(double value) { return value * value; }
 // Allan, 6 for Hadamard.
 double difference_normaliser(int order) { return order == 2 ? 2.0 : 6.0; }
 
-VarianceEstimate mean_square_estimate(const DifferenceSums& sums, int order, int m, bool remove_mean) {
-  const double spread = remove_mean ? sums.mean_square() - squared(sums.mean()) : sums.mean_square();
-  return {std::max(0.0, spread) / (difference_normaliser(order) * squared(m)), sums.count};
+VarianceEstimate mean_square_estimate(const DifferenceSums& sums, int order, int m) {
+  return {sums.mean_square() / (difference_normaliser(order) * squared(m)), sums.count};
+}
+
+// Krobka (seed 003 eq. 5.10): the mean square minus the squared mean, the mean taken per segment.
+VarianceEstimate dispersion_estimate(const DifferenceAccumulator& differences, std::size_t i, int m) {
+  const DifferenceSums& sums = differences.overlapping(i);
+  if (sums.count == 0) return {};
+  const double spread = std::max(0.0, differences.overlapping_spread(i)) / sums.count;
+  return {spread / (difference_normaliser(differences.order()) * squared(m)), sums.count};
 }
 
 long long total_normaliser(const ResolutionLevel& level, int m) {
@@ -39,13 +46,12 @@ long long total_normaliser(const ResolutionLevel& level, int m) {
 VarianceEstimate estimate(Statistic statistic, const ResolutionLevel& level, std::size_t i, double tau_s) {
   const int m = level.averaging_factors()[i];
   switch (statistic) {
-    case Statistic::kAllan: return mean_square_estimate(level.allan().non_overlapping(i), 2, m, false);
-    case Statistic::kOverlappingAllan: return mean_square_estimate(level.allan().overlapping(i), 2, m, false);
-    case Statistic::kAllanKrobka: return mean_square_estimate(level.allan().overlapping(i), 2, m, true);
-    case Statistic::kHadamard: return mean_square_estimate(level.hadamard().non_overlapping(i), 3, m, false);
-    case Statistic::kOverlappingHadamard:
-      return mean_square_estimate(level.hadamard().overlapping(i), 3, m, false);
-    case Statistic::kHadamardKrobka: return mean_square_estimate(level.hadamard().overlapping(i), 3, m, true);
+    case Statistic::kAllan: return mean_square_estimate(level.allan().non_overlapping(i), 2, m);
+    case Statistic::kOverlappingAllan: return mean_square_estimate(level.allan().overlapping(i), 2, m);
+    case Statistic::kAllanKrobka: return dispersion_estimate(level.allan(), i, m);
+    case Statistic::kHadamard: return mean_square_estimate(level.hadamard().non_overlapping(i), 3, m);
+    case Statistic::kOverlappingHadamard: return mean_square_estimate(level.hadamard().overlapping(i), 3, m);
+    case Statistic::kHadamardKrobka: return dispersion_estimate(level.hadamard(), i, m);
     case Statistic::kModifiedAllan:
     case Statistic::kTime: {
       // Each term sums m second differences: MVAR = <W^2> / (2 m^4) in rate units

@@ -1,7 +1,8 @@
 // Allan-type (order 2) or Hadamard-type (order 3) phase differences at a set of averaging
 // factors, accumulated one phase point at a time: fully overlapping (every start index) and
 // non-overlapping (start indices that are multiples of m). Sums persist across segments, which
-// pools them; only the per-segment position is reset.
+// pools them; only the per-segment position is reset. For Krobka's dispersion the spread about
+// the mean difference is taken within each segment (a gap may hide a bias jump) and pooled.
 #pragma once
 
 #include <cstdint>
@@ -18,12 +19,14 @@ class DifferenceAccumulator {
   // averaging_factors ascending; the ring must hold order * max(m) + 1 points.
   DifferenceAccumulator(int order, std::vector<int> averaging_factors);
 
-  void start_segment();
+  void start_segment();  // folds the open segment's spread into the pooled one
   void update(const PhaseRing& ring);  // after the ring received a new phase point
 
   int order() const { return order_; }
   const DifferenceSums& overlapping(std::size_t tau_index) const { return overlapping_[tau_index]; }
   const DifferenceSums& non_overlapping(std::size_t tau_index) const { return non_overlapping_[tau_index]; }
+  // Sum over segments of sum_k (d_k - segment mean)^2 of the overlapping differences.
+  double overlapping_spread(std::size_t tau_index) const;
   std::size_t heap_bytes() const;
 
   void save(BinaryWriter& out) const;
@@ -34,6 +37,8 @@ class DifferenceAccumulator {
   std::vector<int> averaging_factors_;
   std::vector<DifferenceSums> overlapping_;
   std::vector<DifferenceSums> non_overlapping_;
+  std::vector<DifferenceSums> open_segment_overlapping_;
+  std::vector<CompensatedSum> closed_spread_;
   std::vector<std::int64_t> next_non_overlapping_end_;  // phase index ending the next such term
 };
 
