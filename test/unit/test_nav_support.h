@@ -2,6 +2,7 @@
 // runner for static error-propagation scenarios.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
