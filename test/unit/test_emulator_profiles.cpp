@@ -1,0 +1,180 @@
+// Profile and scenario loading: every shipped file loads and runs; each kind of bad input is
+// refused with a ConfigError naming the dotted key.
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <string>
+
+#include "imu_lab/common/config_error.h"
+#include "imu_lab/emulator/imu_emulator.h"
+
+#ifndef IMU_LAB_CONFIG_DIR
+#define IMU_LAB_CONFIG_DIR "config"
+#endif
+
+namespace imu_lab {
+namespace emulator {
+namespace {
+
+const std::string kConfigDir = IMU_LAB_CONFIG_DIR;
+
+const char* const kValidProfile = R"(
+name: test
+gyro:
+  bias_fixed_rad_s: 0.0
+  bias_turn_on_sigma_rad_s: 0.0
+  scale_factor_error_ppm: 0.0
+  misalignment_rad: [[0, 0, 0], [0, 0, 0], [0, 0, 0]]
+  noise:
+    white_rate: {density_rad_s_per_sqrt_hz: 1.0e-4}
+    markov:
+      - {q_c_rad_s_per_sqrt_s: 1.0e-3, correlation_time_s: 0.1}
+      - {q_c_rad_s_per_sqrt_s: 1.0e-4, correlation_time_s: 10.0}
+accelerometer:
+  bias_fixed_m_s2: 0.0
+  bias_turn_on_sigma_m_s2: 0.0
+  scale_factor_error_ppm: 0.0
+  misalignment_rad: [[0, 0, 0], [0, 0, 0], [0, 0, 0]]
+  noise:
+    white_rate: {density_m_s2_per_sqrt_hz: 1.0e-3}
+)";
+
+// Applies `edit` to the valid profile and returns the key the ConfigError names ("" if none).
+std::string refused_key(const std::function<void(YAML::Node&)>& edit) {
+  YAML::Node root = YAML::Load(kValidProfile);
+  edit(root);
+  try {
+    sensor_profile_from_yaml(root, "test.yaml");
+  } catch (const ConfigError& error) {
+    std::printf("[refused] %s\n", error.what());
+    return error.key();
+  }
+  return "";
+}
+
+TEST(EmulatorProfiles, ValidProfileLoads) {
+  const SensorProfile profile = sensor_profile_from_yaml(YAML::Load(kValidProfile), "test.yaml");
+  EXPECT_EQ(profile.gyro.noise_per_axis[0].size(), 3u);  // white + two Markov
+  EXPECT_EQ(profile.accelerometer.noise_per_axis[2].size(), 1u);
+}
+
+TEST(EmulatorProfiles, MissingKeyNamed) {
+  EXPECT_EQ(refused_key([](YAML::Node& r) { r["gyro"].remove("scale_factor_error_ppm"); }),
+            "gyro.scale_factor_error_ppm");
+  EXPECT_EQ(refused_key([](YAML::Node& r) { r["accelerometer"]["noise"]["white_rate"].remove("density_m_s2_per_sqrt_hz"); }),
+            "accelerometer.noise.white_rate.density_m_s2_per_sqrt_hz");
+  EXPECT_EQ(refused_key([](YAML::Node& r) { r.remove("name"); }), "name");
+}
+
+TEST(EmulatorProfiles, WrongTypeNamed) {
+  EXPECT_EQ(refused_key([](YAML::Node& r) { r["gyro"]["noise"]["white_rate"]["density_rad_s_per_sqrt_hz"] = "loud"; }),
+            "gyro.noise.white_rate.density_rad_s_per_sqrt_hz");
+  EXPECT_EQ(refused_key([](YAML::Node& r) { r["gyro"]["misalignment_rad"][1] = 3.0; }),
+            "gyro.misalignment_rad[1]");
+  EXPECT_EQ(refused_key([](YAML::Node& r) { r["gyro"]["noise"] = "none"; }), "gyro.noise");
+}
+
+TEST(EmulatorProfiles, NegativeVarianceNamed) {
+  EXPECT_EQ(refused_key([](YAML::Node& r) { r["gyro"]["noise"]["white_rate"]["density_rad_s_per_sqrt_hz"] = -1e-4; }),
+            "gyro.noise.white_rate.density_rad_s_per_sqrt_hz");
+  EXPECT_EQ(refused_key([](YAML::Node& r) { r["gyro"]["noise"]["markov"][1]["q_c_rad_s_per_sqrt_s"] = -1.0; }),
+            "gyro.noise.markov[1].q_c_rad_s_per_sqrt_s");
+  EXPECT_EQ(refused_key([](YAML::Node& r) { r["accelerometer"]["bias_turn_on_sigma_m_s2"] = -0.1; }),
+            "accelerometer.bias_turn_on_sigma_m_s2");
+}
+
+TEST(EmulatorProfiles, UnknownNoiseNameNamed) {
+  EXPECT_EQ(refused_key([](YAML::Node& r) { r["gyro"]["noise"]["pink_noise"]["density"] = 1.0; }),
+            "gyro.noise.pink_noise");
+}
+
+TEST(EmulatorProfiles, UnknownKeysNamed) {
+  EXPECT_EQ(refused_key([](YAML::Node& r) { r["magnetometer"]["x"] = 1.0; }), "magnetometer");
+  // A unit mix-up is an unknown key: gyro keys are in rad/s.
+  EXPECT_EQ(refused_key([](YAML::Node& r) { r["gyro"]["noise"]["white_rate"]["density_m_s2_per_sqrt_hz"] = 1.0; }),
+            "gyro.noise.white_rate.density_m_s2_per_sqrt_hz");
+}
+
+TEST(EmulatorProfiles, InconsistentValuesNamed) {
+  EXPECT_EQ(refused_key([](YAML::Node& r) { r["gyro"]["misalignment_rad"][0][0] = 1e-3; }),
+            "gyro.misalignment_rad");
+  EXPECT_EQ(refused_key([](YAML::Node& r) { r["gyro"]["noise"]["markov"][0]["correlation_time_s"] = 0.0; }),
+            "gyro.noise.markov[0].correlation_time_s");
+  EXPECT_EQ(refused_key([](YAML::Node& r) {
+              r["gyro"]["noise"]["bias_instability"] = YAML::Load(
+                  "{coefficient_rad_s: 1e-5, cutoff_frequency_hz: 1.0, valid_tau_range_s: [0.01, 100]}");
+            }),
+            "gyro.noise.bias_instability.valid_tau_range_s");
+  EXPECT_EQ(refused_key([](YAML::Node& r) { r["gyro"]["quantization"] = YAML::Load("{model: rounding}"); }),
+            "gyro.quantization.model");
+  EXPECT_EQ(refused_key([](YAML::Node& r) {
+              r["gyro"]["noise"]["zero_dc_family"] = YAML::Load(
+                  "{exponent_n: 1, alpha_rad2_s2_per_hz_n_plus_1: 1e-6, beta_s: 0.1}");
+            }),
+            "gyro.noise.zero_dc_family.exponent_n");
+}
+
+TEST(EmulatorProfiles, MissingFileNamed) {
+  try {
+    load_sensor_profile(kConfigDir + "/sensors/no_such_profile.yaml");
+    FAIL() << "no error";
+  } catch (const ConfigError& error) {
+    EXPECT_EQ(error.key(), "(file)");
+  }
+}
+
+TEST(EmulatorProfiles, ScenarioRefusalsNamed) {
+  const YAML::Node valid = YAML::LoadFile(kConfigDir + "/scenarios/static.yaml");
+  auto key_of = [&](const std::function<void(YAML::Node&)>& edit) -> std::string {
+    YAML::Node root = YAML::Clone(valid);
+    edit(root);
+    try {
+      scenario_from_yaml(root, "static.yaml");
+    } catch (const ConfigError& error) {
+      return error.key();
+    }
+    return "";
+  };
+  EXPECT_EQ(key_of([](YAML::Node&) {}), "");
+  EXPECT_EQ(key_of([](YAML::Node& r) { r["earth_model"] = "flat"; }), "earth_model");
+  EXPECT_EQ(key_of([](YAML::Node& r) { r.remove("latitude_deg"); }), "latitude_deg");
+  EXPECT_EQ(key_of([](YAML::Node& r) { r["yaw_deg"] = "north"; }), "yaw_deg");
+  EXPECT_EQ(key_of([](YAML::Node& r) { r["speed_m_s"] = 3.0; }), "speed_m_s");
+}
+
+struct ShippedProfile {
+  const char* file;
+  double rate_hz;
+};
+
+class EmulatorShippedProfiles : public ::testing::TestWithParam<ShippedProfile> {};
+
+TEST_P(EmulatorShippedProfiles, LoadsAndRunsFourSeconds) {
+  const SensorProfile profile = load_sensor_profile(kConfigDir + "/sensors/" + GetParam().file);
+  const ScenarioConfig scenario = load_scenario(kConfigDir + "/scenarios/static.yaml");
+  ImuEmulator emulator(profile, scenario, {GetParam().rate_hz, 100.0, 7});
+  const auto count = static_cast<int>(4.0 * GetParam().rate_hz);
+  Eigen::Vector3d force_sum = Eigen::Vector3d::Zero();
+  ImuSample sample;
+  for (int k = 0; k < count; ++k) {
+    sample = emulator.next();
+    ASSERT_TRUE(sample.angular_rate_rad_s.allFinite() && sample.specific_force_m_s2.allFinite());
+    force_sum += sample.specific_force_m_s2;
+  }
+  EXPECT_NEAR(sample.stamp_s, 104.0, 1e-9);
+  // Gravity seen through bias, scale and nonlinearity: a consumer part is off by ~0.4 m/s^2.
+  EXPECT_NEAR((force_sum / count).norm(), 9.8157, 0.5) << GetParam().file;
+  EXPECT_GT(sample.angular_rate_variance_rad2_s2.minCoeff(), 0.0);
+  EXPECT_GT(sample.specific_force_variance_m2_s4.minCoeff(), 0.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Shipped, EmulatorShippedProfiles,
+                         ::testing::Values(ShippedProfile{"consumer_mems.yaml", 200.0},
+                                           ShippedProfile{"tactical_mems.yaml", 400.0},
+                                           ShippedProfile{"fog_markov_hump.yaml", 2000.0},
+                                           ShippedProfile{"rlg_navigation.yaml", 100.0}));
+
+}  // namespace
+}  // namespace emulator
+}  // namespace imu_lab
