@@ -79,6 +79,71 @@ TEST(NavRotatingEarth, SchulerOscillationTurnsAtTheFoucaultRate) {
   EXPECT_NEAR(quarter_period_angle_rad, -foucault_rate * 0.25 * 2.0 * M_PI / schuler_rate, 0.005);
 }
 
+// Level flight at constant ENU velocity over the ellipsoid, body axes = ENU: the body turns at
+// w_ie + w_en and feels f = (2 w_ie + w_en) x v + (0, 0, g). Increments are Simpson integrals of
+// these along an RK4 truth trajectory (dL/dt = v_N / R_M, dlon/dt = v_E / (R_N cos L)); the
+// navigator must follow the truth: this checks the radii, transport rate and Coriolis together.
+TEST(NavRotatingEarth, ConstantVelocityFlightFollowsTheEllipsoid) {
+  const EarthModel earth;
+  const Eigen::Vector3d velocity_enu(50.0, 100.0, 0.0);
+  const double dt_s = 0.1, duration_s = 3600.0;
+  const auto position_rate = [&](const Eigen::Vector2d& latitude_longitude) {
+    const double latitude = latitude_longitude.x();
+    return Eigen::Vector2d(velocity_enu.y() / earth.meridianRadius_m(latitude),
+                           velocity_enu.x() / (earth.primeVerticalRadius_m(latitude) * std::cos(latitude)));
+  };
+  const auto body_rate = [&](double latitude) {
+    return (earth.earthRateEnu_rad_s(latitude) + earth.transportRateEnu_rad_s(velocity_enu, latitude, 0.0)).eval();
+  };
+  const auto specific_force = [&](double latitude) {
+    const Eigen::Vector3d coriolis_rate =
+        2.0 * earth.earthRateEnu_rad_s(latitude) + earth.transportRateEnu_rad_s(velocity_enu, latitude, 0.0);
+    return (coriolis_rate.cross(velocity_enu) + Eigen::Vector3d(0.0, 0.0, earth.gravity_mps2(latitude, 0.0))).eval();
+  };
+
+  NavigatorConfig config;
+  config.vertical.fixed_reference_height_m = 0.0;
+  Navigator navigator(config);
+  NavState truth;
+  truth.latitude_rad = 50.0 * kDegToRad;
+  truth.longitude_rad = 10.0 * kDegToRad;
+  truth.velocity_enu_mps = velocity_enu;
+  navigator.initialise(truth);
+  Eigen::Vector2d position(truth.latitude_rad, truth.longitude_rad);
+  const double half_step = 0.5 * dt_s;
+  const long steps = std::lround(duration_s / dt_s);
+  for (long k = 0; k < steps; ++k) {
+    ImuIncrement increment;
+    increment.dt_s = dt_s;
+    const double latitude_start = position.x();
+    double latitude_mid = 0.0;
+    for (int half = 0; half < 2; ++half) {  // RK4 over each half step
+      const Eigen::Vector2d k1 = position_rate(position);
+      const Eigen::Vector2d k2 = position_rate(position + 0.5 * half_step * k1);
+      const Eigen::Vector2d k3 = position_rate(position + 0.5 * half_step * k2);
+      const Eigen::Vector2d k4 = position_rate(position + half_step * k3);
+      position += half_step / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+      if (half == 0) latitude_mid = position.x();
+    }
+    increment.delta_angle_rad =
+        dt_s / 6.0 * (body_rate(latitude_start) + 4.0 * body_rate(latitude_mid) + body_rate(position.x()));
+    increment.delta_velocity_mps = dt_s / 6.0 *
+                                   (specific_force(latitude_start) + 4.0 * specific_force(latitude_mid) +
+                                    specific_force(position.x()));
+    navigator.update(increment);
+  }
+  truth.latitude_rad = position.x();
+  truth.longitude_rad = position.y();
+  const Eigen::Vector3d error_m = test_support::positionErrorEnu_m(earth, navigator.state(), truth);
+  const double distance_m = velocity_enu.norm() * duration_s;
+  std::printf("[nav] WGS-84 flight, %.0f km in 1 h: position error (E N U) %.3f %.3f %.3f m, velocity error %.2e m/s\n",
+              distance_m / 1000.0, error_m.x(), error_m.y(), error_m.z(),
+              (navigator.state().velocity_enu_mps - velocity_enu).norm());
+  EXPECT_LT(error_m.norm(), 0.1);
+  EXPECT_LT((navigator.state().velocity_enu_mps - velocity_enu).norm(), 1e-4);
+  EXPECT_LT(test_support::attitudeError_rad(navigator.state().q_body_to_enu, truth.q_body_to_enu).norm(), 1e-8);
+}
+
 }  // namespace
 }  // namespace nav
 }  // namespace imu_lab
