@@ -1,0 +1,112 @@
+// bag_summary: what an IMU bag holds (samples, rate, per-axis mean and standard deviation) and
+// its overlapping Allan deviation at a few taus from the batch reference, beside the analytic
+// values of a sensor profile when one is given (e.g. the profile the bag was emulated with).
+#include <CLI/CLI.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <numeric>
+
+#include "imu_lab/allan/batch.h"
+#include "imu_lab/common/config_error.h"
+#include "imu_lab/emulator/analytic_profile_avar.h"
+#include "imu_lab/ros/config_paths.h"
+#include "imu_lab/ros/imu_bag_reader.h"
+
+namespace {
+
+constexpr std::array<const char*, 6> kChannelNames = {"gyro_x", "gyro_y", "gyro_z", "accel_x", "accel_y", "accel_z"};
+constexpr std::array<const char*, 6> kUnits = {"rad/s", "rad/s", "rad/s", "m/s^2", "m/s^2", "m/s^2"};
+
+double mean_of(const std::vector<double>& values) {
+  return std::accumulate(values.begin(), values.end(), 0.0) / values.size();
+}
+
+double standard_deviation(const std::vector<double>& values, double mean) {
+  double sum = 0.0;
+  for (double v : values) sum += (v - mean) * (v - mean);
+  return std::sqrt(sum / (values.size() - 1));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Summarise an IMU bag: samples, rate, mean and deviation, Allan deviation at a few taus."};
+  std::string bag_path;
+  std::string topic;
+  std::string profile_name;
+  std::vector<double> taus_s = {0.1, 1.0, 10.0, 100.0, 1000.0};
+  app.add_option("bag", bag_path, "bag to read")->required();
+  app.add_option("--topic", topic, "sensor_msgs/Imu topic (default: the only one in the bag)");
+  app.add_option("--profile", profile_name, "sensor profile whose analytic ADEV to print beside the measured");
+  app.add_option("--taus-s", taus_s, "averaging times [s]")->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    topic = imu_lab::ros_io::choose_imu_topic(bag_path, topic);
+    std::array<std::vector<double>, 6> channels;
+    double first_stamp_s = 0.0;
+    double last_stamp_s = 0.0;
+    imu_lab::ros_io::for_each_imu(bag_path, topic, [&](const imu_lab::ros_io::ImuRecord& record) {
+      if (channels[0].empty()) first_stamp_s = record.stamp_s;
+      last_stamp_s = record.stamp_s;
+      for (int axis = 0; axis < 3; ++axis) {
+        channels[axis].push_back(record.angular_rate_rad_s[axis]);
+        channels[axis + 3].push_back(record.specific_force_m_s2[axis]);
+      }
+    });
+    const std::size_t count = channels[0].size();
+    if (count < 3) throw imu_lab::InputError("bag " + bag_path + ": topic " + topic + " has too few messages");
+    const double tau0_s = (last_stamp_s - first_stamp_s) / (count - 1);
+    std::printf("%s, topic %s: %zu samples over %.3f s, rate %.4f Hz\n", bag_path.c_str(), topic.c_str(), count,
+                last_stamp_s - first_stamp_s, 1.0 / tau0_s);
+
+    std::optional<imu_lab::emulator::SensorProfile> profile;
+    if (!profile_name.empty()) {
+      profile = imu_lab::emulator::load_sensor_profile(imu_lab::ros_io::resolve_config("sensors", profile_name));
+    }
+    std::printf("\n%-8s %16s %16s  %s\n", "channel", "mean", "std", "unit");
+    std::array<double, 6> means{};
+    for (int c = 0; c < 6; ++c) {
+      means[c] = mean_of(channels[c]);
+      std::printf("%-8s %16.9g %16.9g  %s\n", kChannelNames[c], means[c], standard_deviation(channels[c], means[c]),
+                  kUnits[c]);
+    }
+
+    std::vector<int> factors;
+    for (double tau : taus_s) {
+      const int m = static_cast<int>(std::lround(tau / tau0_s));
+      if (m >= 1 && 2 * static_cast<std::size_t>(m) < count) factors.push_back(m);
+    }
+    std::printf("\nOverlapping Allan deviation (batch reference, 68.3 %% chi-squared bounds)%s\n",
+                profile ? " beside the profile's analytic value" : "");
+    std::printf("%-8s %10s %14s %14s %14s %14s %8s\n", "channel", "tau_s", "measured", "lower", "upper",
+                profile ? "analytic" : "", profile ? "inside" : "");
+    for (int c = 0; c < 6; ++c) {
+      std::vector<double> centred(channels[c]);
+      for (double& v : centred) v -= means[c];  // keeps the integrated phase small (round-off)
+      const auto phase = imu_lab::allan::phase_from_frequency(centred, tau0_s);
+      const auto points = imu_lab::allan::evaluate(imu_lab::allan::Statistic::kOverlappingAllan, phase, tau0_s, factors);
+      for (const auto& p : points) {
+        std::printf("%-8s %10.4g %14.6g %14.6g %14.6g", kChannelNames[c], p.tau_s, p.deviation, p.deviation_lower,
+                    p.deviation_upper);
+        if (profile) {
+          const auto& triad = c < 3 ? profile->gyro : profile->accelerometer;
+          const double analytic = std::sqrt(imu_lab::emulator::analytic_axis_avar(triad, c % 3, p.tau_s, tau0_s));
+          const bool inside = analytic >= p.deviation_lower && analytic <= p.deviation_upper;
+          std::printf(" %14.6g %8s", analytic, inside ? "yes" : "no");
+        }
+        std::printf("\n");
+      }
+    }
+    return 0;
+  } catch (const imu_lab::ConfigError& error) {
+    std::cerr << "bag_summary: bad configuration: " << error.what() << "\n";
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "bag_summary: " << error.what() << "\n";
+    return 1;
+  }
+}

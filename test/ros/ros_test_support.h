@@ -1,0 +1,27 @@
+// Helpers for ROS-layer tests: scratch folders, running the package's tools as subprocesses.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace imu_lab {
+namespace test_support {
+
+// A fresh directory under /tmp, removed by nobody (tests are small; CI machines are fresh).
+std::string scratch_directory();
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr together
+};
+
+// Runs one of the package's executables (from the devel space) with arguments, shell-quoted.
+CommandResult run_tool(const std::string& tool, const std::string& arguments);
+
+std::string read_file(const std::string& path);
+bool file_exists(const std::string& path);
+// Sorted names of the entries of a directory (without . and ..).
+std::vector<std::string> list_directory(const std::string& path);
+
+}  // namespace test_support
+}  // namespace imu_lab
