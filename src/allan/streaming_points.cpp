@@ -29,7 +29,7 @@ VarianceEstimate mean_square_estimate(const DifferenceSums& sums, int order, int
 
 // Krobka (seed 003 eq. 5.10): the mean square minus the squared mean, the mean taken per segment.
 VarianceEstimate dispersion_estimate(const DifferenceAccumulator& differences, std::size_t i, int m) {
-  const DifferenceSums& sums = differences.overlapping(i);
+  const DifferenceSums sums = differences.overlapping(i);
   if (sums.count == 0) return {};
   const double spread = std::max(0.0, differences.overlapping_spread(i)) / sums.count;
   return {spread / (difference_normaliser(differences.order()) * squared(m)), sums.count};

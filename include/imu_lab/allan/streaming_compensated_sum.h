@@ -1,8 +1,7 @@
-// Neumaier (improved Kahan) summation: the running sums of a 24 h run hold ~1e8 terms, and
-// plain summation would lose ~1e-8 of relative accuracy on them; this keeps it near 1e-16.
+// Compensated summation: the running sums of a 24 h run hold ~1e8 terms, and plain summation
+// would lose up to ~1e-8 of relative accuracy on them; carrying each addition's exact rounding
+// error (Knuth's branch-free TwoSum, Neumaier's scheme) keeps it near 1e-16.
 #pragma once
-
-#include <cmath>
 
 #include "imu_lab/allan/checkpoint_codec.h"
 
@@ -12,13 +11,10 @@ namespace allan {
 class CompensatedSum {
  public:
   void add(double term) {
+    // Branch-free: the sign of running sums of differences is unpredictable.
     const double total = sum_ + term;
-    // The smaller operand's low-order bits are what the addition rounded away.
-    if (std::abs(sum_) >= std::abs(term)) {
-      compensation_ += (sum_ - total) + term;
-    } else {
-      compensation_ += (term - total) + sum_;
-    }
+    const double term_part = total - sum_;
+    compensation_ += (sum_ - (total - term_part)) + (term - term_part);
     sum_ = total;
   }
   double value() const { return sum_ + compensation_; }

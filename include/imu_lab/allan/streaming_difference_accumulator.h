@@ -23,7 +23,7 @@ class DifferenceAccumulator {
   void update(const PhaseRing& ring);  // after the ring received a new phase point
 
   int order() const { return order_; }
-  const DifferenceSums& overlapping(std::size_t tau_index) const { return overlapping_[tau_index]; }
+  DifferenceSums overlapping(std::size_t tau_index) const;  // pooled: closed segments and the open one
   const DifferenceSums& non_overlapping(std::size_t tau_index) const { return non_overlapping_[tau_index]; }
   // Sum over segments of sum_k (d_k - segment mean)^2 of the overlapping differences.
   double overlapping_spread(std::size_t tau_index) const;
@@ -35,9 +35,9 @@ class DifferenceAccumulator {
  private:
   int order_;
   std::vector<int> averaging_factors_;
-  std::vector<DifferenceSums> overlapping_;
-  std::vector<DifferenceSums> non_overlapping_;
   std::vector<DifferenceSums> open_segment_overlapping_;
+  std::vector<DifferenceSums> closed_overlapping_;
+  std::vector<DifferenceSums> non_overlapping_;
   std::vector<CompensatedSum> closed_spread_;
   std::vector<std::int64_t> next_non_overlapping_end_;  // phase index ending the next such term
 };

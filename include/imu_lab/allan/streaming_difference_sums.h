@@ -19,6 +19,11 @@ struct DifferenceSums {
     values.add(difference);
     ++count;
   }
+  void merge(const DifferenceSums& other) {
+    squares.add(other.squares.value());
+    values.add(other.values.value());
+    count += other.count;
+  }
   double mean_square() const { return count > 0 ? squares.value() / count : 0.0; }
   double mean() const { return count > 0 ? values.value() / count : 0.0; }
 
