@@ -1,5 +1,7 @@
 #include "imu_lab/emulator/sensor_channel.h"
 
+#include <map>
+
 #include "imu_lab/noise/make_noise_process.h"
 #include "imu_lab/noise/normal_stream.h"
 
@@ -20,12 +22,15 @@ TriadChannel::TriadChannel(const TriadErrorModel& model, const std::string& tria
   noise::NormalStream turn_on(noise::stream_seed(seed, triad_name + ".turn_on_bias"));
   for (int axis = 0; axis < 3; ++axis) {
     turn_on_bias_[axis] = model.bias_turn_on_sigma[axis] * turn_on.next();
-    const auto& list = model.noise_per_axis[axis];
-    for (size_t i = 0; i < list.size(); ++i) {
-      const std::string stream = triad_name + "." + kAxisNames[axis] + "." +
-                                 noise::process_kind(list[i]) + "#" + std::to_string(i);
+    // Streams are numbered within their kind, so a process's deviates do not depend on
+    // which other kinds the profile lists.
+    std::map<std::string, int> kind_count;
+    for (const auto& parameters : model.noise_per_axis[axis]) {
+      const std::string kind = noise::process_kind(parameters);
+      const std::string stream = triad_name + "." + kAxisNames[axis] + "." + kind + "#" +
+                                 std::to_string(kind_count[kind]++);
       processes_[axis].push_back(noise::make_noise_process(
-          list[i], noise::stream_seed(seed, stream), model.bandwidth_hz));
+          parameters, noise::stream_seed(seed, stream), model.bandwidth_hz));
     }
   }
 }

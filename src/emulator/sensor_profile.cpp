@@ -28,6 +28,18 @@ void add_per_axis(TriadErrorModel& model, Make make) {
   for (int axis = 0; axis < 3; ++axis) model.noise_per_axis[axis].push_back(make(axis));
 }
 
+// A block holding one per-axis field, e.g. white_rate: {density_rad_s_per_sqrt_hz: 1e-4}.
+template <typename Make>
+void read_one_field_block(const YamlFields& noise_fields, const std::string& name,
+                          const std::string& key, bool non_negative_only, TriadErrorModel& model,
+                          Make make) {
+  if (!noise_fields.has(name)) return;
+  const YamlFields f = noise_fields.child(name);
+  f.allow_only({key.c_str()});
+  const Eigen::Vector3d value = f.per_axis(key, non_negative_only);
+  add_per_axis(model, [&](int a) -> ProcessParameters { return make(value[a]); });
+}
+
 void read_list_or_single(const YamlFields& noise_fields, const std::string& key,
                          const std::function<void(const YamlFields&)>& read_one) {
   const YAML::Node value = noise_fields.raw(key);
@@ -44,18 +56,18 @@ void read_list_or_single(const YamlFields& noise_fields, const std::string& key,
 }
 
 void read_noise(const YamlFields& fields, const TriadUnits& u, TriadErrorModel& model) {
-  const std::string white = "white_rate", flicker = "bias_instability", walk = "random_walk",
-                    ramp = "rate_ramp", markov = "markov", sinusoid = "sinusoid",
-                    angle = "white_angle", zero_dc = "zero_dc_family";
+  const std::string flicker = "bias_instability", markov = "markov", sinusoid = "sinusoid",
+                    zero_dc = "zero_dc_family";
   fields.allow_only({"white_rate", "bias_instability", "random_walk", "rate_ramp", "markov",
                      "sinusoid", "white_angle", "zero_dc_family"});
-  if (fields.has(white)) {
-    const YamlFields f = fields.child(white);
-    const std::string key = "density_" + u.rate + "_per_sqrt_hz";
-    f.allow_only({key.c_str()});
-    const Eigen::Vector3d n = f.per_axis(key, true);
-    add_per_axis(model, [&](int a) -> ProcessParameters { return noise::WhiteRateParameters{n[a]}; });
-  }
+  read_one_field_block(fields, "white_rate", "density_" + u.rate + "_per_sqrt_hz", true, model,
+                       [](double n) { return noise::WhiteRateParameters{n}; });
+  read_one_field_block(fields, "random_walk", "density_" + u.rate + "_per_sqrt_s", true, model,
+                       [](double k) { return noise::RandomWalkParameters{k}; });
+  read_one_field_block(fields, "rate_ramp", "slope_" + u.rate + "_per_s", false, model,
+                       [](double r) { return noise::RateRampParameters{r}; });
+  read_one_field_block(fields, "white_angle", "density_" + u.integral + "_per_sqrt_hz", true,
+                       model, [](double d) { return noise::WhiteAngleParameters{0.0, d}; });
   if (fields.has(flicker)) {
     const YamlFields f = fields.child(flicker);
     const std::string key = "coefficient_" + u.rate;
@@ -79,20 +91,6 @@ void read_noise(const YamlFields& fields, const TriadUnits& u, TriadErrorModel& 
       model.noise_per_axis[a].push_back(p);
     }
   }
-  if (fields.has(walk)) {
-    const YamlFields f = fields.child(walk);
-    const std::string key = "density_" + u.rate + "_per_sqrt_s";
-    f.allow_only({key.c_str()});
-    const Eigen::Vector3d k = f.per_axis(key, true);
-    add_per_axis(model, [&](int a) -> ProcessParameters { return noise::RandomWalkParameters{k[a]}; });
-  }
-  if (fields.has(ramp)) {
-    const YamlFields f = fields.child(ramp);
-    const std::string key = "slope_" + u.rate + "_per_s";
-    f.allow_only({key.c_str()});
-    const Eigen::Vector3d r = f.per_axis(key, false);
-    add_per_axis(model, [&](int a) -> ProcessParameters { return noise::RateRampParameters{r[a]}; });
-  }
   if (fields.has(markov)) {
     read_list_or_single(fields, markov, [&](const YamlFields& f) {
       const std::string key = "q_c_" + u.rate + "_per_sqrt_s";
@@ -114,13 +112,6 @@ void read_noise(const YamlFields& fields, const TriadUnits& u, TriadErrorModel& 
         return noise::SinusoidParameters{amplitude[a], frequency, phase[a]};
       });
     });
-  }
-  if (fields.has(angle)) {
-    const YamlFields f = fields.child(angle);
-    const std::string key = "density_" + u.integral + "_per_sqrt_hz";
-    f.allow_only({key.c_str()});
-    const Eigen::Vector3d d = f.per_axis(key, true);
-    add_per_axis(model, [&](int a) -> ProcessParameters { return noise::WhiteAngleParameters{0.0, d[a]}; });
   }
   if (fields.has(zero_dc)) {
     const YamlFields f = fields.child(zero_dc);

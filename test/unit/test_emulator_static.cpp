@@ -62,6 +62,22 @@ Eigen::Vector3d expected_output(const TriadErrorModel& model, const TriadChannel
          model.g_sensitivity * force;
 }
 
+struct RecordMeans {
+  Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();
+  Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();
+  ImuSample last;
+};
+
+RecordMeans record_means(ImuEmulator& emulator, int count) {
+  RecordMeans means;
+  for (int k = 0; k < count; ++k) {
+    means.last = emulator.next();
+    means.angular_rate_rad_s += means.last.angular_rate_rad_s / count;
+    means.specific_force_m_s2 += means.last.specific_force_m_s2 / count;
+  }
+  return means;
+}
+
 TEST(EmulatorStatic, NormalGravityReferenceValues) {
   // WGS-84 normal gravity (NIMA TR8350.2): equator, pole, 45 deg; free-air gradient ~3.086e-6 /s^2.
   EXPECT_NEAR(normal_gravity_m_s2(EarthModel::kWgs84Rotating, 0.0, 0.0), 9.7803253359, 1e-9);
@@ -95,13 +111,8 @@ TEST(EmulatorStatic, MeansEqualGravityAndEarthRateThroughBiasAndK) {
   const EmulatorSettings settings{200.0, 0.0, 5};
   ImuEmulator emulator(profile, scenario, settings);
   const int count = 200000;  // 1000 s
-  Eigen::Vector3d rate_sum = Eigen::Vector3d::Zero(), force_sum = Eigen::Vector3d::Zero();
-  ImuSample sample;
-  for (int k = 0; k < count; ++k) {
-    sample = emulator.next();
-    rate_sum += sample.angular_rate_rad_s;
-    force_sum += sample.specific_force_m_s2;
-  }
+  const RecordMeans means = record_means(emulator, count);
+  const ImuSample& sample = means.last;
   const Eigen::Vector3d true_rate = sample.truth.angular_rate_rad_s;
   const Eigen::Vector3d true_force = sample.truth.specific_force_m_s2;
   const Eigen::Vector3d gyro_expected =
@@ -111,8 +122,8 @@ TEST(EmulatorStatic, MeansEqualGravityAndEarthRateThroughBiasAndK) {
   // White noise only: the mean's standard error is N / sqrt(T).
   const double duration = count / settings.rate_hz;
   const double gyro_se = 1e-5 / std::sqrt(duration), accel_se = 1e-3 / std::sqrt(duration);
-  const Eigen::Vector3d gyro_z = (rate_sum / count - gyro_expected) / gyro_se;
-  const Eigen::Vector3d accel_z = (force_sum / count - accel_expected) / accel_se;
+  const Eigen::Vector3d gyro_z = (means.angular_rate_rad_s - gyro_expected) / gyro_se;
+  const Eigen::Vector3d accel_z = (means.specific_force_m_s2 - accel_expected) / accel_se;
   std::printf("[static] white only, 1000 s: gyro z = %.2f %.2f %.2f, accel z = %.2f %.2f %.2f\n",
               gyro_z[0], gyro_z[1], gyro_z[2], accel_z[0], accel_z[1], accel_z[2]);
   // 6 means, 99.7 % family-wise: |z| < 3.4.
@@ -132,13 +143,8 @@ TEST(EmulatorStatic, TacticalProfileMeansWithinTheBoundFromItsNoise) {
   ImuEmulator emulator(profile, scenario, settings);
   const int count = 30000;
   const double duration = count / settings.rate_hz;
-  Eigen::Vector3d rate_sum = Eigen::Vector3d::Zero(), force_sum = Eigen::Vector3d::Zero();
-  ImuSample sample;
-  for (int k = 0; k < count; ++k) {
-    sample = emulator.next();
-    rate_sum += sample.angular_rate_rad_s;
-    force_sum += sample.specific_force_m_s2;
-  }
+  const RecordMeans means = record_means(emulator, count);
+  const ImuSample& sample = means.last;
   auto mean_sigma = [&](const TriadChannel& channel, int axis) {
     double variance = 0.0;
     for (const auto& process : channel.processes(axis)) {
@@ -153,8 +159,9 @@ TEST(EmulatorStatic, TacticalProfileMeansWithinTheBoundFromItsNoise) {
       expected_output(profile.accelerometer, emulator.accelerometer_channel(),
                       sample.truth.specific_force_m_s2, Eigen::Vector3d::Zero());
   for (int axis = 0; axis < 3; ++axis) {
-    const double gz = (rate_sum[axis] / count - gyro_expected[axis]) / mean_sigma(emulator.gyro_channel(), axis);
-    const double az = (force_sum[axis] / count - accel_expected[axis]) /
+    const double gz = (means.angular_rate_rad_s[axis] - gyro_expected[axis]) /
+                      mean_sigma(emulator.gyro_channel(), axis);
+    const double az = (means.specific_force_m_s2[axis] - accel_expected[axis]) /
                       mean_sigma(emulator.accelerometer_channel(), axis);
     std::printf("[static] tactical_mems axis %d, 300 s: gyro z = %.2f, accel z = %.2f\n", axis, gz, az);
     EXPECT_LT(std::abs(gz), 3.4);

@@ -26,6 +26,25 @@ std::vector<double> generate(NoiseProcess& process, std::size_t count, double ta
   return test::collect(count, [&]() { return process.next_interval_average(tau0 * k++, tau0); });
 }
 
+// Independent processes summed sample by sample; their AVARs add.
+struct Mixture {
+  std::vector<std::unique_ptr<NoiseProcess>> processes;
+  std::vector<double> generate(std::size_t count, double tau0) {
+    std::size_t k = 0;
+    return test::collect(count, [&]() {
+      double sum = 0.0;
+      for (auto& process : processes) sum += process->next_interval_average(tau0 * k, tau0);
+      ++k;
+      return sum;
+    });
+  }
+  double allan_variance(double tau, double tau0) const {
+    double avar = 0.0;
+    for (const auto& process : processes) avar += process->allan_variance(tau, tau0);
+    return avar;
+  }
+};
+
 void expect_matches(const std::vector<double>& rates, double tau0,
                     const std::function<double(double)>& expected, int m_min, int m_max,
                     const char* what) {
@@ -55,6 +74,18 @@ TEST(NoiseAvar, MarkovWithCorrelationTimeOneSecond) {
 }
 
 TEST(NoiseAvar, RateRandomWalk) { expect_process_matches(RandomWalkParameters{1e-4}, 14); }
+
+TEST(NoiseAvar, WhiteRateThroughSensorBandwidth) {
+  // A 20 Hz first-order anti-alias filter at 100 Hz: exact interval averages of the filtered
+  // signal follow eq. 5.7 with T_c = 1/(2 pi 20 Hz), q_c = N / T_c (the leftmost points pulled
+  // below N^2 / tau, DESIGN.md section 5).
+  auto process = make_noise_process(WhiteRateParameters{1e-3}, 27, 20.0);
+  const auto rates = generate(*process, kSamples, kTau0);
+  const double tc = 1.0 / (2.0 * 3.14159265358979323846 * 20.0);
+  expect_matches(rates, kTau0, [&](double tau) { return markov_avar(1e-3 / tc, tc, tau); }, 1,
+                 kMaxFactor, "white through 20 Hz bandwidth");
+  EXPECT_LT(markov_avar(1e-3 / tc, tc, kTau0), 0.75 * white_rate_avar(1e-3, kTau0));
+}
 
 TEST(NoiseAvar, WhiteAngleQuantizationModel) {
   expect_process_matches(WhiteAngleParameters{2e-6, 0.0}, 15);
@@ -114,44 +145,27 @@ TEST(NoiseAvar, PhysicalPulseQuantizationOfWhiteNoise) {
 }
 
 TEST(NoiseAvar, MixtureOfAllStochasticProcesses) {
-  std::vector<std::unique_ptr<NoiseProcess>> processes;
-  processes.push_back(make_noise_process(WhiteRateParameters{3e-4}, 21));
-  processes.push_back(make_noise_process(MarkovParameters{5e-3, 2.0 * kTau0}, 22));
-  processes.push_back(make_noise_process(MarkovParameters{2e-4, 3.0}, 23));
-  processes.push_back(make_noise_process(BiasInstabilityParameters{2e-5, 10.0, 0.1, 1e4}, 24));
-  processes.push_back(make_noise_process(RandomWalkParameters{3e-6}, 25));
-  processes.push_back(make_noise_process(WhiteAngleParameters{1e-6, 0.0}, 26));
-  std::size_t k = 0;
-  const auto rates = test::collect(kSamples, [&]() {
-    double sum = 0.0;
-    for (auto& process : processes) sum += process->next_interval_average(kTau0 * k, kTau0);
-    ++k;
-    return sum;
-  });
-  expect_matches(rates, kTau0,
-                 [&](double tau) {
-                   double avar = 0.0;  // independent processes add in AVAR
-                   for (auto& process : processes) avar += process->allan_variance(tau, kTau0);
-                   return avar;
-                 },
-                 1, kMaxFactor, "mixture");
+  Mixture mixture;
+  mixture.processes.push_back(make_noise_process(WhiteRateParameters{3e-4}, 21));
+  mixture.processes.push_back(make_noise_process(MarkovParameters{5e-3, 2.0 * kTau0}, 22));
+  mixture.processes.push_back(make_noise_process(MarkovParameters{2e-4, 3.0}, 23));
+  mixture.processes.push_back(make_noise_process(BiasInstabilityParameters{2e-5, 10.0, 0.1, 1e4}, 24));
+  mixture.processes.push_back(make_noise_process(RandomWalkParameters{3e-6}, 25));
+  mixture.processes.push_back(make_noise_process(WhiteAngleParameters{1e-6, 0.0}, 26));
+  const auto rates = mixture.generate(kSamples, kTau0);
+  expect_matches(rates, kTau0, [&](double tau) { return mixture.allan_variance(tau, kTau0); }, 1,
+                 kMaxFactor, "mixture");
 }
 
 TEST(NoiseAvar, SampleRateDoesNotChangeTheAvarWhereResolved) {
   // White + Markov + random walk at 100 Hz and 400 Hz: both follow the same rate-independent
   // curve from 0.04 s (resolved by both) up.
   for (double tau0 : {0.01, 0.0025}) {
-    std::vector<std::unique_ptr<NoiseProcess>> processes;
-    processes.push_back(make_noise_process(WhiteRateParameters{3e-4}, 31));
-    processes.push_back(make_noise_process(MarkovParameters{3e-3, 0.05}, 32));
-    processes.push_back(make_noise_process(RandomWalkParameters{2e-5}, 33));
-    std::size_t k = 0;
-    const auto rates = test::collect(kSamples, [&]() {
-      double sum = 0.0;
-      for (auto& process : processes) sum += process->next_interval_average(tau0 * k, tau0);
-      ++k;
-      return sum;
-    });
+    Mixture mixture;
+    mixture.processes.push_back(make_noise_process(WhiteRateParameters{3e-4}, 31));
+    mixture.processes.push_back(make_noise_process(MarkovParameters{3e-3, 0.05}, 32));
+    mixture.processes.push_back(make_noise_process(RandomWalkParameters{2e-5}, 33));
+    const auto rates = mixture.generate(kSamples, tau0);
     const int m_min = static_cast<int>(std::lround(0.04 / tau0));
     expect_matches(rates, tau0,
                    [&](double tau) {

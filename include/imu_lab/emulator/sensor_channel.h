@@ -20,7 +20,8 @@ namespace emulator {
 
 class TriadChannel {
  public:
-  // triad_name ("gyro", "accelerometer") names the RNG streams: seed ^ hash("gyro.x.markov#1").
+  // triad_name ("gyro", "accelerometer") names the RNG streams, e.g. "gyro.x.markov#1" (the
+  // second Markov process on x), each seeded from stream_seed(seed, name).
   TriadChannel(const TriadErrorModel& model, const std::string& triad_name, std::uint64_t seed);
 
   Eigen::Vector3d measure(const Eigen::Vector3d& true_average,
