@@ -10,26 +10,26 @@ ConingScullingCompensator::ConingScullingCompensator(const ConingScullingConfig&
 
 CompensatedIncrement ConingScullingCompensator::compensate(const ImuIncrement& increment) {
   const Eigen::Vector3d& angle = increment.delta_angle_rad;
-  const Eigen::Vector3d& velocity = increment.delta_velocity_mps;
+  const Eigen::Vector3d& velocity = increment.delta_velocity_m_s;
   CompensatedIncrement out;
   out.rotation_vector_rad = angle;
   if (config_.coning_correction) {
     out.rotation_vector_rad += previous_delta_angle_rad_.cross(angle) / 12.0;
   }
-  out.delta_velocity_mps = velocity + 0.5 * angle.cross(velocity);
+  out.delta_velocity_m_s = velocity + 0.5 * angle.cross(velocity);
   if (config_.sculling_correction) {
-    out.delta_velocity_mps += (previous_delta_angle_rad_.cross(velocity) +
-                               previous_delta_velocity_mps_.cross(angle)) /
-                              12.0;
+    out.delta_velocity_m_s +=
+        (previous_delta_angle_rad_.cross(velocity) + previous_delta_velocity_m_s_.cross(angle)) /
+        12.0;
   }
   previous_delta_angle_rad_ = angle;
-  previous_delta_velocity_mps_ = velocity;
+  previous_delta_velocity_m_s_ = velocity;
   return out;
 }
 
 void ConingScullingCompensator::reset() {
   previous_delta_angle_rad_.setZero();
-  previous_delta_velocity_mps_.setZero();
+  previous_delta_velocity_m_s_.setZero();
 }
 
 }  // namespace nav

@@ -18,22 +18,23 @@ EarthModel::EarthModel(const EarthModelConfig& config) : config_(config) {
     if (!(config_.sphere_radius_m > 0.0)) {
       throw ConfigError("nav", "earth.sphere_radius_m", "must be a positive radius in metres");
     }
-    if (!(config_.sphere_surface_gravity_mps2 > 0.0)) {
-      throw ConfigError("nav", "earth.sphere_surface_gravity_mps2",
+    if (!(config_.sphere_surface_gravity_m_s2 > 0.0)) {
+      throw ConfigError("nav", "earth.sphere_surface_gravity_m_s2",
                         "must be a positive acceleration in m/s^2");
     }
   }
 }
 
-double EarthModel::gravity_mps2(double latitude_rad, double height_m) const {
+double EarthModel::gravity_m_s2(double latitude_rad, double height_m) const {
   if (isSphere(config_)) {
-    const double g0 = config_.sphere_surface_gravity_mps2;
+    const double g0 = config_.sphere_surface_gravity_m_s2;
     if (config_.sphere_gravity_law == SphereGravityLaw::kConstant) return g0;
     const double ratio = config_.sphere_radius_m / (config_.sphere_radius_m + height_m);
     return g0 * ratio * ratio;
   }
   const double sin2 = std::sin(latitude_rad) * std::sin(latitude_rad);
-  const double surface = wgs84::kEquatorialGravity_mps2 * (1.0 + wgs84::kSomiglianaConstant * sin2) /
+  const double surface = wgs84::kEquatorialGravity_m_s2 *
+                         (1.0 + wgs84::kSomiglianaConstant * sin2) /
                          std::sqrt(1.0 - wgs84::kEccentricitySquared * sin2);
   const double a = wgs84::kSemiMajorAxis_m;
   const double f = wgs84::kFlattening;
@@ -65,16 +66,16 @@ Eigen::Vector3d EarthModel::earthRateEnu_rad_s(double latitude_rad) const {
   return Eigen::Vector3d(0.0, rate * std::cos(latitude_rad), rate * std::sin(latitude_rad));
 }
 
-Eigen::Vector3d EarthModel::transportRateEnu_rad_s(const Eigen::Vector3d& velocity_enu_mps,
+Eigen::Vector3d EarthModel::transportRateEnu_rad_s(const Eigen::Vector3d& velocity_enu_m_s,
                                                    double latitude_rad, double height_m) const {
   const double east_radius = primeVerticalRadius_m(latitude_rad) + height_m;
   const double north_radius = meridianRadius_m(latitude_rad) + height_m;
-  return Eigen::Vector3d(-velocity_enu_mps.y() / north_radius, velocity_enu_mps.x() / east_radius,
-                         velocity_enu_mps.x() * std::tan(latitude_rad) / east_radius);
+  return Eigen::Vector3d(-velocity_enu_m_s.y() / north_radius, velocity_enu_m_s.x() / east_radius,
+                         velocity_enu_m_s.x() * std::tan(latitude_rad) / east_radius);
 }
 
 double EarthModel::schulerRate_rad_s() const {
-  return std::sqrt(gravity_mps2(0.0, 0.0) / primeVerticalRadius_m(0.0));
+  return std::sqrt(gravity_m_s2(0.0, 0.0) / primeVerticalRadius_m(0.0));
 }
 
 }  // namespace nav

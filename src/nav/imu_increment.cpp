@@ -13,16 +13,16 @@ void validateIncrement(const ImuIncrement& increment) {
     throw InputError("nav: IMU increment has dt_s = " + std::to_string(increment.dt_s) +
                      "; it must be a positive number of seconds (check the sample stamps)");
   }
-  if (!increment.delta_angle_rad.allFinite() || !increment.delta_velocity_mps.allFinite()) {
+  if (!increment.delta_angle_rad.allFinite() || !increment.delta_velocity_m_s.allFinite()) {
     throw InputError("nav: IMU increment contains NaN or Inf; drop the sample or fix the driver");
   }
 }
 
 ImuIncrement incrementFromMeanRates(const Eigen::Vector3d& mean_angular_rate_rad_s,
-                                    const Eigen::Vector3d& mean_specific_force_mps2, double dt_s) {
+                                    const Eigen::Vector3d& mean_specific_force_m_s2, double dt_s) {
   ImuIncrement increment;
   increment.delta_angle_rad = mean_angular_rate_rad_s * dt_s;
-  increment.delta_velocity_mps = mean_specific_force_mps2 * dt_s;
+  increment.delta_velocity_m_s = mean_specific_force_m_s2 * dt_s;
   increment.dt_s = dt_s;
   validateIncrement(increment);
   return increment;

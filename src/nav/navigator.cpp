@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
+#include "imu_lab/common/config_error.h"
 #include "imu_lab/nav/rotation.h"
 
 namespace imu_lab {
@@ -10,9 +12,7 @@ namespace nav {
 
 namespace {
 
-double wrapLongitude(double longitude_rad) {
-  return std::remainder(longitude_rad, 2.0 * M_PI);
-}
+double wrapLongitude(double longitude_rad) { return std::remainder(longitude_rad, 2.0 * M_PI); }
 
 }  // namespace
 
@@ -20,6 +20,20 @@ Navigator::Navigator(const NavigatorConfig& config)
     : earth_(config.earth), vertical_(config.vertical), compensator_(config.corrections) {}
 
 void Navigator::initialise(const NavState& initial_state) {
+  const bool finite =
+      std::isfinite(initial_state.stamp_s) && initial_state.q_body_to_enu.coeffs().allFinite() &&
+      initial_state.q_body_to_enu.norm() > 0.5 && initial_state.velocity_enu_m_s.allFinite() &&
+      std::isfinite(initial_state.longitude_rad) && std::isfinite(initial_state.height_m);
+  if (!finite) {
+    throw InputError(
+        "nav: initial state has NaN/Inf or a zero quaternion; check the alignment "
+        "or the initial-state parameters");
+  }
+  if (!(std::abs(initial_state.latitude_rad) < 0.5 * M_PI)) {
+    throw InputError("nav: initial latitude_rad = " + std::to_string(initial_state.latitude_rad) +
+                     " is not strictly between -pi/2 and pi/2 (radians, not degrees?); the ENU "
+                     "mechanisation is singular at the poles");
+  }
   state_ = initial_state;
   state_.q_body_to_enu.normalize();
   state_.longitude_rad = wrapLongitude(state_.longitude_rad);
@@ -28,10 +42,10 @@ void Navigator::initialise(const NavState& initial_state) {
 }
 
 const NavState& Navigator::update(const Eigen::Vector3d& delta_angle_rad,
-                                  const Eigen::Vector3d& delta_velocity_mps, double dt_s) {
+                                  const Eigen::Vector3d& delta_velocity_m_s, double dt_s) {
   ImuIncrement increment;
   increment.delta_angle_rad = delta_angle_rad;
-  increment.delta_velocity_mps = delta_velocity_mps;
+  increment.delta_velocity_m_s = delta_velocity_m_s;
   increment.dt_s = dt_s;
   return update(increment);
 }
@@ -45,7 +59,7 @@ const NavState& Navigator::update(const ImuIncrement& increment) {
   const NavState old = state_;
   const Eigen::Vector3d earth_rate = earth_.earthRateEnu_rad_s(old.latitude_rad);
   const Eigen::Vector3d transport_rate =
-      earth_.transportRateEnu_rad_s(old.velocity_enu_mps, old.latitude_rad, old.height_m);
+      earth_.transportRateEnu_rad_s(old.velocity_enu_m_s, old.latitude_rad, old.height_m);
 
   // Velocity: specific force rotated with the attitude at the interval start, corrected for the
   // nav frame turning during the interval; gravity and Coriolis from the start-of-interval state.
@@ -53,29 +67,30 @@ const NavState& Navigator::update(const ImuIncrement& increment) {
   // exactly when the body turns with the nav frame (static on the rotating Earth); on the
   // compensated increment it would add a spurious third-order term zeta x (a x v) / 4.
   const Eigen::Vector3d nav_rotation_start = (earth_rate + transport_rate) * dt;
-  const Eigen::Vector3d specific_force_dv = old.q_body_to_enu * body.delta_velocity_mps;
-  const Eigen::Vector3d raw_specific_force_dv = old.q_body_to_enu * increment.delta_velocity_mps;
-  const Eigen::Vector3d gravity(0.0, 0.0, -earth_.gravity_mps2(old.latitude_rad, old.height_m));
-  const Eigen::Vector3d coriolis = -(2.0 * earth_rate + transport_rate).cross(old.velocity_enu_mps);
-  state_.velocity_enu_mps = old.velocity_enu_mps + specific_force_dv -
+  const Eigen::Vector3d specific_force_dv = old.q_body_to_enu * body.delta_velocity_m_s;
+  const Eigen::Vector3d raw_specific_force_dv = old.q_body_to_enu * increment.delta_velocity_m_s;
+  const Eigen::Vector3d gravity(0.0, 0.0, -earth_.gravity_m_s2(old.latitude_rad, old.height_m));
+  const Eigen::Vector3d coriolis = -(2.0 * earth_rate + transport_rate).cross(old.velocity_enu_m_s);
+  state_.velocity_enu_m_s = old.velocity_enu_m_s + specific_force_dv -
                             0.5 * nav_rotation_start.cross(raw_specific_force_dv) +
                             (gravity + coriolis) * dt;
 
   // Position: trapezoidal velocity; radii at mid-interval height and latitude.
-  const Eigen::Vector3d mean_velocity = 0.5 * (old.velocity_enu_mps + state_.velocity_enu_mps);
+  const Eigen::Vector3d mean_velocity = 0.5 * (old.velocity_enu_m_s + state_.velocity_enu_m_s);
   state_.height_m = old.height_m + mean_velocity.z() * dt;
   const double mid_height = 0.5 * (old.height_m + state_.height_m);
-  state_.latitude_rad = old.latitude_rad +
-                        mean_velocity.y() / (earth_.meridianRadius_m(old.latitude_rad) + mid_height) * dt;
+  state_.latitude_rad =
+      old.latitude_rad +
+      mean_velocity.y() / (earth_.meridianRadius_m(old.latitude_rad) + mid_height) * dt;
   const double mid_latitude = 0.5 * (old.latitude_rad + state_.latitude_rad);
   state_.longitude_rad = wrapLongitude(
-      old.longitude_rad + mean_velocity.x() /
-                              ((earth_.primeVerticalRadius_m(mid_latitude) + mid_height) *
-                               std::cos(mid_latitude)) *
-                              dt);
+      old.longitude_rad +
+      mean_velocity.x() /
+          ((earth_.primeVerticalRadius_m(mid_latitude) + mid_height) * std::cos(mid_latitude)) *
+          dt);
   const VerticalCorrection height_loop = vertical_.feedback(old.height_m, dt);
   state_.height_m += height_loop.height_m;
-  state_.velocity_enu_mps.z() += height_loop.up_velocity_mps;
+  state_.velocity_enu_m_s.z() += height_loop.up_velocity_m_s;
 
   // Attitude: nav frame rotation at mid-interval, which also keeps the Schuler loop from
   // gaining energy through the explicit velocity step above.

@@ -9,8 +9,8 @@ namespace nav {
 
 namespace {
 // A specific force this far from 1 g cannot be a static IMU on the Earth.
-constexpr double kMinStaticSpecificForce_mps2 = 5.0;
-constexpr double kMaxStaticSpecificForce_mps2 = 15.0;
+constexpr double kMinStaticSpecificForce_m_s2 = 5.0;
+constexpr double kMaxStaticSpecificForce_m_s2 = 15.0;
 // Below this horizontal rate the east direction is numerical noise: 1 % of the Earth rate, i.e.
 // within about 0.6 deg of a pole even with perfect gyros.
 constexpr double kMinHorizontalRate_rad_s = 7.3e-7;
@@ -28,7 +28,7 @@ StaticAligner::StaticAligner(const StaticAlignmentConfig& config) : config_(conf
 void StaticAligner::add(const ImuIncrement& increment) {
   validateIncrement(increment);
   sum_delta_angle_rad_ += increment.delta_angle_rad;
-  sum_delta_velocity_mps_ += increment.delta_velocity_mps;
+  sum_delta_velocity_m_s_ += increment.delta_velocity_m_s;
   accumulated_s_ += increment.dt_s;
 }
 
@@ -37,8 +37,8 @@ Eigen::Vector3d StaticAligner::meanAngularRate_rad_s() const {
                               : Eigen::Vector3d::Zero();
 }
 
-Eigen::Vector3d StaticAligner::meanSpecificForce_mps2() const {
-  return accumulated_s_ > 0.0 ? Eigen::Vector3d(sum_delta_velocity_mps_ / accumulated_s_)
+Eigen::Vector3d StaticAligner::meanSpecificForce_m_s2() const {
+  return accumulated_s_ > 0.0 ? Eigen::Vector3d(sum_delta_velocity_m_s_ / accumulated_s_)
                               : Eigen::Vector3d::Zero();
 }
 
@@ -46,15 +46,15 @@ Eigen::Quaterniond StaticAligner::attitude() const {
   if (accumulated_s_ <= 0.0) {
     throw InputError("nav alignment: no IMU data yet; feed increments with add() first");
   }
-  const Eigen::Vector3d specific_force = meanSpecificForce_mps2();
+  const Eigen::Vector3d specific_force = meanSpecificForce_m_s2();
   const double magnitude = specific_force.norm();
-  if (magnitude < kMinStaticSpecificForce_mps2 || magnitude > kMaxStaticSpecificForce_mps2) {
+  if (magnitude < kMinStaticSpecificForce_m_s2 || magnitude > kMaxStaticSpecificForce_m_s2) {
     throw InputError("nav alignment: mean specific force is " + std::to_string(magnitude) +
                      " m/s^2, not about 1 g; the IMU is not static or the accelerometer units "
                      "are wrong");
   }
   return config_.heading_source == HeadingSource::kGiven ? levelledWithGivenYaw(specific_force)
-                                                          : gyrocompassed(specific_force);
+                                                         : gyrocompassed(specific_force);
 }
 
 Eigen::Quaterniond StaticAligner::levelledWithGivenYaw(const Eigen::Vector3d& f) const {
@@ -72,10 +72,10 @@ Eigen::Quaterniond StaticAligner::gyrocompassed(const Eigen::Vector3d& f) const 
   const Eigen::Vector3d up = f.normalized();
   const Eigen::Vector3d east_unnormalised = meanAngularRate_rad_s().cross(up);
   if (east_unnormalised.norm() < kMinHorizontalRate_rad_s) {
-    throw InputError(
-        "nav alignment: horizontal Earth rate is " + std::to_string(east_unnormalised.norm()) +
-        " rad/s, too small to gyrocompass (near a pole, or gyros too noisy); set "
-        "alignment heading_source to given and supply given_yaw_rad");
+    throw InputError("nav alignment: horizontal Earth rate is " +
+                     std::to_string(east_unnormalised.norm()) +
+                     " rad/s, too small to gyrocompass (near a pole, or gyros too noisy); set "
+                     "alignment heading_source to given and supply given_yaw_rad");
   }
   const Eigen::Vector3d east = east_unnormalised.normalized();
   const Eigen::Vector3d north = up.cross(east);
@@ -88,7 +88,7 @@ Eigen::Quaterniond StaticAligner::gyrocompassed(const Eigen::Vector3d& f) const 
 
 void StaticAligner::reset() {
   sum_delta_angle_rad_.setZero();
-  sum_delta_velocity_mps_.setZero();
+  sum_delta_velocity_m_s_.setZero();
   accumulated_s_ = 0.0;
 }
 

@@ -11,8 +11,8 @@ VerticalLoopGains criticallyDampedVerticalGains(double time_constant_s, double s
   if (!(time_constant_s > 0.0)) {
     throw ConfigError("nav", "vertical.time_constant_s", "must be a positive number of seconds");
   }
-  return {-2.0 / time_constant_s,
-          -1.0 / (time_constant_s * time_constant_s) - 2.0 * schuler_rate_rad_s * schuler_rate_rad_s};
+  return {-2.0 / time_constant_s, -1.0 / (time_constant_s * time_constant_s) -
+                                      2.0 * schuler_rate_rad_s * schuler_rate_rad_s};
 }
 
 VerticalChannel::VerticalChannel(const VerticalChannelConfig& config)
@@ -47,7 +47,7 @@ VerticalCorrection VerticalChannel::feedback(double interval_start_height_m, dou
   if (!aiding()) return correction;
   const double height_error_m = interval_start_height_m - *reference_height_m_;
   correction.height_m = config_.k1_per_s * height_error_m * dt_s;
-  correction.up_velocity_mps = config_.k2_per_s2 * height_error_m * dt_s;
+  correction.up_velocity_m_s = config_.k2_per_s2 * height_error_m * dt_s;
   return correction;
 }
 

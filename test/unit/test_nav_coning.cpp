@@ -59,15 +59,17 @@ double coningAttitudeError_rad(bool coning_correction) {
 TEST(NavConing, CorrectionReducesConingDriftTenfold) {
   const double uncorrected = coningAttitudeError_rad(false);
   const double corrected = coningAttitudeError_rad(true);
-  std::printf("[nav] coning 2 deg at 2 Hz, 100 Hz increments, 10 s: attitude error %.3e rad without, "
-              "%.3e rad with correction (factor %.0f)\n", uncorrected, corrected, uncorrected / corrected);
+  std::printf(
+      "[nav] coning 2 deg at 2 Hz, 100 Hz increments, 10 s: attitude error %.3e rad without, "
+      "%.3e rad with correction (factor %.0f)\n",
+      uncorrected, corrected, uncorrected / corrected);
   EXPECT_GT(uncorrected, 1e-5);  // the motion really does cone
   EXPECT_LT(corrected * 10.0, uncorrected);
 }
 
 // Inertial velocity error after kDuration_s of sculling.
-double scullingVelocityError_mps(bool sculling_correction) {
-  const double roll_amplitude_rad = 0.05, accel_amplitude_mps2 = 5.0, w = kMotionRate_rad_s;
+double scullingVelocityError_m_s(bool sculling_correction) {
+  const double roll_amplitude_rad = 0.05, accel_amplitude_m_s2 = 5.0, w = kMotionRate_rad_s;
   ConingScullingConfig config;
   config.sculling_correction = sculling_correction;
   ConingScullingCompensator compensator(config);
@@ -77,23 +79,28 @@ double scullingVelocityError_mps(bool sculling_correction) {
   for (int k = 1; k <= steps; ++k) {
     const double t0 = (k - 1) * kDt_s, t1 = k * kDt_s;
     ImuIncrement increment;
-    increment.delta_angle_rad = Eigen::Vector3d(roll_amplitude_rad * (std::sin(w * t1) - std::sin(w * t0)), 0, 0);
-    increment.delta_velocity_mps =
-        Eigen::Vector3d(0, accel_amplitude_mps2 * (std::cos(w * t0) - std::cos(w * t1)) / w, 0);
+    increment.delta_angle_rad =
+        Eigen::Vector3d(roll_amplitude_rad * (std::sin(w * t1) - std::sin(w * t0)), 0, 0);
+    increment.delta_velocity_m_s =
+        Eigen::Vector3d(0, accel_amplitude_m_s2 * (std::cos(w * t0) - std::cos(w * t1)) / w, 0);
     increment.dt_s = kDt_s;
     const CompensatedIncrement compensated = compensator.compensate(increment);
-    velocity += attitude * compensated.delta_velocity_mps;
-    attitude = propagateAttitude(attitude, compensated.rotation_vector_rad, Eigen::Vector3d::Zero());
+    velocity += attitude * compensated.delta_velocity_m_s;
+    attitude =
+        propagateAttitude(attitude, compensated.rotation_vector_rad, Eigen::Vector3d::Zero());
   }
-  const Eigen::Vector3d truth(0.0, 0.0, accel_amplitude_mps2 * std::cyl_bessel_j(1.0, roll_amplitude_rad) * kDuration_s);
+  const Eigen::Vector3d truth(
+      0.0, 0.0, accel_amplitude_m_s2 * std::cyl_bessel_j(1.0, roll_amplitude_rad) * kDuration_s);
   return (velocity - truth).norm();
 }
 
 TEST(NavSculling, CorrectionReducesScullingErrorTenfold) {
-  const double uncorrected = scullingVelocityError_mps(false);
-  const double corrected = scullingVelocityError_mps(true);
-  std::printf("[nav] sculling 0.05 rad / 5 m/s^2 at 2 Hz, 100 Hz increments, 10 s: velocity error %.3e m/s "
-              "without, %.3e m/s with correction (factor %.0f)\n", uncorrected, corrected, uncorrected / corrected);
+  const double uncorrected = scullingVelocityError_m_s(false);
+  const double corrected = scullingVelocityError_m_s(true);
+  std::printf(
+      "[nav] sculling 0.05 rad / 5 m/s^2 at 2 Hz, 100 Hz increments, 10 s: velocity error %.3e m/s "
+      "without, %.3e m/s with correction (factor %.0f)\n",
+      uncorrected, corrected, uncorrected / corrected);
   EXPECT_LT(corrected * 10.0, uncorrected);
 }
 

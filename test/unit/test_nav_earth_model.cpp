@@ -13,19 +13,20 @@ using test_support::kDegToRad;
 
 TEST(NavEarthModel, SomiglianaNormalGravity) {
   const EarthModel earth;
-  EXPECT_NEAR(earth.gravity_mps2(0.0, 0.0), 9.7803253359, 1e-10);
-  EXPECT_NEAR(earth.gravity_mps2(90.0 * kDegToRad, 0.0), 9.8321849378, 1e-9);  // g_p of WGS-84
+  EXPECT_NEAR(earth.gravity_m_s2(0.0, 0.0), 9.7803253359, 1e-10);
+  EXPECT_NEAR(earth.gravity_m_s2(90.0 * kDegToRad, 0.0), 9.8321849378, 1e-9);  // g_p of WGS-84
   // Free-air gradient about 3.086e-6 (m/s^2)/m near the surface.
-  EXPECT_NEAR(earth.gravity_mps2(45.0 * kDegToRad, 1000.0) - earth.gravity_mps2(45.0 * kDegToRad, 0.0),
-              -3.086e-3, 1e-5);
+  EXPECT_NEAR(
+      earth.gravity_m_s2(45.0 * kDegToRad, 1000.0) - earth.gravity_m_s2(45.0 * kDegToRad, 0.0),
+      -3.086e-3, 1e-5);
   EXPECT_NEAR(earth.meridianRadius_m(0.0), 6335439.327, 1e-3);
   EXPECT_NEAR(earth.primeVerticalRadius_m(90.0 * kDegToRad), 6399593.626, 1e-3);
 }
 
 TEST(NavEarthModel, TextbookSphere) {
   const EarthModel sphere(test_support::textbookSphere());
-  EXPECT_DOUBLE_EQ(sphere.gravity_mps2(0.3, 0.0), 9.81);
-  EXPECT_DOUBLE_EQ(sphere.gravity_mps2(0.3, 6371000.0), 9.81 / 4.0);
+  EXPECT_DOUBLE_EQ(sphere.gravity_m_s2(0.3, 0.0), 9.81);
+  EXPECT_DOUBLE_EQ(sphere.gravity_m_s2(0.3, 6371000.0), 9.81 / 4.0);
   EXPECT_EQ(sphere.earthRateEnu_rad_s(0.3), Eigen::Vector3d::Zero());
   EXPECT_NEAR(2.0 * M_PI / sphere.schulerRate_rad_s() / 60.0, 84.39, 0.01);
 }
@@ -36,7 +37,8 @@ TEST(NavRotatingEarth, PerfectStaticImuStaysPut) {
   test_support::StaticScenario scenario;
   scenario.config.vertical.mode = VerticalChannelMode::kFree;
   scenario.latitude_rad = 50.0 * kDegToRad;
-  scenario.q_body_to_enu = Eigen::Quaterniond(Eigen::AngleAxisd(1.0, Eigen::Vector3d(1.0, 2.0, 3.0).normalized()));
+  scenario.q_body_to_enu =
+      Eigen::Quaterniond(Eigen::AngleAxisd(1.0, Eigen::Vector3d(1.0, 2.0, 3.0).normalized()));
   scenario.duration_s = 3600.0;
   scenario.dt_s = 0.1;
   for (const test_support::ErrorSample& s : runStaticScenario(scenario)) {
@@ -54,13 +56,13 @@ TEST(NavRotatingEarth, SchulerOscillationTurnsAtTheFoucaultRate) {
   scenario.config.vertical.fixed_reference_height_m = 0.0;
   scenario.latitude_rad = 50.0 * kDegToRad;
   const EarthModel earth;
-  const double w0_squared = earth.gravity_mps2(scenario.latitude_rad, 0.0) /
+  const double w0_squared = earth.gravity_m_s2(scenario.latitude_rad, 0.0) /
                             std::sqrt(earth.meridianRadius_m(scenario.latitude_rad) *
                                       earth.primeVerticalRadius_m(scenario.latitude_rad));
   const double foucault_rate = earth.earthRate_rad_s() * std::sin(scenario.latitude_rad);
   const double schuler_rate = std::sqrt(w0_squared + foucault_rate * foucault_rate);
   scenario.duration_s = 1.5 * 2.0 * M_PI / schuler_rate;
-  scenario.initial_velocity_error_enu_mps = Eigen::Vector3d(1.0, 0.0, 0.0);
+  scenario.initial_velocity_error_enu_m_s = Eigen::Vector3d(1.0, 0.0, 0.0);
   double worst_m = 0.0, peak_m = 1.0 / schuler_rate;
   double quarter_period_angle_rad = 0.0;
   for (const test_support::ErrorSample& s : runStaticScenario(scenario)) {
@@ -72,9 +74,10 @@ TEST(NavRotatingEarth, SchulerOscillationTurnsAtTheFoucaultRate) {
       quarter_period_angle_rad = std::atan2(s.position_error_enu_m.y(), s.position_error_enu_m.x());
     }
   }
-  std::printf("[nav] Foucault: error direction at T0/4 turned %.4f rad (expected %.4f), worst deviation "
-              "%.1f m of %.1f m peak\n", quarter_period_angle_rad,
-              -foucault_rate * 0.25 * 2.0 * M_PI / schuler_rate, worst_m, peak_m);
+  std::printf(
+      "[nav] Foucault: error direction at T0/4 turned %.4f rad (expected %.4f), worst deviation "
+      "%.1f m of %.1f m peak\n",
+      quarter_period_angle_rad, -foucault_rate * 0.25 * 2.0 * M_PI / schuler_rate, worst_m, peak_m);
   EXPECT_LE(worst_m, 0.02 * peak_m);
   EXPECT_NEAR(quarter_period_angle_rad, -foucault_rate * 0.25 * 2.0 * M_PI / schuler_rate, 0.005);
 }
@@ -89,16 +92,21 @@ TEST(NavRotatingEarth, ConstantVelocityFlightFollowsTheEllipsoid) {
   const double dt_s = 0.1, duration_s = 3600.0;
   const auto position_rate = [&](const Eigen::Vector2d& latitude_longitude) {
     const double latitude = latitude_longitude.x();
-    return Eigen::Vector2d(velocity_enu.y() / earth.meridianRadius_m(latitude),
-                           velocity_enu.x() / (earth.primeVerticalRadius_m(latitude) * std::cos(latitude)));
+    return Eigen::Vector2d(
+        velocity_enu.y() / earth.meridianRadius_m(latitude),
+        velocity_enu.x() / (earth.primeVerticalRadius_m(latitude) * std::cos(latitude)));
   };
   const auto body_rate = [&](double latitude) {
-    return (earth.earthRateEnu_rad_s(latitude) + earth.transportRateEnu_rad_s(velocity_enu, latitude, 0.0)).eval();
+    return (earth.earthRateEnu_rad_s(latitude) +
+            earth.transportRateEnu_rad_s(velocity_enu, latitude, 0.0))
+        .eval();
   };
   const auto specific_force = [&](double latitude) {
-    const Eigen::Vector3d coriolis_rate =
-        2.0 * earth.earthRateEnu_rad_s(latitude) + earth.transportRateEnu_rad_s(velocity_enu, latitude, 0.0);
-    return (coriolis_rate.cross(velocity_enu) + Eigen::Vector3d(0.0, 0.0, earth.gravity_mps2(latitude, 0.0))).eval();
+    const Eigen::Vector3d coriolis_rate = 2.0 * earth.earthRateEnu_rad_s(latitude) +
+                                          earth.transportRateEnu_rad_s(velocity_enu, latitude, 0.0);
+    return (coriolis_rate.cross(velocity_enu) +
+            Eigen::Vector3d(0.0, 0.0, earth.gravity_m_s2(latitude, 0.0)))
+        .eval();
   };
 
   NavigatorConfig config;
@@ -107,7 +115,7 @@ TEST(NavRotatingEarth, ConstantVelocityFlightFollowsTheEllipsoid) {
   NavState truth;
   truth.latitude_rad = 50.0 * kDegToRad;
   truth.longitude_rad = 10.0 * kDegToRad;
-  truth.velocity_enu_mps = velocity_enu;
+  truth.velocity_enu_m_s = velocity_enu;
   navigator.initialise(truth);
   Eigen::Vector2d position(truth.latitude_rad, truth.longitude_rad);
   const double half_step = 0.5 * dt_s;
@@ -126,22 +134,28 @@ TEST(NavRotatingEarth, ConstantVelocityFlightFollowsTheEllipsoid) {
       if (half == 0) latitude_mid = position.x();
     }
     increment.delta_angle_rad =
-        dt_s / 6.0 * (body_rate(latitude_start) + 4.0 * body_rate(latitude_mid) + body_rate(position.x()));
-    increment.delta_velocity_mps = dt_s / 6.0 *
-                                   (specific_force(latitude_start) + 4.0 * specific_force(latitude_mid) +
-                                    specific_force(position.x()));
+        dt_s / 6.0 *
+        (body_rate(latitude_start) + 4.0 * body_rate(latitude_mid) + body_rate(position.x()));
+    increment.delta_velocity_m_s =
+        dt_s / 6.0 *
+        (specific_force(latitude_start) + 4.0 * specific_force(latitude_mid) +
+         specific_force(position.x()));
     navigator.update(increment);
   }
   truth.latitude_rad = position.x();
   truth.longitude_rad = position.y();
   const Eigen::Vector3d error_m = test_support::positionErrorEnu_m(earth, navigator.state(), truth);
   const double distance_m = velocity_enu.norm() * duration_s;
-  std::printf("[nav] WGS-84 flight, %.0f km in 1 h: position error (E N U) %.3f %.3f %.3f m, velocity error %.2e m/s\n",
-              distance_m / 1000.0, error_m.x(), error_m.y(), error_m.z(),
-              (navigator.state().velocity_enu_mps - velocity_enu).norm());
+  std::printf(
+      "[nav] WGS-84 flight, %.0f km in 1 h: position error (E N U) %.3f %.3f %.3f m, velocity "
+      "error %.2e m/s\n",
+      distance_m / 1000.0, error_m.x(), error_m.y(), error_m.z(),
+      (navigator.state().velocity_enu_m_s - velocity_enu).norm());
   EXPECT_LT(error_m.norm(), 0.1);
-  EXPECT_LT((navigator.state().velocity_enu_mps - velocity_enu).norm(), 1e-4);
-  EXPECT_LT(test_support::attitudeError_rad(navigator.state().q_body_to_enu, truth.q_body_to_enu).norm(), 1e-8);
+  EXPECT_LT((navigator.state().velocity_enu_m_s - velocity_enu).norm(), 1e-4);
+  EXPECT_LT(
+      test_support::attitudeError_rad(navigator.state().q_body_to_enu, truth.q_body_to_enu).norm(),
+      1e-8);
 }
 
 }  // namespace

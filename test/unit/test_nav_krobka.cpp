@@ -2,9 +2,9 @@
 // delta_omega = d zeta / dt with <zeta(t1) zeta(t2)> = Q' tau0'^2 delta(t1 - t2) per axis, leaves a
 // non-rotating attitude bounded but makes a rotating one diffuse:
 //   sigma^2(t) = 3 D t + 2 Q' tau0'^2 int_0^t |omega|^2 dt     (Krobka dispersion, 3 axes).
-// First-order check: the inertial attitude error is S = sum_k B_k n_k with n_k = zeta_k - zeta_{k-1};
-// summing by parts, S = sum_k (B_k - B_{k+1}) zeta_k + boundary terms, and each term's trace
-// variance is 2 (1 - cos |omega| dt) * 2 sigma_zeta^2 ~ 2 |omega|^2 dt^2 sigma_zeta^2.
+// First-order check: the inertial attitude error is S = sum_k B_k n_k with n_k = zeta_k -
+// zeta_{k-1}; summing by parts, S = sum_k (B_k - B_{k+1}) zeta_k + boundary terms, and each term's
+// trace variance is 2 (1 - cos |omega| dt) * 2 sigma_zeta^2 ~ 2 |omega|^2 dt^2 sigma_zeta^2.
 // Discrete model: zeta_k is N(0, sigma_zeta^2) per axis, the sample average of the continuous
 // white zeta, so Q' tau0'^2 = sigma_zeta^2 dt; white rate noise D adds N(0, D dt) per increment.
 //
@@ -35,11 +35,12 @@ constexpr double kAngleNoiseSigma_rad = 1e-5;
 
 struct NoiseCase {
   double rate_magnitude_rad_s;
-  double angle_noise_sigma_rad;               // sigma_zeta per axis
-  double rate_noise_intensity_rad2_per_s;     // D per axis
+  double angle_noise_sigma_rad;            // sigma_zeta per axis
+  double rate_noise_intensity_rad2_per_s;  // D per axis
 
   double theorySlope_rad2_per_s() const {
-    const double angle_noise_intensity = angle_noise_sigma_rad * angle_noise_sigma_rad * kDt_s;  // Q' tau0'^2
+    const double angle_noise_intensity =
+        angle_noise_sigma_rad * angle_noise_sigma_rad * kDt_s;  // Q' tau0'^2
     return 3.0 * rate_noise_intensity_rad2_per_s +
            2.0 * angle_noise_intensity * rate_magnitude_rad_s * rate_magnitude_rad_s;
   }
@@ -60,7 +61,8 @@ Eigen::Vector3d tumblingRate(double magnitude_rad_s, double t) {
 
 SlopeEstimate measureDispersionSlope(const NoiseCase& noise, std::uint64_t seed) {
   std::vector<Eigen::Vector3d> delta_angles(kSteps);
-  for (int k = 0; k < kSteps; ++k) delta_angles[k] = tumblingRate(noise.rate_magnitude_rad_s, (k + 0.5) * kDt_s) * kDt_s;
+  for (int k = 0; k < kSteps; ++k)
+    delta_angles[k] = tumblingRate(noise.rate_magnitude_rad_s, (k + 0.5) * kDt_s) * kDt_s;
 
   const auto propagate = [&](const std::function<Eigen::Vector3d()>& angle_noise,
                              Eigen::Quaterniond* early, Eigen::Quaterniond* end) {
@@ -98,7 +100,8 @@ SlopeEstimate measureDispersionSlope(const NoiseCase& noise, std::uint64_t seed)
     };
     Eigen::Quaterniond early, end;
     propagate(angle_noise, &early, &end);
-    const Eigen::Vector3d error_early = rotationVectorFromQuaternion(early * true_early.conjugate());
+    const Eigen::Vector3d error_early =
+        rotationVectorFromQuaternion(early * true_early.conjugate());
     const Eigen::Vector3d error_end = rotationVectorFromQuaternion(end * true_end.conjugate());
     sum_early += error_early;
     sum_end += error_end;
@@ -121,11 +124,14 @@ SlopeEstimate measureDispersionSlope(const NoiseCase& noise, std::uint64_t seed)
 void expectSlopeMatchesTheory(const NoiseCase& noise, std::uint64_t seed, const char* label) {
   const SlopeEstimate estimate = measureDispersionSlope(noise, seed);
   const double theory = noise.theorySlope_rad2_per_s();
-  std::printf("[nav] Krobka %s: slope %.4e rad^2/s vs eq. 3.7 %.4e (ratio %.3f, %.1f standard errors off; "
-              "standard error %.1f %%)\n", label, estimate.slope_rad2_per_s, theory,
-              estimate.slope_rad2_per_s / theory, (estimate.slope_rad2_per_s - theory) / estimate.standard_error_rad2_per_s,
-              100.0 * estimate.standard_error_rad2_per_s / theory);
-  ASSERT_LT(4.0 * estimate.standard_error_rad2_per_s, 0.2 * theory) << "too few runs for a 20 % check";
+  std::printf(
+      "[nav] Krobka %s: slope %.4e rad^2/s vs eq. 3.7 %.4e (ratio %.3f, %.1f standard errors off; "
+      "standard error %.1f %%)\n",
+      label, estimate.slope_rad2_per_s, theory, estimate.slope_rad2_per_s / theory,
+      (estimate.slope_rad2_per_s - theory) / estimate.standard_error_rad2_per_s,
+      100.0 * estimate.standard_error_rad2_per_s / theory);
+  ASSERT_LT(4.0 * estimate.standard_error_rad2_per_s, 0.2 * theory)
+      << "too few runs for a 20 % check";
   EXPECT_NEAR(estimate.slope_rad2_per_s, theory, 0.2 * theory);
 }
 
@@ -135,17 +141,21 @@ TEST(NavKrobka, WhiteAngleNoiseDiffusesARotatingBodyAsEq37) {
 
 TEST(NavKrobka, WhiteRateNoiseAddsThreeDt) {
   const double rate_noise_intensity = 2e-11;  // ~ the angle-noise term, so both must be right
-  expectSlopeMatchesTheory({1.0, kAngleNoiseSigma_rad, rate_noise_intensity}, 12, "|w| = 1 rad/s, angle + rate noise");
+  expectSlopeMatchesTheory({1.0, kAngleNoiseSigma_rad, rate_noise_intensity}, 12,
+                           "|w| = 1 rad/s, angle + rate noise");
 }
 
 TEST(NavKrobka, NonRotatingBodyDoesNotDiffuse) {
   const NoiseCase still{0.0, kAngleNoiseSigma_rad, 0.0};
   const SlopeEstimate estimate = measureDispersionSlope(still, 13);
   const double rotating_theory = NoiseCase{1.0, kAngleNoiseSigma_rad, 0.0}.theorySlope_rad2_per_s();
-  const double boundary_dispersion = 6.0 * kAngleNoiseSigma_rad * kAngleNoiseSigma_rad;  // |zeta_N - zeta_0|^2
-  std::printf("[nav] Krobka, not rotating: slope %.3e rad^2/s (%.3f of the rotating case), dispersion at "
-              "T %.3e rad^2 vs bounded 6 sigma_zeta^2 = %.3e\n", estimate.slope_rad2_per_s,
-              estimate.slope_rad2_per_s / rotating_theory, estimate.dispersion_at_end_rad2, boundary_dispersion);
+  const double boundary_dispersion =
+      6.0 * kAngleNoiseSigma_rad * kAngleNoiseSigma_rad;  // |zeta_N - zeta_0|^2
+  std::printf(
+      "[nav] Krobka, not rotating: slope %.3e rad^2/s (%.3f of the rotating case), dispersion at "
+      "T %.3e rad^2 vs bounded 6 sigma_zeta^2 = %.3e\n",
+      estimate.slope_rad2_per_s, estimate.slope_rad2_per_s / rotating_theory,
+      estimate.dispersion_at_end_rad2, boundary_dispersion);
   EXPECT_LT(std::abs(estimate.slope_rad2_per_s), 4.0 * estimate.standard_error_rad2_per_s);
   EXPECT_LT(std::abs(estimate.slope_rad2_per_s), 0.02 * rotating_theory);
   EXPECT_NEAR(estimate.dispersion_at_end_rad2, boundary_dispersion, 0.15 * boundary_dispersion);

@@ -9,8 +9,8 @@
 //   delta_N = -b_E / g
 //   delta_U =  e_E / (W cos L) - b_E tan L / g
 // This is seed 001 eq. 1.1 (Titterton & Weston's gyrocompassing limit) without its noise terms:
-// the heading error in compass convention (clockwise) is -delta_U = b_E tan L / g - e_E / (W cos L);
-// the relative sign of the two terms depends on how "bias" and "heading error" are signed, and
+// the heading error in compass convention (clockwise) is -delta_U = b_E tan L / g - e_E / (W cos
+// L); the relative sign of the two terms depends on how "bias" and "heading error" are signed, and
 // budgets usually add magnitudes.
 // White noise (angle random walk N_g in rad/sqrt(s), velocity random walk N_a in m/s/sqrt(s))
 // averaged over T seconds adds zero-mean errors with covariance (alignmentNoiseCovariance_rad2):
@@ -26,15 +26,15 @@ namespace imu_lab {
 namespace nav {
 
 Eigen::Vector3d predictedAlignmentError_rad(const Eigen::Vector3d& gyro_bias_body_rad_s,
-                                            const Eigen::Vector3d& accel_bias_body_mps2,
+                                            const Eigen::Vector3d& accel_bias_body_m_s2,
                                             const Eigen::Quaterniond& q_body_to_enu,
-                                            double latitude_rad, double gravity_mps2,
+                                            double latitude_rad, double gravity_m_s2,
                                             double earth_rate_rad_s);
 
 Eigen::Matrix3d alignmentNoiseCovariance_rad2(double gyro_angle_random_walk_rad_per_sqrt_s,
-                                              double accel_velocity_random_walk_mps_per_sqrt_s,
+                                              double accel_velocity_random_walk_m_s_per_sqrt_s,
                                               double duration_s, double latitude_rad,
-                                              double gravity_mps2, double earth_rate_rad_s);
+                                              double gravity_m_s2, double earth_rate_rad_s);
 
 }  // namespace nav
 }  // namespace imu_lab

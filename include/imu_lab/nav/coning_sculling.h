@@ -23,8 +23,8 @@ struct ConingScullingConfig {
 };
 
 struct CompensatedIncrement {
-  Eigen::Vector3d rotation_vector_rad = Eigen::Vector3d::Zero();    // body(k) relative to body(k-1)
-  Eigen::Vector3d delta_velocity_mps = Eigen::Vector3d::Zero();     // in body(k-1) axes
+  Eigen::Vector3d rotation_vector_rad = Eigen::Vector3d::Zero();  // body(k) relative to body(k-1)
+  Eigen::Vector3d delta_velocity_m_s = Eigen::Vector3d::Zero();   // in body(k-1) axes
 };
 
 class ConingScullingCompensator {
@@ -39,7 +39,7 @@ class ConingScullingCompensator {
  private:
   ConingScullingConfig config_;
   Eigen::Vector3d previous_delta_angle_rad_ = Eigen::Vector3d::Zero();
-  Eigen::Vector3d previous_delta_velocity_mps_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d previous_delta_velocity_m_s_ = Eigen::Vector3d::Zero();
 };
 
 }  // namespace nav

@@ -16,14 +16,15 @@ namespace nav {
 
 struct ImuIncrement {
   Eigen::Vector3d delta_angle_rad = Eigen::Vector3d::Zero();
-  Eigen::Vector3d delta_velocity_mps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d delta_velocity_m_s = Eigen::Vector3d::Zero();
   double dt_s = 0.0;
 };
 
 // Increment from interval-average angular rate (rad/s) and specific force (m/s^2):
-// increment = average * dt. Throws InputError for a non-positive or non-finite dt or non-finite rates.
+// increment = average * dt. Throws InputError for a non-positive or non-finite dt or non-finite
+// rates.
 ImuIncrement incrementFromMeanRates(const Eigen::Vector3d& mean_angular_rate_rad_s,
-                                    const Eigen::Vector3d& mean_specific_force_mps2, double dt_s);
+                                    const Eigen::Vector3d& mean_specific_force_m_s2, double dt_s);
 
 // Throws InputError naming what is wrong if the increment cannot be integrated.
 void validateIncrement(const ImuIncrement& increment);

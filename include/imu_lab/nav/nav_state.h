@@ -16,7 +16,7 @@ namespace nav {
 struct NavState {
   double stamp_s = 0.0;
   Eigen::Quaterniond q_body_to_enu = Eigen::Quaterniond::Identity();
-  Eigen::Vector3d velocity_enu_mps = Eigen::Vector3d::Zero();  // relative to the Earth
+  Eigen::Vector3d velocity_enu_m_s = Eigen::Vector3d::Zero();  // relative to the Earth
   double latitude_rad = 0.0;
   double longitude_rad = 0.0;  // wrapped to (-pi, pi]
   double height_m = 0.0;       // above the ellipsoid (or sphere)

@@ -3,7 +3,7 @@
 //   NavigatorConfig config;                  // Earth model, vertical channel, corrections
 //   Navigator navigator(config);
 //   navigator.initialise(initial_state);     // attitude from StaticAligner or given
-//   const NavState& s = navigator.update(delta_angle_rad, delta_velocity_mps, dt_s);
+//   const NavState& s = navigator.update(delta_angle_rad, delta_velocity_m_s, dt_s);
 //
 // Mechanisation (Savage 1998 structure), internally in the local-level ENU frame, so the state is
 // exposed as-is (see nav_state.h for the frames):
@@ -45,11 +45,13 @@ class Navigator {
   // One IMU interval: increments in the body frame; stamp advances by dt_s.
   // Throws std::logic_error before initialise(), InputError for a bad increment.
   const NavState& update(const Eigen::Vector3d& delta_angle_rad,
-                         const Eigen::Vector3d& delta_velocity_mps, double dt_s);
+                         const Eigen::Vector3d& delta_velocity_m_s, double dt_s);
   const NavState& update(const ImuIncrement& increment);
 
   // Height aiding for the held vertical channel (e.g. from a barometer topic).
-  void setReferenceHeight(double reference_height_m) { vertical_.setReferenceHeight(reference_height_m); }
+  void setReferenceHeight(double reference_height_m) {
+    vertical_.setReferenceHeight(reference_height_m);
+  }
   void clearReferenceHeight() { vertical_.clearReferenceHeight(); }
 
   const NavState& state() const { return state_; }

@@ -35,7 +35,7 @@ class StaticAligner {
   bool complete() const { return accumulated_s_ >= config_.duration_s; }
   double accumulated_s() const { return accumulated_s_; }
   Eigen::Vector3d meanAngularRate_rad_s() const;
-  Eigen::Vector3d meanSpecificForce_mps2() const;
+  Eigen::Vector3d meanSpecificForce_m_s2() const;
 
   // Body->ENU attitude from the data so far (normally called once complete()). Throws InputError
   // if there is no data, the specific force is not gravity-like, or (gyrocompassing) the
@@ -50,7 +50,7 @@ class StaticAligner {
 
   StaticAlignmentConfig config_;
   Eigen::Vector3d sum_delta_angle_rad_ = Eigen::Vector3d::Zero();
-  Eigen::Vector3d sum_delta_velocity_mps_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d sum_delta_velocity_m_s_ = Eigen::Vector3d::Zero();
   double accumulated_s_ = 0.0;
 };
 

@@ -31,7 +31,7 @@ VerticalLoopGains criticallyDampedVerticalGains(double time_constant_s, double s
 
 struct VerticalCorrection {
   double height_m = 0.0;
-  double up_velocity_mps = 0.0;
+  double up_velocity_m_s = 0.0;
 };
 
 struct VerticalChannelConfig {

@@ -1,0 +1,57 @@
+// Navigator refuses what it cannot integrate, naming the problem.
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <stdexcept>
+
+#include "imu_lab/common/config_error.h"
+#include "imu_lab/nav/navigator.h"
+
+namespace imu_lab {
+namespace nav {
+namespace {
+
+TEST(NavNavigatorApi, UpdateBeforeInitialiseIsAProgrammingError) {
+  Navigator navigator;
+  EXPECT_THROW(navigator.update(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.01),
+               std::logic_error);
+}
+
+TEST(NavNavigatorApi, RefusesBadInitialStates) {
+  Navigator navigator;
+  NavState state;
+  state.latitude_rad = 95.0;  // degrees by mistake
+  EXPECT_THROW(navigator.initialise(state), InputError);
+  state.latitude_rad = 0.5;
+  state.height_m = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(navigator.initialise(state), InputError);
+  state.height_m = 0.0;
+  navigator.initialise(state);
+  EXPECT_TRUE(navigator.initialised());
+}
+
+TEST(NavNavigatorApi, RefusesBadIncrementsAndKeepsTheState) {
+  Navigator navigator;
+  navigator.initialise(NavState());
+  EXPECT_THROW(navigator.update(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.0), InputError);
+  EXPECT_THROW(navigator.update(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), -0.01),
+               InputError);
+  EXPECT_THROW(navigator.update(Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()),
+                                Eigen::Vector3d::Zero(), 0.01),
+               InputError);
+  EXPECT_EQ(navigator.state().stamp_s, 0.0);
+}
+
+TEST(NavNavigatorApi, RateAveragesBecomeIncrements) {
+  const ImuIncrement increment =
+      incrementFromMeanRates(Eigen::Vector3d(0.1, 0.2, 0.3), Eigen::Vector3d(0.0, 0.0, 9.8), 0.01);
+  EXPECT_TRUE(increment.delta_angle_rad.isApprox(Eigen::Vector3d(1e-3, 2e-3, 3e-3)));
+  EXPECT_TRUE(increment.delta_velocity_m_s.isApprox(Eigen::Vector3d(0.0, 0.0, 0.098)));
+  EXPECT_EQ(increment.dt_s, 0.01);
+  EXPECT_THROW(incrementFromMeanRates(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.0),
+               InputError);
+}
+
+}  // namespace
+}  // namespace nav
+}  // namespace imu_lab
