@@ -8,16 +8,13 @@
 
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/emulator/imu_emulator.h"
+#include "imu_lab/emulator/sensor_channel.h"
+#include "test_emulator_paths.h"
 
-#ifndef IMU_LAB_CONFIG_DIR
-#define IMU_LAB_CONFIG_DIR "config"
-#endif
 
 namespace imu_lab {
 namespace emulator {
 namespace {
-
-const std::string kConfigDir = IMU_LAB_CONFIG_DIR;
 
 const char* const kValidProfile = R"(
 name: test
@@ -117,7 +114,7 @@ TEST(EmulatorProfiles, InconsistentValuesNamed) {
 
 TEST(EmulatorProfiles, MissingFileNamed) {
   try {
-    load_sensor_profile(kConfigDir + "/sensors/no_such_profile.yaml");
+    load_sensor_profile(test::config_path("sensors/no_such_profile.yaml"));
     FAIL() << "no error";
   } catch (const ConfigError& error) {
     EXPECT_EQ(error.key(), "(file)");
@@ -125,7 +122,7 @@ TEST(EmulatorProfiles, MissingFileNamed) {
 }
 
 TEST(EmulatorProfiles, ScenarioRefusalsNamed) {
-  const YAML::Node valid = YAML::LoadFile(kConfigDir + "/scenarios/static.yaml");
+  const YAML::Node valid = YAML::LoadFile(test::config_path("scenarios/static.yaml"));
   auto key_of = [&](const std::function<void(YAML::Node&)>& edit) -> std::string {
     YAML::Node root = YAML::Clone(valid);
     edit(root);
@@ -143,6 +140,21 @@ TEST(EmulatorProfiles, ScenarioRefusalsNamed) {
   EXPECT_EQ(key_of([](YAML::Node& r) { r["speed_m_s"] = 3.0; }), "speed_m_s");
 }
 
+TEST(EmulatorProfiles, FogHumpScreensTheWhiteNoise) {
+  // Seed 003 Figs. 6.9-6.12: at tau = 1 s (T_c = 5 ms) the hump's flank reads as white noise
+  // q_c T_c, thousands of times the true N; in AVAR the ratio is (q_c T_c / N)^2.
+  const SensorProfile profile = load_sensor_profile(test::config_path("sensors/fog_markov_hump.yaml"));
+  ImuEmulator emulator(profile, load_scenario(test::config_path("scenarios/static.yaml")), {2000.0, 0.0, 1});
+  double white = 0.0, markov = 0.0;
+  for (const auto& process : emulator.gyro_channel().processes(0)) {
+    if (process->kind() == "white_rate") white += process->allan_variance(1.0, 5e-4);
+    if (process->kind() == "markov") markov += process->allan_variance(1.0, 5e-4);
+  }
+  const double adev_ratio = std::sqrt(markov / white);
+  std::printf("[fog] ADEV(1 s) of the hump / of the white noise = %.0f\n", adev_ratio);
+  EXPECT_GT(adev_ratio, 3000.0);
+}
+
 struct ShippedProfile {
   const char* file;
   double rate_hz;
@@ -151,8 +163,8 @@ struct ShippedProfile {
 class EmulatorShippedProfiles : public ::testing::TestWithParam<ShippedProfile> {};
 
 TEST_P(EmulatorShippedProfiles, LoadsAndRunsFourSeconds) {
-  const SensorProfile profile = load_sensor_profile(kConfigDir + "/sensors/" + GetParam().file);
-  const ScenarioConfig scenario = load_scenario(kConfigDir + "/scenarios/static.yaml");
+  const SensorProfile profile = load_sensor_profile(test::config_path(std::string("sensors/") + GetParam().file));
+  const ScenarioConfig scenario = load_scenario(test::config_path("scenarios/static.yaml"));
   ImuEmulator emulator(profile, scenario, {GetParam().rate_hz, 100.0, 7});
   const auto count = static_cast<int>(4.0 * GetParam().rate_hz);
   Eigen::Vector3d force_sum = Eigen::Vector3d::Zero();

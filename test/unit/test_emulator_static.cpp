@@ -7,12 +7,10 @@
 
 #include "imu_lab/emulator/earth_model.h"
 #include "imu_lab/emulator/imu_emulator.h"
+#include "test_emulator_paths.h"
 #include "imu_lab/emulator/sensor_channel.h"
 #include "imu_lab/emulator/static_motion.h"
 
-#ifndef IMU_LAB_CONFIG_DIR
-#define IMU_LAB_CONFIG_DIR "config"
-#endif
 
 namespace imu_lab {
 namespace emulator {
@@ -136,9 +134,8 @@ TEST(EmulatorStatic, MeansEqualGravityAndEarthRateThroughBiasAndK) {
 TEST(EmulatorStatic, TacticalProfileMeansWithinTheBoundFromItsNoise) {
   // All noise present: the record mean's variance is the sum over processes of the variance of
   // a T-long average (stationary terms) plus K^2 T / 3 for the random walk (which is its AVAR).
-  const std::string config = IMU_LAB_CONFIG_DIR;
-  const SensorProfile profile = load_sensor_profile(config + "/sensors/tactical_mems.yaml");
-  const ScenarioConfig scenario = load_scenario(config + "/scenarios/static.yaml");
+  const SensorProfile profile = load_sensor_profile(test::config_path("sensors/tactical_mems.yaml"));
+  const ScenarioConfig scenario = load_scenario(test::config_path("scenarios/static.yaml"));
   const EmulatorSettings settings{100.0, 0.0, 9};
   ImuEmulator emulator(profile, scenario, settings);
   const int count = 30000;
@@ -199,9 +196,8 @@ TEST(EmulatorStatic, NonRotatingSphereHasNoEarthRate) {
 }
 
 std::vector<double> run_bits(std::uint64_t seed, const std::string& profile_file) {
-  const std::string config = IMU_LAB_CONFIG_DIR;
-  ImuEmulator emulator(load_sensor_profile(config + "/sensors/" + profile_file),
-                       load_scenario(config + "/scenarios/static.yaml"), {100.0, 0.0, seed});
+  ImuEmulator emulator(load_sensor_profile(test::config_path("sensors/" + profile_file)),
+                       load_scenario(test::config_path("scenarios/static.yaml")), {100.0, 0.0, seed});
   std::vector<double> values;
   for (int k = 0; k < 2000; ++k) {
     const ImuSample s = emulator.next();
