@@ -54,8 +54,8 @@ TEST(AllanStreamingDecimated, BeyondTheExactLimitEqualsTheDecimatedBatchEstimato
 TEST(AllanStreamingDecimated, LevelsCoverOneOctaveEachAndReportMultiplesOfTheirBlock) {
   StreamingOptions options;
   options.exact_max_averaging_factor = 100;
-  options.points_per_decade = 10;
-  options.max_tau_s = 1e4;
+  options.tau_spacing = TauSpacing::kEveryM;  // every m probes each octave's lower edge
+  options.max_tau_s = 100.0;
   const TauPlan plan = plan_taus(options, 1e-3);
   int previous_largest = 0;
   for (const PlannedLevel& level : plan.levels) {
@@ -68,8 +68,9 @@ TEST(AllanStreamingDecimated, LevelsCoverOneOctaveEachAndReportMultiplesOfTheirB
       previous_largest = factor << level.level;
     }
   }
-  EXPECT_GE(previous_largest, 9000000);
-  EXPECT_LE(previous_largest, 10000000 + (1 << plan.levels.back().level));
+  EXPECT_EQ(plan.levels.size(), 11u);  // 100 * 2^10 >= 1e5
+  EXPECT_EQ(plan.levels[1].level_averaging_factors.front(), 51);  // m = 101 rounds up to 102
+  EXPECT_EQ(previous_largest, 98 * 1024);  // 1e5 rounded up to a whole block: within one block of max_tau
 }
 
 }  // namespace
