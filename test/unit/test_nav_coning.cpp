@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 #include "imu_lab/nav/coning_sculling.h"
 #include "imu_lab/nav/rotation.h"
@@ -56,15 +57,20 @@ double coningAttitudeError_rad(bool coning_correction) {
   return rotationVectorFromQuaternion(attitude * motion.attitude(kDuration_s).conjugate()).norm();
 }
 
-TEST(NavConing, CorrectionReducesConingDriftTenfold) {
-  const double uncorrected = coningAttitudeError_rad(false);
-  const double corrected = coningAttitudeError_rad(true);
-  std::printf(
-      "[nav] coning 2 deg at 2 Hz, 100 Hz increments, 10 s: attitude error %.3e rad without, "
-      "%.3e rad with correction (factor %.0f)\n",
-      uncorrected, corrected, uncorrected / corrected);
-  EXPECT_GT(uncorrected, 1e-5);  // the motion really does cone
+// The error of a motion integrated with the correction off and on; on must be 10x smaller.
+void expectCorrectionGainsTenfold(const std::function<double(bool)>& error_with_correction,
+                                  const char* label, const char* unit) {
+  const double uncorrected = error_with_correction(false);
+  const double corrected = error_with_correction(true);
+  std::printf("[nav] %s: error %.3e %s without, %.3e %s with correction (factor %.0f)\n", label,
+              uncorrected, unit, corrected, unit, uncorrected / corrected);
   EXPECT_LT(corrected * 10.0, uncorrected);
+}
+
+TEST(NavConing, CorrectionReducesConingDriftTenfold) {
+  EXPECT_GT(coningAttitudeError_rad(false), 1e-5);  // the motion really does cone
+  expectCorrectionGainsTenfold(coningAttitudeError_rad,
+                               "coning 2 deg at 2 Hz, 100 Hz increments, 10 s, attitude", "rad");
 }
 
 // Inertial velocity error after kDuration_s of sculling.
@@ -95,13 +101,9 @@ double scullingVelocityError_m_s(bool sculling_correction) {
 }
 
 TEST(NavSculling, CorrectionReducesScullingErrorTenfold) {
-  const double uncorrected = scullingVelocityError_m_s(false);
-  const double corrected = scullingVelocityError_m_s(true);
-  std::printf(
-      "[nav] sculling 0.05 rad / 5 m/s^2 at 2 Hz, 100 Hz increments, 10 s: velocity error %.3e m/s "
-      "without, %.3e m/s with correction (factor %.0f)\n",
-      uncorrected, corrected, uncorrected / corrected);
-  EXPECT_LT(corrected * 10.0, uncorrected);
+  expectCorrectionGainsTenfold(
+      scullingVelocityError_m_s,
+      "sculling 0.05 rad / 5 m/s^2 at 2 Hz, 100 Hz increments, 10 s, velocity", "m/s");
 }
 
 }  // namespace
