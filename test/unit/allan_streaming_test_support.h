@@ -7,9 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -52,6 +50,16 @@ inline void feed(StreamingAllan& engine, const std::vector<std::vector<double>>&
     for (std::size_t c = 0; c < rates.size(); ++c) sample[c] = rates[c][k];
     engine.push(static_cast<std::int64_t>(k) * tau0_ns, sample);
   }
+}
+
+inline StreamingOptions test_options(std::size_t channels, int exact_limit, double points_per_decade,
+                                     double max_tau_s) {
+  StreamingOptions options;
+  options.channel_count = channels;
+  options.exact_max_averaging_factor = exact_limit;
+  options.points_per_decade = points_per_decade;
+  options.max_tau_s = max_tau_s;
+  return options;
 }
 
 inline double relative_difference(double a, double b) {
@@ -97,21 +105,6 @@ inline std::vector<int> factors_of(const std::vector<StabilityPoint>& points) {
   std::vector<int> factors;
   for (const StabilityPoint& point : points) factors.push_back(point.averaging_factor);
   return factors;
-}
-
-// Numbers one per line; '#' starts a comment line.
-inline std::vector<double> read_column(const std::string& path) {
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << "cannot open " << path;
-  std::vector<double> values;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream fields(line);
-    double value;
-    if (fields >> value) values.push_back(value);
-  }
-  return values;
 }
 
 }  // namespace testing_support

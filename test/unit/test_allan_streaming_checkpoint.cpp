@@ -29,14 +29,7 @@ void write_bytes(const std::string& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
 }
 
-StreamingOptions options_for_checkpoint() {
-  StreamingOptions options;
-  options.channel_count = 2;
-  options.exact_max_averaging_factor = 40;
-  options.points_per_decade = 6;
-  options.max_tau_s = 5.0;
-  return options;
-}
+StreamingOptions options_for_checkpoint() { return test_options(2, 40, 6, 5.0); }
 
 // Rates with a gap and a NaN in the first half, so segments and history are in the state.
 struct RecordedRun {

@@ -13,11 +13,7 @@ namespace {
 using namespace testing_support;
 
 TEST(AllanStreamingDecimated, BeyondTheExactLimitEqualsTheDecimatedBatchEstimator) {
-  StreamingOptions options;
-  options.channel_count = 2;
-  options.exact_max_averaging_factor = 24;
-  options.points_per_decade = 10;
-  options.max_tau_s = 10.0;
+  const StreamingOptions options = test_options(2, 24, 10, 10.0);
   const std::size_t count = 30001;  // not a multiple of any block: incomplete blocks are dropped
   const std::vector<std::vector<double>> rates = {synthetic_rate(count, 21, 0.5), synthetic_rate(count, 22)};
   StreamingAllan engine(options);
@@ -52,10 +48,8 @@ TEST(AllanStreamingDecimated, BeyondTheExactLimitEqualsTheDecimatedBatchEstimato
 }
 
 TEST(AllanStreamingDecimated, LevelsCoverOneOctaveEachAndReportMultiplesOfTheirBlock) {
-  StreamingOptions options;
-  options.exact_max_averaging_factor = 100;
+  StreamingOptions options = test_options(1, 100, 10, 100.0);
   options.tau_spacing = TauSpacing::kEveryM;  // every m probes each octave's lower edge
-  options.max_tau_s = 100.0;
   const TauPlan plan = plan_taus(options, 1e-3);
   int previous_largest = 0;
   for (const PlannedLevel& level : plan.levels) {

@@ -11,11 +11,7 @@ namespace {
 using namespace testing_support;
 
 TEST(AllanStreamingExact, EveryStatisticEqualsBatchUpToTheExactLimit) {
-  StreamingOptions options;
-  options.channel_count = 3;
-  options.exact_max_averaging_factor = 300;
-  options.points_per_decade = 12;
-  options.max_tau_s = 1e3;
+  const StreamingOptions options = test_options(3, 300, 12, 1e3);
   const std::size_t count = 12000;
   const std::vector<std::vector<double>> rates = {synthetic_rate(count, 11), synthetic_rate(count, 12, 9.81),
                                                   synthetic_rate(count, 13, -3e-4)};
@@ -37,11 +33,8 @@ TEST(AllanStreamingExact, EveryStatisticEqualsBatchUpToTheExactLimit) {
 }
 
 TEST(AllanStreamingExact, EveryMSpacingCoversEachFactor) {
-  StreamingOptions options;
-  options.channel_count = 1;
+  StreamingOptions options = test_options(1, 64, 10, 0.1);
   options.tau_spacing = TauSpacing::kEveryM;
-  options.exact_max_averaging_factor = 64;
-  options.max_tau_s = 0.1;
   const std::size_t count = 3000;
   const std::vector<std::vector<double>> rates = {synthetic_rate(count, 5)};
   StreamingAllan engine(options);

@@ -13,14 +13,7 @@ using namespace testing_support;
 
 constexpr int kExactLimit = 120;
 
-StreamingOptions small_options(std::size_t channels) {
-  StreamingOptions options;
-  options.channel_count = channels;
-  options.exact_max_averaging_factor = kExactLimit;
-  options.points_per_decade = 8;
-  options.max_tau_s = 0.1;
-  return options;
-}
+StreamingOptions small_options(std::size_t channels) { return test_options(channels, kExactLimit, 8, 0.1); }
 
 // Pooled over segments: '#' adds, and the variance is the '#'-weighted mean of the segments'
 // variances (for TOTDEV '#' is N - 2, its normaliser; for the dispersions the spread per segment).

@@ -29,10 +29,7 @@ TEST(AllanStreamingPhaseInput, IncrementsEqualTheEquivalentRates) {
   std::vector<double> equivalent_rate(count);
   for (std::size_t k = 0; k < count; ++k) equivalent_rate[k] = increments[k] / tau0_s;
 
-  StreamingOptions options;
-  options.channel_count = 1;
-  options.exact_max_averaging_factor = 200;
-  options.max_tau_s = 5.0;
+  const StreamingOptions options = test_options(1, 200, 10, 5.0);
   StreamingOptions phase_options = options;
   phase_options.input_kind = InputKind::kIncrement;
   StreamingAllan from_rates(options);
