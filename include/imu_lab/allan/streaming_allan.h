@@ -1,18 +1,29 @@
 // Streaming Allan engine: one pass over time-stamped multi-channel samples, memory bounded
 // independently of the run length, every Allan-family statistic available at any time.
 //
-// Exactness: fully-overlapping estimates at m <= options.exact_max_averaging_factor equal the
-// batch reference (batch.h) on the same samples. Beyond, each statistic is the same estimator on the
-// rate averaged over blocks of 2^L samples (decimated_batch.h is its batch reference), with the term
-// count and EDF of that decimated estimator. TOTDEV is exact on the same terms: its reflected end
-// terms come from a head buffer and the phase ring of each segment (streaming_total_ends.h).
-// Non-overlapping ADEV/HDEV beyond the limit equal the exact ones (the decimated phase holds
-// every point they use).
+// What is exact (equal to the batch reference, batch.h, on the same samples, to rounding):
+// - m <= options.exact_max_averaging_factor: all nine statistics (ADEV, OADEV, MDEV, HDEV, OHDEV,
+//   TDEV, TOTDEV, AKDEV, HKDEV) with their '#', noise type, EDF and bounds. TOTDEV's reflected end
+//   terms need only the first and last 2m phase points of a segment (streaming_total_ends.h).
+// - m > the limit: each statistic is the same estimator on the rate averaged over blocks of 2^L
+//   samples at m / 2^L (decimated_batch.h is its batch reference), with that estimator's '#' and
+//   EDF; TOTDEV there reflects the decimated series. ADEV/HDEV (non-overlapping) use only every m-th
+//   phase point, which the decimated phase holds, so they stay equal to the exact ones.
+// - Noise type: Stable32's rule for frequency data (evaluate_frequency), also for increments, so
+//   the two input kinds give identical points.
 //
-// Irregular input (see StreamingOptions): duplicate and out-of-order stamps are dropped, a gap
-// splits the run into segments whose sums are pooled (or any of them throws InputError under
-// StampPolicy::kStop). A NaN/Inf value is excluded and splits that channel's run only (the
-// other channels keep theirs); it is never averaged in.
+// Memory per channel: per pyramid level a phase ring of 3 m_max + 1 (rounded up to a power of
+// two) and a head of 2 m_max doubles plus a few sums per tau; one history of at most
+// 30 m_exact + 1 points twice (the B1 noise-type fallback, streaming_phase_history.h); one map
+// entry per distinct segment length (a gap-free run holds one). About 1 MB per channel with the
+// defaults (m_exact 1000, 10 taus per decade, tau up to 1e4 s at 1 kHz).
+//
+// Irregular input (see StreamingOptions): stamps are nanoseconds (the message header stamp).
+// Duplicate and out-of-order stamps are dropped; a gap splits the run into segments whose sums
+// are pooled (or any of them throws InputError under StampPolicy::kStop; the engine is then
+// not to be used further). A NaN/Inf value is excluded and splits that channel's run only (the
+// other channels keep theirs); it is never averaged in. Pooling: '#' and the sums add, EDFs add
+// over segments (each at its own length), Krobka's mean difference is taken per segment.
 #pragma once
 
 #include <cstdint>
