@@ -46,6 +46,24 @@ TEST(AllanStreamingExact, EveryMSpacingCoversEachFactor) {
                  "ohdev every m");
 }
 
+TEST(AllanStreamingExact, SnapshotDuringWarmUpUsesWhatHasArrived) {
+  const StreamingOptions options = test_options(1, 100, 10, 1.0);
+  const std::vector<std::vector<double>> rates = {synthetic_rate(600, 7, 4.0)};
+  StreamingAllan engine(options);
+  EXPECT_FALSE(engine.snapshot().warmed_up);  // nothing yet: no tau0
+  feed(engine, rates, 0, 600);                // warm-up window is 1000 samples
+  ASSERT_FALSE(engine.warmed_up());
+  const StreamingSnapshot snapshot = engine.snapshot();
+  ASSERT_TRUE(snapshot.warmed_up);
+  for (const Statistic statistic : kStreamingStatistics) {
+    const auto streamed = points_up_to(snapshot.curve(statistic, 0), options.exact_max_averaging_factor);
+    ASSERT_GE(streamed.size(), 10u);
+    compare_points(streamed, evaluate_frequency(statistic, rates[0], 1e-3, factors_of(streamed)),
+                   statistic_name(statistic) + " during warm-up");
+  }
+  EXPECT_FALSE(engine.warmed_up());  // the snapshot worked on a copy
+}
+
 }  // namespace
 }  // namespace allan
 }  // namespace imu_lab
