@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -29,8 +30,9 @@ std::vector<std::int64_t> requested_factors(const StreamingOptions& options, std
 }  // namespace
 
 TauPlan plan_taus(const StreamingOptions& options, double tau0_s) {
-  // Far beyond any run length; keeps the count integral.
-  const double max_factor_real = std::min(std::floor(options.max_tau_s / tau0_s), 1.0e15);
+  // StabilityPoint holds m as an int; far beyond any run length anyway.
+  const double max_factor_real =
+      std::min(std::floor(options.max_tau_s / tau0_s), static_cast<double>(std::numeric_limits<int>::max() / 2));
   const std::int64_t max_factor = std::max<std::int64_t>(1, static_cast<std::int64_t>(max_factor_real));
   const std::int64_t exact_limit = options.exact_max_averaging_factor;
 
