@@ -43,8 +43,8 @@ struct ImuSample {
   Eigen::Vector3d delta_velocity_m_s = Eigen::Vector3d::Zero();   // = average * dt
   double temperature_c = 0.0;
   // Per-axis variance of one sample's stationary noise (for sensor_msgs/Imu covariance
-  // diagonals): white, white-angle, quantization, Markov, flicker bank. Excludes biases, random
-  // walk and deterministic terms.
+  // diagonals): white, white-angle, quantization, Markov, flicker bank, zero-DC family.
+  // Excludes biases, random walk and deterministic terms. Constant over a run.
   Eigen::Vector3d angular_rate_variance_rad2_s2 = Eigen::Vector3d::Zero();
   Eigen::Vector3d specific_force_variance_m2_s4 = Eigen::Vector3d::Zero();
   TruthSample truth;
