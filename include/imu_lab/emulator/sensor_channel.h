@@ -2,6 +2,11 @@
 // + G * specific_force (gyro) + sum of noise processes, then optional pulse quantization of the
 // increment. Rates in and out are interval averages. The quadratic term is applied to the
 // interval average of the input (exact for static and constant-rate inputs only).
+// Bandwidth (first-order anti-alias low-pass) is applied exactly to the white rate noise only
+// (white -> Gauss-Markov with the same PSD, still exact interval averages). It does not filter
+// the truth (a unity-gain low-pass leaves the static truth unchanged; moving scenarios will need
+// it), nor the Markov / flicker / random-walk terms (their power above a MEMS corner is
+// negligible), nor the white-angle and quantization terms (defined by the sample rate).
 #pragma once
 
 #include <Eigen/Core>
