@@ -1,0 +1,24 @@
+// Noise identification entry point: overlapping-Allan points in, identified noise model out.
+// Works on any vector of StabilityPoints (the batch reference or the streaming engine), as long
+// as they are overlapping Allan deviations of the rate with their EDF.
+#pragma once
+
+#include <vector>
+
+#include "imu_lab/allan/batch.h"
+#include "imu_lab/identify/fit_options.h"
+#include "imu_lab/identify/fit_result.h"
+
+namespace imu_lab {
+namespace identify {
+
+// tau0_s: sample interval; record_length_s: duration of the record the points came from.
+// Selects the model (model_selection.h), estimates sigmas from the Ceres covariance on the
+// octave points, bounds absent and unconstrained terms by profile likelihood, reads the curve
+// graphically and warns where the readings disagree with the fit.
+// Throws InputError for unusable points, std::invalid_argument for tau0_s or record_length_s <= 0.
+FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, double tau0_s,
+                          double record_length_s, const FitOptions& options = FitOptions());
+
+}  // namespace identify
+}  // namespace imu_lab

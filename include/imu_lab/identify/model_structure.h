@@ -1,0 +1,42 @@
+// Which terms a candidate model has and how its parameters are laid out for the optimiser:
+// every parameter positive, so the optimiser works on logarithms (ln amplitude, then ln shape when
+// the shape is free). A bias instability whose cutoff is fixed has no shape parameter.
+#pragma once
+
+#include <vector>
+
+#include "imu_lab/identify/noise_model.h"
+
+namespace imu_lab {
+namespace identify {
+
+struct TermSlot {
+  TermKind kind = TermKind::kWhiteRate;
+  bool shape_free = false;
+  double fixed_shape = 0.0;  // used when the kind has a shape and it is not free
+};
+
+struct ModelStructure {
+  std::vector<TermSlot> slots;
+  double white_rate_corner_hz = 0.0;
+};
+
+int slot_parameter_count(const TermSlot& slot);
+int parameter_count(const ModelStructure& structure);
+// Index of slot i's ln-amplitude in the parameter vector (its ln-shape, if free, follows).
+int parameter_offset(const ModelStructure& structure, int slot_index);
+
+NoiseModel model_from_log_parameters(const ModelStructure& structure,
+                                     const std::vector<double>& log_parameters);
+// Inverse of model_from_log_parameters for a model whose terms match the structure's slots.
+std::vector<double> log_parameters_from_model(const ModelStructure& structure,
+                                              const NoiseModel& model);
+
+// The structure and parameters without slot i.
+void remove_slot(ModelStructure& structure, std::vector<double>& log_parameters, int slot_index);
+
+// Reorders slots (and their parameters) as sort_terms() orders terms.
+void canonical_order(ModelStructure& structure, std::vector<double>& log_parameters);
+
+}  // namespace identify
+}  // namespace imu_lab

@@ -1,0 +1,36 @@
+// The YAML noise report: per triad and axis, each term with its status, value, sigma (and where
+// the sigma came from) and bound, in SI and in the field's units (unit always in the key); fit
+// quality; the graphical readings, labelled as such; warnings; the selection steps.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "imu_lab/identify/triad_fit.h"
+
+namespace imu_lab {
+namespace identify {
+
+struct ReportMetadata {
+  std::string source;  // bag or file the curves came from
+  double update_rate_hz = 0.0;  // measured
+};
+
+// Key of a parameter in the report: "<symbol>_<unit>" (e.g. "N_deg_per_sqrt_h"), with suffix
+// "_sigma" for its uncertainty and "_upper_<confidence %>" for its bound.
+std::string parameter_key(const std::string& symbol, const std::string& unit_key);
+std::string upper_bound_suffix(double confidence);  // 0.95 -> "_upper_95"
+
+std::string format_noise_report(const std::vector<TriadFit>& triads, const ReportMetadata& metadata);
+// Atomic (common/atomic_file.h).
+void write_noise_report(const std::string& path, const std::vector<TriadFit>& triads,
+                        const ReportMetadata& metadata);
+
+// Every numeric leaf of a report, keyed by its dotted path
+// ("triads.gyro.axes.gyro_x.terms.white_rate.N_rad_s_per_sqrt_hz"). Throws InputError if the
+// text is not a noise report.
+std::map<std::string, double> read_noise_report_values(const std::string& yaml_text);
+
+}  // namespace identify
+}  // namespace imu_lab

@@ -1,0 +1,28 @@
+// One-sided profile-likelihood upper bound of a term's amplitude: the amplitude at which the
+// best fit with that amplitude held fixed (all other parameters free) is worse than the best
+// fit by chi2_1(2 confidence - 1) / 2 in log-likelihood (e.g. 2.71 / 2 for 95 %).
+#pragma once
+
+#include <vector>
+
+#include "imu_lab/identify/fit_points.h"
+#include "imu_lab/identify/fit_problem.h"
+#include "imu_lab/identify/model_structure.h"
+
+namespace imu_lab {
+namespace identify {
+
+// slot_index's amplitude bound for the fitted (structure, log_parameters, best_cost). For an
+// absent term, first append its slot with a negligible amplitude (append_negligible_slot).
+double profile_upper_bound(const std::vector<FitPoint>& points, const ModelStructure& structure,
+                           const std::vector<double>& log_parameters, double best_cost,
+                           int slot_index, const DataSpan& span, const SolverSettings& settings,
+                           double confidence);
+
+// Appends `slot` (its shape fixed) with an amplitude far below its envelope, so the fit is
+// unchanged. Throws std::invalid_argument for a slot with a free shape.
+void append_negligible_slot(const std::vector<FitPoint>& points, const TermSlot& slot,
+                            ModelStructure* structure, std::vector<double>* log_parameters);
+
+}  // namespace identify
+}  // namespace imu_lab

@@ -1,0 +1,126 @@
+#include "imu_lab/identify/fit_warnings.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace imu_lab {
+namespace identify {
+
+namespace {
+
+std::string format_number(double value) {
+  std::ostringstream out;
+  out.precision(3);
+  out << value;
+  return out.str();
+}
+
+// The fitted value of a term, or its upper bound when it is not in the model.
+double value_or_bound(const TermEstimate* term) {
+  if (term == nullptr) return std::nan("");
+  return term->status == TermStatus::kPresent ? term->amplitude.value : term->amplitude.upper_bound;
+}
+
+// Names of the model terms that contribute most of the AVAR at tau, other than `excluded`.
+std::string dominant_terms_at(const FitResult& fit, double tau_s, TermKind excluded) {
+  const double total = model_avar(fit.model, tau_s);
+  std::string names;
+  for (size_t i = 0; i < fit.model.terms.size(); ++i) {
+    if (fit.model.terms[i].kind == excluded) continue;
+    const double share =
+        term_avar(fit.model.terms[i], tau_s, fit.model.white_rate_corner_hz) / total;
+    if (share < 0.2) continue;
+    if (!names.empty()) names += ", ";
+    names += fit.terms[i].name + " (" + format_number(100.0 * share) + " % of AVAR)";
+  }
+  return names.empty() ? "no single other term" : names;
+}
+
+void warn_white_rate(const FitResult& fit, std::vector<std::string>* warnings) {
+  const double reading = fit.graphical.white_rate_at_1s;
+  const TermEstimate* white = fit.find("white_rate");
+  const double fitted = value_or_bound(white);
+  if (std::isfinite(reading) && std::isfinite(fitted) &&
+      reading > kReadingDisagreementRatio * fitted) {
+    warnings->push_back("slope reading of N at tau = 1 s (" + format_number(reading) +
+                        ") is " + format_number(reading / fitted) + "x the fitted N" +
+                        (white->status == TermStatus::kPresent ? "" : " upper bound") + " (" +
+                        format_number(fitted) + "): the curve near 1 s is carried by " +
+                        dominant_terms_at(fit, 1.0, TermKind::kWhiteRate) +
+                        " (seed 003 Figs. 6.9-6.12: a Markov flank posing as white noise)");
+  }
+  const double ray_bound = fit.graphical.white_rate_upper_bound;
+  if (white != nullptr && white->status == TermStatus::kPresent && std::isfinite(ray_bound) &&
+      fit.model.white_rate_corner_hz <= 0.0 && white->amplitude.value > 1.05 * ray_bound) {
+    warnings->push_back("the slope -1/2 ray through the leftmost point (" +
+                        format_number(ray_bound) + ") lies below the fitted N (" +
+                        format_number(white->amplitude.value) +
+                        "): the leftmost points are pulled down (anti-alias low-pass filter?), so "
+                        "the graphical bound is not a bound; set white_rate_corner_hz if known");
+  }
+  for (size_t i = 0; i < fit.model.terms.size(); ++i) {
+    const Term& term = fit.model.terms[i];
+    if (term.kind == TermKind::kMarkov && term.shape < 2.0 * fit.points.front().tau_s &&
+        fit.model.white_rate_corner_hz <= 0.0) {
+      warnings->push_back(fit.terms[i].name + " has T_c = " + format_number(term.shape) +
+                          " s, below twice the shortest tau: it behaves like low-passed white "
+                          "noise of density q_c T_c = " + format_number(term.amplitude) +
+                          " (an anti-alias filter pulling the leftmost points down?)");
+    }
+  }
+}
+
+void warn_bias_instability(const FitResult& fit, std::vector<std::string>* warnings) {
+  const double reading = fit.graphical.bias_instability_from_minimum;
+  const TermEstimate* bias = fit.find("bias_instability");
+  const double fitted = value_or_bound(bias);
+  if (!std::isfinite(reading) || !std::isfinite(fitted)) return;
+  if (reading > kReadingDisagreementRatio * fitted) {
+    warnings->push_back(
+        "flat-tangent reading of B (minimum / 0.664 = " + format_number(reading) + " at tau = " +
+        format_number(fit.graphical.tau_at_minimum_s) + " s) over-states the fitted B" +
+        (bias->status == TermStatus::kPresent ? "" : " upper bound") + " (" +
+        format_number(fitted) + ") " + format_number(reading / fitted) +
+        "x: at the minimum the AVAR is mostly " +
+        dominant_terms_at(fit, fit.graphical.tau_at_minimum_s, TermKind::kBiasInstability));
+  }
+}
+
+void warn_random_walk(const FitResult& fit, std::vector<std::string>* warnings) {
+  const double reading = fit.graphical.random_walk_at_3s;
+  const double fitted = value_or_bound(fit.find("random_walk"));
+  if (std::isfinite(reading) && std::isfinite(fitted) &&
+      reading > kReadingDisagreementRatio * fitted) {
+    warnings->push_back("slope reading of K at tau = 3 s (" + format_number(reading) + ") is " +
+                        format_number(reading / fitted) +
+                        "x the fitted K: the curve at 3 s is carried by " +
+                        dominant_terms_at(fit, 3.0, TermKind::kRandomWalk));
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> fit_warnings(const FitResult& fit) {
+  std::vector<std::string> warnings;
+  warn_white_rate(fit, &warnings);
+  warn_bias_instability(fit, &warnings);
+  warn_random_walk(fit, &warnings);
+  if (fit.quality.p_value < 0.01) {
+    warnings.push_back("the model does not describe the curve (deviance " +
+                       format_number(fit.quality.deviance) + " on " +
+                       std::to_string(fit.quality.degrees_of_freedom) + " dof, p = " +
+                       format_number(fit.quality.p_value) +
+                       "): a term outside the model, or a non-stationary record");
+  }
+  for (const TermEstimate& term : fit.terms) {
+    if (term.status == TermStatus::kUnconstrained) {
+      warnings.push_back(term.name + " is in the model but the data do not constrain it: report "
+                         "its upper bound " + format_number(term.amplitude.upper_bound) +
+                         ", not its value");
+    }
+  }
+  return warnings;
+}
+
+}  // namespace identify
+}  // namespace imu_lab

@@ -1,0 +1,94 @@
+#include "imu_lab/identify/kalibr_yaml.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "imu_lab/common/atomic_file.h"
+
+namespace imu_lab {
+namespace identify {
+
+namespace {
+
+void write_entry(std::ostringstream& out, const std::string& key, double value,
+                 const std::string& comment) {
+  out << key << ": " << value << "  # " << comment << "\n";
+}
+
+void write_pair(std::ostringstream& out, const std::string& sensor, const std::string& rate_unit,
+                const KalibrValue& density, const KalibrValue& walk, double rate_hz) {
+  const auto flag = [](const KalibrValue& v) {
+    return v.is_upper_bound ? " UPPER BOUND: the fit could not constrain it" : "";
+  };
+  write_entry(out, sensor + "_noise_density", density.value,
+              "[" + rate_unit + "/sqrt(Hz)] continuous, axis " + std::to_string(density.axis) +
+                  flag(density));
+  write_entry(out, sensor + "_random_walk", walk.value,
+              "[" + rate_unit + "/s/sqrt(Hz)] continuous, axis " + std::to_string(walk.axis) +
+                  flag(walk));
+  write_entry(out, sensor + "_noise_density_discrete", density.value * std::sqrt(rate_hz),
+              "[" + rate_unit + "] per sample = density * sqrt(update_rate)");
+  write_entry(out, sensor + "_random_walk_discrete", walk.value / std::sqrt(rate_hz),
+              "[" + rate_unit + "] per sample = random_walk / sqrt(update_rate)");
+  out << sensor << "_noise_density_is_upper_bound: " << (density.is_upper_bound ? "true" : "false")
+      << "\n";
+  out << sensor << "_random_walk_is_upper_bound: " << (walk.is_upper_bound ? "true" : "false")
+      << "\n";
+}
+
+}  // namespace
+
+KalibrValue kalibr_value(const TriadFit& triad, TermKind kind) {
+  KalibrValue result;
+  result.value = -1.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const TermEstimate* term = triad.axes[axis].find(term_kind_name(kind));
+    if (term == nullptr) continue;
+    const bool bound = term->status != TermStatus::kPresent;
+    const double value = bound ? term->amplitude.upper_bound : term->amplitude.value;
+    if (std::isfinite(value) && value > result.value) {
+      result.value = value;
+      result.is_upper_bound = bound;
+      result.axis = axis;
+    }
+  }
+  if (result.value < 0.0) {  // the term was not a candidate: nothing known, say so
+    result.value = 0.0;
+    result.is_upper_bound = true;
+  }
+  return result;
+}
+
+KalibrImuNoise kalibr_noise(const TriadFit& gyro, const TriadFit& accelerometer,
+                            double update_rate_hz, const std::string& rostopic) {
+  KalibrImuNoise noise;
+  noise.gyroscope_noise_density = kalibr_value(gyro, TermKind::kWhiteRate);
+  noise.gyroscope_random_walk = kalibr_value(gyro, TermKind::kRandomWalk);
+  noise.accelerometer_noise_density = kalibr_value(accelerometer, TermKind::kWhiteRate);
+  noise.accelerometer_random_walk = kalibr_value(accelerometer, TermKind::kRandomWalk);
+  noise.update_rate_hz = update_rate_hz;
+  noise.rostopic = rostopic;
+  return noise;
+}
+
+std::string format_kalibr_imu_yaml(const KalibrImuNoise& noise) {
+  std::ostringstream out;
+  out.precision(17);
+  out << "# IMU noise model for Kalibr, identified by imu_lab (Allan-variance fit).\n"
+         "# Continuous-time densities (Kalibr's convention); *_discrete are the per-sample values\n"
+         "# at update_rate. One value per sensor: the largest over its axes.\n";
+  write_pair(out, "accelerometer", "m/s^2", noise.accelerometer_noise_density,
+             noise.accelerometer_random_walk, noise.update_rate_hz);
+  write_pair(out, "gyroscope", "rad/s", noise.gyroscope_noise_density,
+             noise.gyroscope_random_walk, noise.update_rate_hz);
+  out << "rostopic: " << noise.rostopic << "\n";
+  out << "update_rate: " << noise.update_rate_hz << "  # [Hz] measured\n";
+  return out.str();
+}
+
+void write_kalibr_imu_yaml(const std::string& path, const KalibrImuNoise& noise) {
+  write_file_atomically(path, format_kalibr_imu_yaml(noise));
+}
+
+}  // namespace identify
+}  // namespace imu_lab

@@ -1,0 +1,232 @@
+#include "imu_lab/identify/model_selection.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "imu_lab/identify/avar_likelihood.h"
+#include "imu_lab/identify/start_values.h"
+
+namespace imu_lab {
+namespace identify {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// The same parameters with every amplitude multiplied by `factor` (shapes untouched).
+std::vector<double> scaled_amplitudes(const ModelStructure& structure,
+                                      std::vector<double> log_parameters, double factor) {
+  for (size_t i = 0; i < structure.slots.size(); ++i) {
+    log_parameters[parameter_offset(structure, static_cast<int>(i))] += std::log(factor);
+  }
+  return log_parameters;
+}
+
+SolveOutcome best_of(const std::vector<FitPoint>& points, const ModelStructure& structure,
+                     std::vector<std::vector<double>> starts, int max_solves,
+                     const DataSpan& span, const SolverSettings& settings) {
+  std::vector<std::pair<double, size_t>> ranked;
+  for (size_t i = 0; i < starts.size(); ++i) {
+    ranked.push_back({model_cost(points, structure, starts[i], settings), i});
+  }
+  std::sort(ranked.begin(), ranked.end());
+  SolveOutcome best;
+  best.cost = kInfinity;
+  const size_t solves = std::min(ranked.size(), static_cast<size_t>(max_solves));
+  for (size_t r = 0; r < solves; ++r) {
+    if (!std::isfinite(ranked[r].first)) continue;
+    SolveOutcome outcome =
+        solve_model(points, structure, starts[ranked[r].second], span, settings);
+    if (outcome.usable && outcome.cost < best.cost) best = outcome;
+  }
+  return best;
+}
+
+SolveOutcome fit_with_new_slot(const std::vector<FitPoint>& points, const ModelStructure& base,
+                               const std::vector<double>& base_parameters, const TermSlot& slot,
+                               const DataSpan& span, const FitOptions& options,
+                               const SolverSettings& settings, ModelStructure* extended) {
+  *extended = base;
+  extended->slots.push_back(slot);
+  std::vector<std::vector<double>> starts;
+  const auto slot_starts = new_slot_starts(slot, points, span, base.white_rate_corner_hz,
+                                           options.envelope_fractions);
+  for (const auto& slot_start : slot_starts) {
+    for (double base_factor : {1.0, 0.5}) {
+      if (base.slots.empty() && base_factor != 1.0) continue;
+      std::vector<double> start = scaled_amplitudes(base, base_parameters, base_factor);
+      start.insert(start.end(), slot_start.begin(), slot_start.end());
+      starts.push_back(start);
+    }
+  }
+  return best_of(points, *extended, starts, options.solves_per_candidate, span, settings);
+}
+
+// A term driven to a negligible amplitude has no gradient left and stays there (a local
+// optimum the next step inherits). Restart each term in turn from fractions of its envelope.
+SolveOutcome polish(const std::vector<FitPoint>& points, const ModelStructure& structure,
+                    const SolveOutcome& fitted, const DataSpan& span,
+                    const SolverSettings& settings) {
+  SolveOutcome best = fitted;
+  const NoiseModel model = model_from_log_parameters(structure, fitted.log_parameters);
+  std::vector<std::vector<double>> starts;
+  for (size_t i = 0; i < structure.slots.size(); ++i) {
+    const double envelope = envelope_amplitude(model.terms[i].kind, model.terms[i].shape, points,
+                                               structure.white_rate_corner_hz);
+    if (!(envelope > 0.0) || !std::isfinite(envelope)) continue;
+    for (double fraction : {0.3, 0.1}) {
+      std::vector<double> start = fitted.log_parameters;
+      start[parameter_offset(structure, static_cast<int>(i))] = std::log(fraction * envelope);
+      starts.push_back(start);
+    }
+  }
+  const SolveOutcome restarted =
+      best_of(points, structure, starts, static_cast<int>(starts.size()), span, settings);
+  if (restarted.usable && restarted.cost < best.cost - 1e-9) best = restarted;
+  return best;
+}
+
+bool is_extra_term(TermKind kind) {
+  return kind == TermKind::kMarkov || kind == TermKind::kSinusoid ||
+         kind == TermKind::kZeroDcFamily;
+}
+
+}  // namespace
+
+std::vector<TermSlot> candidate_slots(const FitOptions& options, const DataSpan& span) {
+  std::vector<TermSlot> slots;
+  const auto add = [&](bool allowed, TermKind kind) {
+    if (allowed) slots.push_back({kind, has_shape(kind), 0.0});
+  };
+  add(options.allow_white_angle, TermKind::kWhiteAngle);
+  add(options.allow_white_rate, TermKind::kWhiteRate);
+  if (options.allow_bias_instability) {
+    TermSlot bias{TermKind::kBiasInstability, options.bias_cutoff == BiasCutoff::kFitted, 0.0};
+    bias.fixed_shape = options.bias_cutoff == BiasCutoff::kGiven ? options.bias_cutoff_hz
+                                                                 : 1.0 / (2.0 * span.tau0_s);
+    slots.push_back(bias);
+  }
+  add(options.allow_random_walk, TermKind::kRandomWalk);
+  add(options.allow_rate_ramp, TermKind::kRateRamp);
+  for (int i = 0; i < options.max_markov_terms; ++i) add(true, TermKind::kMarkov);
+  add(options.allow_sinusoid, TermKind::kSinusoid);
+  add(options.allow_zero_dc_family, TermKind::kZeroDcFamily);
+  return slots;
+}
+
+SolverSettings solver_settings(const FitOptions& options) {
+  SolverSettings settings;
+  settings.robust_loss_scale = options.robust_loss_scale;
+  return settings;
+}
+
+double lr_threshold(const FitOptions& options, int parameters) {
+  return chi_squared_quantile(1.0 - options.significance, parameters);
+}
+
+SolveOutcome refit_structure(const std::vector<FitPoint>& points, const ModelStructure& structure,
+                             const std::vector<double>& start, const DataSpan& span,
+                             const SolverSettings& settings) {
+  std::vector<std::vector<double>> starts;
+  for (double factor : {1.0, 0.7, 1.4}) starts.push_back(scaled_amplitudes(structure, start, factor));
+  return best_of(points, structure, starts, static_cast<int>(starts.size()), span, settings);
+}
+
+SelectedModel select_model(const std::vector<FitPoint>& points, const DataSpan& span,
+                           const FitOptions& options) {
+  const SolverSettings settings = solver_settings(options);
+  std::vector<TermSlot> remaining = candidate_slots(options, span);
+  SelectedModel current;
+  current.structure.white_rate_corner_hz = options.white_rate_corner_hz;
+  current.cost = kInfinity;
+
+  // Forward, in two tiers: the standards' power-law terms first (the hypothesis a reader
+  // expects), then Markov, sinusoid and zero-DC terms when the data still ask for them. A
+  // flexible two-parameter term admitted first would otherwise absorb a mixture of simple terms
+  // (a long Markov mimicking B + K) and block them.
+  for (bool extras : {false, true}) {
+    while (true) {
+      SolveOutcome best;
+      best.cost = kInfinity;
+      ModelStructure best_structure;
+      size_t best_index = 0;
+      for (size_t c = 0; c < remaining.size(); ++c) {
+        if (is_extra_term(remaining[c].kind) && !extras) continue;
+        ModelStructure extended;
+        const SolveOutcome outcome =
+            fit_with_new_slot(points, current.structure, current.log_parameters, remaining[c],
+                              span, options, settings, &extended);
+        if (outcome.usable && outcome.cost < best.cost) {
+          best = outcome;
+          best_structure = extended;
+          best_index = c;
+        }
+      }
+      if (!std::isfinite(best.cost)) break;
+      best = polish(points, best_structure, best, span, settings);
+      SelectionStep step{current.structure.slots.empty() ? "start" : "add",
+                         term_kind_name(remaining[best_index].kind), 0.0, 0.0};
+      if (!current.structure.slots.empty()) {
+        step.lr_statistic = 2.0 * (current.cost - best.cost);
+        step.threshold = lr_threshold(options, slot_parameter_count(remaining[best_index]));
+        if (!(step.lr_statistic > step.threshold)) break;
+      }
+      current.steps.push_back(step);
+      current.structure = best_structure;
+      current.log_parameters = best.log_parameters;
+      current.cost = best.cost;
+      remaining.erase(remaining.begin() + best_index);
+    }
+  }
+
+  // Backward: drop the least significant term while its removal is not significant.
+  while (true) {
+    const int slot_count = static_cast<int>(current.structure.slots.size());
+    current.removal_lr_statistics.assign(slot_count, kInfinity);
+    if (slot_count <= 1) break;
+    double worst_margin = kInfinity;
+    int worst_slot = -1;
+    SolveOutcome worst_outcome;
+    ModelStructure worst_structure;
+    for (int i = 0; i < slot_count; ++i) {
+      ModelStructure reduced = current.structure;
+      std::vector<double> reduced_parameters = current.log_parameters;
+      remove_slot(reduced, reduced_parameters, i);
+      const SolveOutcome outcome = refit_structure(points, reduced, reduced_parameters, span, settings);
+      if (!outcome.usable) continue;
+      const double lr = 2.0 * (outcome.cost - current.cost);
+      current.removal_lr_statistics[i] = lr;
+      const double margin = lr - lr_threshold(options, slot_parameter_count(current.structure.slots[i]));
+      if (margin < worst_margin) {
+        worst_margin = margin;
+        worst_slot = i;
+        worst_outcome = outcome;
+        worst_structure = reduced;
+      }
+    }
+    if (worst_slot < 0 || worst_margin >= 0.0) break;
+    const TermSlot removed = current.structure.slots[worst_slot];
+    current.steps.push_back({"remove", term_kind_name(removed.kind),
+                             current.removal_lr_statistics[worst_slot],
+                             lr_threshold(options, slot_parameter_count(removed))});
+    current.structure = worst_structure;
+    current.log_parameters = worst_outcome.log_parameters;
+    current.cost = worst_outcome.cost;
+  }
+
+  // Canonical order, carrying the removal statistics along.
+  NoiseModel tagged = model_from_log_parameters(current.structure, current.log_parameters);
+  std::vector<std::pair<Term, double>> pairs;
+  for (size_t i = 0; i < tagged.terms.size(); ++i) {
+    pairs.push_back({tagged.terms[i], current.removal_lr_statistics[i]});
+  }
+  std::stable_sort(pairs.begin(), pairs.end(),
+                   [](const auto& a, const auto& b) { return term_order_less(a.first, b.first); });
+  canonical_order(current.structure, current.log_parameters);
+  for (size_t i = 0; i < pairs.size(); ++i) current.removal_lr_statistics[i] = pairs[i].second;
+  return current;
+}
+
+}  // namespace identify
+}  // namespace imu_lab

@@ -1,0 +1,184 @@
+#include "imu_lab/identify/noise_report.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <functional>
+#include <sstream>
+
+#include "imu_lab/common/atomic_file.h"
+#include "imu_lab/common/config_error.h"
+
+namespace imu_lab {
+namespace identify {
+
+namespace {
+
+constexpr const char* kFormatName = "imu_lab_noise_report";
+
+void emit_number(YAML::Emitter& out, const std::string& key, double value) {
+  if (!std::isfinite(value)) return;  // absent quantities are left out, never written as NaN
+  out << YAML::Key << key << YAML::Value << value;
+}
+
+// value, sigma and bound of one parameter in every unit it is reported in.
+void emit_parameter(YAML::Emitter& out, const std::string& symbol,
+                    const std::vector<UnitScale>& units, const ParameterEstimate& estimate,
+                    double confidence) {
+  for (const UnitScale& unit : units) {
+    const std::string key = parameter_key(symbol, unit.key);
+    emit_number(out, key, estimate.value * unit.per_si);
+    emit_number(out, key + "_sigma", estimate.sigma * unit.per_si);
+    emit_number(out, key + upper_bound_suffix(confidence), estimate.upper_bound * unit.per_si);
+  }
+}
+
+void emit_term(YAML::Emitter& out, SensorKind sensor, const TermEstimate& term,
+               double confidence) {
+  out << YAML::Key << term.name << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "status" << YAML::Value << term_status_name(term.status);
+  out << YAML::Key << "sigma_source" << YAML::Value << sigma_source_name(term.sigma_source);
+  emit_number(out, "removal_lr_statistic", term.removal_lr_statistic);
+  emit_parameter(out, amplitude_symbol(term.kind), amplitude_units(sensor, term.kind),
+                 term.amplitude, confidence);
+  if (has_shape(term.kind)) {
+    out << YAML::Key << "shape_fitted" << YAML::Value << term.shape_fitted;
+    emit_parameter(out, shape_symbol(term.kind), shape_units(term.kind), term.shape, confidence);
+  }
+  out << YAML::EndMap;
+}
+
+void emit_graphical(YAML::Emitter& out, SensorKind sensor, const GraphicalReadings& readings) {
+  const std::string rate = rate_unit_key(sensor);
+  const auto n_units = amplitude_units(sensor, TermKind::kWhiteRate);
+  const auto b_units = amplitude_units(sensor, TermKind::kBiasInstability);
+  const auto k_units = amplitude_units(sensor, TermKind::kRandomWalk);
+  out << YAML::Key << "graphical_readings" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "note" << YAML::Value
+      << "IEEE 952 graphical readings, correct for a single term only; the fit is the estimate";
+  for (const UnitScale& unit : n_units) {
+    emit_number(out, parameter_key("N_upper_bound_slope_ray", unit.key),
+                readings.white_rate_upper_bound * unit.per_si);
+    emit_number(out, parameter_key("N_slope_reading_at_1s", unit.key),
+                readings.white_rate_at_1s * unit.per_si);
+  }
+  for (const UnitScale& unit : k_units) {
+    emit_number(out, parameter_key("K_slope_reading_at_3s", unit.key),
+                readings.random_walk_at_3s * unit.per_si);
+  }
+  for (const UnitScale& unit : b_units) {
+    emit_number(out, parameter_key("B_flat_tangent_at_minimum", unit.key),
+                readings.bias_instability_from_minimum * unit.per_si);
+  }
+  emit_number(out, "minimum_deviation_" + rate, readings.minimum_deviation);
+  emit_number(out, "tau_at_minimum_s", readings.tau_at_minimum_s);
+  out << YAML::EndMap;
+}
+
+void emit_axis(YAML::Emitter& out, SensorKind sensor, const std::string& name,
+               const FitResult& fit) {
+  out << YAML::Key << name << YAML::Value << YAML::BeginMap;
+  emit_number(out, "tau0_s", fit.tau0_s);
+  emit_number(out, "record_length_s", fit.record_length_s);
+  out << YAML::Key << "fit_quality" << YAML::Value << YAML::BeginMap;
+  emit_number(out, "deviance", fit.quality.deviance);
+  out << YAML::Key << "points" << YAML::Value << fit.quality.points;
+  out << YAML::Key << "parameters" << YAML::Value << fit.quality.parameters;
+  out << YAML::Key << "degrees_of_freedom" << YAML::Value << fit.quality.degrees_of_freedom;
+  emit_number(out, "deviance_per_dof", fit.quality.deviance_per_dof);
+  emit_number(out, "p_value", fit.quality.p_value);
+  out << YAML::EndMap;
+  out << YAML::Key << "terms" << YAML::Value << YAML::BeginMap;
+  for (const TermEstimate& term : fit.terms) {
+    emit_term(out, sensor, term, fit.options.upper_bound_confidence);
+  }
+  out << YAML::EndMap;
+  emit_graphical(out, sensor, fit.graphical);
+  out << YAML::Key << "warnings" << YAML::Value << YAML::BeginSeq;
+  for (const std::string& warning : fit.warnings) out << warning;
+  out << YAML::EndSeq;
+  out << YAML::Key << "selection" << YAML::Value << YAML::BeginSeq;
+  for (const SelectionStep& step : fit.selection_steps) {
+    std::ostringstream line;
+    line << step.action << " " << step.term;
+    if (step.action != "start") {
+      line << " (2 delta log L = " << step.lr_statistic << ", threshold " << step.threshold << ")";
+    }
+    out << line.str();
+  }
+  out << YAML::EndSeq;
+  out << YAML::EndMap;
+}
+
+}  // namespace
+
+std::string parameter_key(const std::string& symbol, const std::string& unit_key) {
+  return symbol + "_" + unit_key;
+}
+
+std::string upper_bound_suffix(double confidence) {
+  return "_upper_" + std::to_string(static_cast<int>(std::lround(100.0 * confidence)));
+}
+
+std::string format_noise_report(const std::vector<TriadFit>& triads,
+                                const ReportMetadata& metadata) {
+  YAML::Emitter out;
+  out.SetDoublePrecision(17);
+  out << YAML::Comment(
+      "imu_lab noise identification. SI and field units, the unit in every key. sigma_source "
+      "says where each sigma came from: ceres_covariance (fast, octave points, optimistic where "
+      "random walk dominates) or bootstrap (refits of records simulated from the model).");
+  out << YAML::BeginMap;
+  out << YAML::Key << "format" << YAML::Value << kFormatName;
+  out << YAML::Key << "version" << YAML::Value << 1;
+  out << YAML::Key << "source" << YAML::Value << metadata.source;
+  emit_number(out, "update_rate_hz", metadata.update_rate_hz);
+  out << YAML::Key << "triads" << YAML::Value << YAML::BeginMap;
+  for (const TriadFit& triad : triads) {
+    out << YAML::Key << sensor_prefix(triad.sensor) << YAML::Value << YAML::BeginMap;
+    out << YAML::Key << "worst_axis" << YAML::Value << axis_name(triad.sensor, triad.worst_axis);
+    out << YAML::Key << "worst_axis_reason" << YAML::Value << triad.worst_axis_reason;
+    out << YAML::Key << "axes" << YAML::Value << YAML::BeginMap;
+    for (int axis = 0; axis < 3; ++axis) {
+      emit_axis(out, triad.sensor, axis_name(triad.sensor, axis), triad.axes[axis]);
+    }
+    out << YAML::EndMap << YAML::EndMap;
+  }
+  out << YAML::EndMap << YAML::EndMap;
+  return std::string(out.c_str()) + "\n";
+}
+
+void write_noise_report(const std::string& path, const std::vector<TriadFit>& triads,
+                        const ReportMetadata& metadata) {
+  write_file_atomically(path, format_noise_report(triads, metadata));
+}
+
+std::map<std::string, double> read_noise_report_values(const std::string& yaml_text) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::Exception& error) {
+    throw InputError(std::string("noise report: not YAML: ") + error.what());
+  }
+  if (!root.IsMap() || !root["format"] || root["format"].as<std::string>() != kFormatName) {
+    throw InputError(std::string("noise report: missing 'format: ") + kFormatName + "'");
+  }
+  std::map<std::string, double> values;
+  const std::function<void(const YAML::Node&, const std::string&)> walk =
+      [&](const YAML::Node& node, const std::string& path) {
+        if (node.IsMap()) {
+          for (const auto& entry : node) {
+            const std::string key = entry.first.as<std::string>();
+            walk(entry.second, path.empty() ? key : path + "." + key);
+          }
+        } else if (node.IsScalar()) {
+          double value = 0.0;
+          if (YAML::convert<double>::decode(node, value)) values[path] = value;
+        }
+      };
+  walk(root, "");
+  return values;
+}
+
+}  // namespace identify
+}  // namespace imu_lab
