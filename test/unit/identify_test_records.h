@@ -1,0 +1,42 @@
+// Records for the identification tests, made by the emulator (the project's oracle): a
+// TriadChannel built from a TriadErrorModel carrying the noise processes on axis x only.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "imu_lab/allan/batch.h"
+#include "imu_lab/emulator/sensor_channel.h"
+#include "imu_lab/emulator/sensor_profile.h"
+#include "imu_lab/identify/fit_points.h"
+
+namespace imu_lab {
+namespace identify_test {
+
+// Rate samples (interval averages) of axis x of a gyro triad at rest.
+inline std::vector<double> emulate_axis_rates(const std::vector<noise::ProcessParameters>& noise,
+                                              double rate_hz, double duration_s,
+                                              std::uint64_t seed, double bandwidth_hz = 0.0) {
+  emulator::TriadErrorModel model;
+  model.noise_per_axis[0] = noise;
+  model.bandwidth_hz = bandwidth_hz;
+  emulator::TriadChannel channel(model, "gyro", seed);
+  const double interval_s = 1.0 / rate_hz;
+  const long long count = static_cast<long long>(duration_s * rate_hz);
+  std::vector<double> rates(count);
+  for (long long k = 0; k < count; ++k) {
+    rates[k] = channel.measure(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                               k * interval_s, interval_s)[0];
+  }
+  return rates;
+}
+
+// Overlapping Allan deviation of the rates at octave averaging factors.
+inline std::vector<allan::StabilityPoint> octave_oadev(const std::vector<double>& rates,
+                                                       double rate_hz) {
+  return allan::evaluate_frequency(allan::Statistic::kOverlappingAllan, rates, 1.0 / rate_hz,
+                                   identify::octave_averaging_factors(rates.size()));
+}
+
+}  // namespace identify_test
+}  // namespace imu_lab
