@@ -88,12 +88,14 @@ void warn_bias_instability(const FitResult& fit, std::vector<std::string>* warni
 
 void warn_random_walk(const FitResult& fit, std::vector<std::string>* warnings) {
   const double reading = fit.graphical.random_walk_at_3s;
-  const double fitted = value_or_bound(fit.find("random_walk"));
+  const TermEstimate* walk = fit.find("random_walk");
+  const double fitted = value_or_bound(walk);
   if (std::isfinite(reading) && std::isfinite(fitted) &&
       reading > kReadingDisagreementRatio * fitted) {
     warnings->push_back("slope reading of K at tau = 3 s (" + format_number(reading) + ") is " +
-                        format_number(reading / fitted) +
-                        "x the fitted K: the curve at 3 s is carried by " +
+                        format_number(reading / fitted) + "x the fitted K" +
+                        (walk->status == TermStatus::kPresent ? "" : " upper bound") +
+                        ": the curve at 3 s is carried by " +
                         dominant_terms_at(fit, 3.0, TermKind::kRandomWalk));
   }
 }
