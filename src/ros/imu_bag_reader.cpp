@@ -1,5 +1,7 @@
 #include "imu_lab/ros/imu_bag_reader.h"
 
+#include <imu_lab/ImuIncrement.h>
+#include <imu_lab/ImuTruth.h>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
 #include <sensor_msgs/Imu.h>
@@ -32,6 +34,37 @@ std::string describe(const std::vector<TopicInfo>& topics) {
   return text.empty() ? " (none)" : text;
 }
 
+Eigen::Vector3d to_eigen(const geometry_msgs::Vector3& vector) { return {vector.x, vector.y, vector.z}; }
+
+// Streams one topic's messages of type Message in bag order; every reader reports a wrong type,
+// a truncated or a corrupt bag the same way.
+template <class Message>
+std::size_t for_each_message(const std::string& bag_path, const std::string& topic, const std::string& datatype,
+                             const std::function<void(const Message&)>& on_message) {
+  rosbag::Bag bag;
+  open_for_reading(bag, bag_path);
+  std::size_t count = 0;
+  try {
+    rosbag::View view(bag, rosbag::TopicQuery(topic));
+    for (const rosbag::MessageInstance& instance : view) {
+      const typename Message::ConstPtr message = instance.template instantiate<Message>();
+      if (!message) {
+        throw InputError("bag " + bag_path + ": topic " + topic + " carries " + instance.getDataType() + ", not " +
+                         datatype);
+      }
+      on_message(*message);
+      ++count;
+    }
+  } catch (const rosbag::BagException& error) {
+    throw InputError("bag " + bag_path + " is damaged after " + std::to_string(count) + " messages of " + topic +
+                     ": " + error.what());
+  } catch (const ros::Exception& error) {
+    throw InputError("bag " + bag_path + " is damaged after " + std::to_string(count) + " messages of " + topic +
+                     ": " + error.what());
+  }
+  return count;
+}
+
 }  // namespace
 
 std::vector<TopicInfo> list_topics(const std::string& bag_path) {
@@ -58,13 +91,17 @@ std::vector<TopicInfo> list_topics(const std::string& bag_path) {
 }
 
 std::string choose_imu_topic(const std::string& bag_path, const std::string& requested) {
+  return choose_topic(bag_path, requested, kImuType);
+}
+
+std::string choose_topic(const std::string& bag_path, const std::string& requested, const std::string& datatype) {
   const std::vector<TopicInfo> topics = list_topics(bag_path);
   if (!requested.empty()) {
     for (const auto& topic : topics) {
       if (topic.name != requested) continue;
-      if (topic.datatype != kImuType) {
+      if (topic.datatype != datatype) {
         throw InputError("bag " + bag_path + ": topic " + requested + " carries " + topic.datatype +
-                         ", not " + kImuType + "; topics in the bag:" + describe(topics));
+                         ", not " + datatype + "; topics in the bag:" + describe(topics));
       }
       return requested;
     }
@@ -72,46 +109,56 @@ std::string choose_imu_topic(const std::string& bag_path, const std::string& req
   }
   std::vector<TopicInfo> candidates;
   for (const auto& topic : topics) {
-    if (topic.datatype == kImuType) candidates.push_back(topic);
+    if (topic.datatype == datatype) candidates.push_back(topic);
   }
   if (candidates.size() == 1) return candidates.front().name;
   if (candidates.empty()) {
-    throw InputError("bag " + bag_path + " has no " + kImuType + " topic; topics in the bag:" + describe(topics));
+    throw InputError("bag " + bag_path + " has no " + datatype + " topic; topics in the bag:" + describe(topics));
   }
-  throw InputError("bag " + bag_path + " has several " + kImuType + " topics; choose one with --topic:" +
+  throw InputError("bag " + bag_path + " has several " + datatype + " topics; choose one with --topic:" +
                    describe(candidates));
 }
 
 std::size_t for_each_imu(const std::string& bag_path, const std::string& topic,
                          const std::function<void(const ImuRecord&)>& on_record) {
-  rosbag::Bag bag;
-  open_for_reading(bag, bag_path);
-  std::size_t count = 0;
-  try {
-    rosbag::View view(bag, rosbag::TopicQuery(topic));
-    for (const rosbag::MessageInstance& instance : view) {
-      const sensor_msgs::Imu::ConstPtr message = instance.instantiate<sensor_msgs::Imu>();
-      if (!message) {
-        throw InputError("bag " + bag_path + ": topic " + topic + " carries " + instance.getDataType() +
-                         ", not " + kImuType);
-      }
-      ImuRecord record;
-      record.stamp_s = message->header.stamp.toSec();
-      record.angular_rate_rad_s << message->angular_velocity.x, message->angular_velocity.y,
-          message->angular_velocity.z;
-      record.specific_force_m_s2 << message->linear_acceleration.x, message->linear_acceleration.y,
-          message->linear_acceleration.z;
-      on_record(record);
-      ++count;
-    }
-  } catch (const rosbag::BagException& error) {
-    throw InputError("bag " + bag_path + " is damaged after " + std::to_string(count) + " messages of " +
-                     topic + ": " + error.what());
-  } catch (const ros::Exception& error) {
-    throw InputError("bag " + bag_path + " is damaged after " + std::to_string(count) + " messages of " +
-                     topic + ": " + error.what());
-  }
-  return count;
+  return for_each_message<sensor_msgs::Imu>(bag_path, topic, kImuType, [&](const sensor_msgs::Imu& message) {
+    ImuRecord record;
+    record.stamp_s = message.header.stamp.toSec();
+    record.stamp_ns = static_cast<std::int64_t>(message.header.stamp.toNSec());
+    record.angular_rate_rad_s = to_eigen(message.angular_velocity);
+    record.specific_force_m_s2 = to_eigen(message.linear_acceleration);
+    on_record(record);
+  });
+}
+
+std::size_t for_each_increment(const std::string& bag_path, const std::string& topic,
+                               const std::function<void(const IncrementRecord&)>& on_record) {
+  return for_each_message<imu_lab::ImuIncrement>(
+      bag_path, topic, "imu_lab/ImuIncrement", [&](const imu_lab::ImuIncrement& message) {
+        IncrementRecord record;
+        record.stamp_ns = static_cast<std::int64_t>(message.header.stamp.toNSec());
+        record.interval_s = message.interval_s;
+        record.delta_angle_rad = to_eigen(message.delta_angle_rad);
+        record.delta_velocity_m_s = to_eigen(message.delta_velocity_m_s);
+        on_record(record);
+      });
+}
+
+std::size_t for_each_truth(const std::string& bag_path, const std::string& topic,
+                           const std::function<void(const TruthRecord&)>& on_record) {
+  return for_each_message<imu_lab::ImuTruth>(bag_path, topic, "imu_lab/ImuTruth", [&](const imu_lab::ImuTruth& message) {
+    TruthRecord record;
+    record.stamp_ns = static_cast<std::int64_t>(message.header.stamp.toNSec());
+    record.q_body_to_enu = Eigen::Quaterniond(message.orientation.w, message.orientation.x, message.orientation.y,
+                                              message.orientation.z);
+    record.angular_rate_rad_s = to_eigen(message.angular_velocity_rad_s);
+    record.specific_force_m_s2 = to_eigen(message.specific_force_m_s2);
+    record.latitude_rad = message.latitude_rad;
+    record.longitude_rad = message.longitude_rad;
+    record.height_m = message.height_m;
+    record.velocity_enu_m_s = to_eigen(message.velocity_enu_m_s);
+    on_record(record);
+  });
 }
 
 }  // namespace ros_io

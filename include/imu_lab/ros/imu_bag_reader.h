@@ -4,8 +4,10 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -15,8 +17,29 @@ namespace ros_io {
 
 struct ImuRecord {
   double stamp_s = 0.0;  // header stamp, never the bag's receive time
+  std::int64_t stamp_ns = 0;  // the same, exact: differences of stamp_s near 1e9 s lose ~0.1 us
   Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();
   Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();
+};
+
+// imu_lab/ImuIncrement: the sensor's own integrals over interval_s, ending at the stamp.
+struct IncrementRecord {
+  std::int64_t stamp_ns = 0;
+  double interval_s = 0.0;
+  Eigen::Vector3d delta_angle_rad = Eigen::Vector3d::Zero();
+  Eigen::Vector3d delta_velocity_m_s = Eigen::Vector3d::Zero();
+};
+
+// imu_lab/ImuTruth: the emulator's ground truth at the stamp (frames as in nav/nav_state.h).
+struct TruthRecord {
+  std::int64_t stamp_ns = 0;
+  Eigen::Quaterniond q_body_to_enu = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();   // body axes, interval average
+  Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();  // body axes, interval average
+  double latitude_rad = 0.0;
+  double longitude_rad = 0.0;
+  double height_m = 0.0;
+  Eigen::Vector3d velocity_enu_m_s = Eigen::Vector3d::Zero();
 };
 
 struct TopicInfo {
@@ -31,11 +54,18 @@ std::vector<TopicInfo> list_topics(const std::string& bag_path);
 // The IMU topic to read: `requested` if given (checked to exist and to be sensor_msgs/Imu),
 // otherwise the only sensor_msgs/Imu topic; several candidates or none -> InputError listing them.
 std::string choose_imu_topic(const std::string& bag_path, const std::string& requested);
+// The same for any message type, e.g. "imu_lab/ImuIncrement".
+std::string choose_topic(const std::string& bag_path, const std::string& requested, const std::string& datatype);
 
 // Calls `on_record` for each message of `topic` in bag order. Returns the number of messages.
 // A bag that ends early (truncated, unindexed) or whose chunks are corrupt -> InputError.
 std::size_t for_each_imu(const std::string& bag_path, const std::string& topic,
                          const std::function<void(const ImuRecord&)>& on_record);
+// The same for imu_lab/ImuIncrement and imu_lab/ImuTruth topics.
+std::size_t for_each_increment(const std::string& bag_path, const std::string& topic,
+                               const std::function<void(const IncrementRecord&)>& on_record);
+std::size_t for_each_truth(const std::string& bag_path, const std::string& topic,
+                           const std::function<void(const TruthRecord&)>& on_record);
 
 }  // namespace ros_io
 }  // namespace imu_lab
