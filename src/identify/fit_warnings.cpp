@@ -49,14 +49,22 @@ void warn_white_rate(const FitResult& fit, std::vector<std::string>* warnings) {
                         dominant_terms_at(fit, 1.0, TermKind::kWhiteRate) +
                         " (seed 003 Figs. 6.9-6.12: a Markov flank posing as white noise)");
   }
-  const double ray_bound = fit.graphical.white_rate_upper_bound;
-  if (white != nullptr && white->status == TermStatus::kPresent && std::isfinite(ray_bound) &&
-      fit.model.white_rate_corner_hz <= 0.0 && white->amplitude.value > 1.05 * ray_bound) {
-    warnings->push_back("the slope -1/2 ray through the leftmost point (" +
-                        format_number(ray_bound) + ") lies below the fitted N (" +
-                        format_number(white->amplitude.value) +
-                        "): the leftmost points are pulled down (anti-alias low-pass filter?), so "
-                        "the graphical bound is not a bound; set white_rate_corner_hz if known");
+  // A low-pass filter shows as a leftmost point (with its large EDF) well below the fitted
+  // white noise alone; noisy long-tau points touching the ray are not evidence of it.
+  const FitPoint& leftmost = fit.points.front();
+  if (white != nullptr && white->status == TermStatus::kPresent &&
+      fit.model.white_rate_corner_hz <= 0.0) {
+    const double white_only_avar =
+        term_avar(Term{TermKind::kWhiteRate, white->amplitude.value, 0.0}, leftmost.tau_s);
+    const double tolerance = 3.0 * std::sqrt(2.0 / leftmost.edf);
+    if (leftmost.avar < white_only_avar * (1.0 - std::max(0.05, tolerance))) {
+      warnings->push_back(
+          "the leftmost point (tau = " + format_number(leftmost.tau_s) + " s) lies " +
+          format_number(100.0 * (1.0 - std::sqrt(leftmost.avar / white_only_avar))) +
+          " % below the fitted white noise alone: a low-pass (anti-alias) filter pulls it down, "
+          "so the slope -1/2 ray through it (" + format_number(fit.graphical.white_rate_upper_bound) +
+          ") is no upper bound of N; set white_rate_corner_hz if known");
+    }
   }
   for (size_t i = 0; i < fit.model.terms.size(); ++i) {
     const Term& term = fit.model.terms[i];

@@ -1,0 +1,167 @@
+// Outputs: the YAML report's numbers round-trip; kalibr_imu.yaml has Kalibr's keys and the
+// continuous/discrete conversions; the partial-curve CSV carries each term's curve.
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "imu_lab/common/config_error.h"
+#include "imu_lab/identify/kalibr_yaml.h"
+#include "imu_lab/identify/noise_report.h"
+#include "imu_lab/identify/partial_curves.h"
+#include "imu_lab/identify/triad_fit.h"
+
+namespace imu_lab {
+namespace identify {
+namespace {
+
+// An exact (noise-free) overlapping-Allan curve of `model` for a record of `length_s`, with
+// white-FM-like EDFs.
+std::vector<allan::StabilityPoint> exact_curve(const NoiseModel& model, double tau0_s,
+                                               double length_s) {
+  std::vector<allan::StabilityPoint> points;
+  for (int m : octave_averaging_factors(static_cast<long long>(length_s / tau0_s))) {
+    allan::StabilityPoint p;
+    p.averaging_factor = m;
+    p.tau_s = m * tau0_s;
+    p.deviation = std::sqrt(model_avar(model, p.tau_s));
+    p.edf = 1.5 * length_s / p.tau_s;
+    points.push_back(p);
+  }
+  return points;
+}
+
+TriadFit exact_triad(SensorKind sensor, double n, double k) {
+  std::array<std::vector<allan::StabilityPoint>, 3> curves;
+  for (int axis = 0; axis < 3; ++axis) {
+    NoiseModel model;
+    model.terms = {{TermKind::kWhiteRate, n * (1.0 + 0.5 * axis), 0.0},
+                   {TermKind::kRandomWalk, k, 0.0}};
+    curves[axis] = exact_curve(model, 0.01, 7200.0);
+  }
+  return fit_triad(sensor, curves, 0.01, 7200.0);
+}
+
+TEST(IdentifyReport, NumbersRoundTripThroughTheYaml) {
+  const std::vector<TriadFit> triads = {exact_triad(SensorKind::kGyroscope, 1e-4, 1e-6),
+                                        exact_triad(SensorKind::kAccelerometer, 1e-3, 1e-5)};
+  EXPECT_EQ(triads[0].worst_axis, 2);  // axis z has the largest N
+  const auto values = read_noise_report_values(format_noise_report(triads, {"test", 100.0}));
+  for (const TriadFit& triad : triads) {
+    for (int axis = 0; axis < 3; ++axis) {
+      const FitResult& fit = triad.axes[axis];
+      const std::string base = "triads." + sensor_prefix(triad.sensor) + ".axes." +
+                               axis_name(triad.sensor, axis) + ".terms.";
+      for (const TermEstimate& term : fit.terms) {
+        for (const UnitScale& unit : amplitude_units(triad.sensor, term.kind)) {
+          const std::string key = base + term.name + "." + parameter_key(amplitude_symbol(term.kind), unit.key);
+          if (term.status == TermStatus::kAbsent) {
+            EXPECT_EQ(values.count(key), 0u) << key << " must not carry a value";
+            const std::string bound_key = key + upper_bound_suffix(0.95);
+            ASSERT_EQ(values.count(bound_key), 1u) << bound_key;
+            EXPECT_DOUBLE_EQ(values.at(bound_key), term.amplitude.upper_bound * unit.per_si);
+            continue;
+          }
+          ASSERT_EQ(values.count(key), 1u) << key;
+          EXPECT_DOUBLE_EQ(values.at(key), term.amplitude.value * unit.per_si) << key;
+          EXPECT_DOUBLE_EQ(values.at(key + "_sigma"), term.amplitude.sigma * unit.per_si) << key;
+        }
+      }
+      EXPECT_DOUBLE_EQ(values.at("triads." + sensor_prefix(triad.sensor) + ".axes." +
+                                 axis_name(triad.sensor, axis) + ".fit_quality.p_value"),
+                       fit.quality.p_value);
+    }
+  }
+  // The fit of an exact curve is exact.
+  EXPECT_NEAR(values.at("triads.gyro.axes.gyro_x.terms.white_rate.N_rad_s_per_sqrt_hz"), 1e-4,
+              1e-9);
+  EXPECT_NEAR(values.at("triads.gyro.axes.gyro_x.terms.white_rate.N_deg_per_sqrt_h"),
+              1e-4 * 180.0 / 3.14159265358979323846 * 60.0, 1e-6);
+  EXPECT_THROW(read_noise_report_values("a: 1"), InputError);
+}
+
+TEST(IdentifyReport, WrittenAtomicallyToAFile) {
+  const std::vector<TriadFit> triads = {exact_triad(SensorKind::kGyroscope, 1e-4, 1e-6)};
+  const std::string path = testing::TempDir() + "identify_report_test.yaml";
+  write_noise_report(path, triads, {"test", 100.0});
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), format_noise_report(triads, {"test", 100.0}));
+  std::remove(path.c_str());
+}
+
+// A triad fit made by hand: per axis, N present and K either present or absent with a bound.
+TriadFit hand_triad(SensorKind sensor, const std::array<double, 3>& n,
+                    const std::array<double, 3>& k, bool k_present) {
+  TriadFit triad;
+  triad.sensor = sensor;
+  for (int axis = 0; axis < 3; ++axis) {
+    TermEstimate white;
+    white.name = "white_rate";
+    white.kind = TermKind::kWhiteRate;
+    white.status = TermStatus::kPresent;
+    white.amplitude.value = n[axis];
+    TermEstimate walk;
+    walk.name = "random_walk";
+    walk.kind = TermKind::kRandomWalk;
+    walk.status = k_present ? TermStatus::kPresent : TermStatus::kAbsent;
+    (k_present ? walk.amplitude.value : walk.amplitude.upper_bound) = k[axis];
+    triad.axes[axis].terms = {white, walk};
+  }
+  return triad;
+}
+
+TEST(IdentifyKalibr, KeysAndConversionsForAKnownModel) {
+  const TriadFit gyro = hand_triad(SensorKind::kGyroscope, {1e-4, 3e-4, 2e-4}, {1e-6, 4e-6, 2e-6},
+                                   false);
+  const TriadFit accel = hand_triad(SensorKind::kAccelerometer, {2e-3, 1e-3, 1.5e-3},
+                                    {3e-5, 1e-5, 2e-5}, true);
+  const double rate_hz = 400.0;
+  const KalibrImuNoise noise = kalibr_noise(gyro, accel, rate_hz, "/imu/raw");
+  const YAML::Node yaml = YAML::Load(format_kalibr_imu_yaml(noise));
+  EXPECT_DOUBLE_EQ(yaml["gyroscope_noise_density"].as<double>(), 3e-4);
+  EXPECT_DOUBLE_EQ(yaml["gyroscope_random_walk"].as<double>(), 4e-6);
+  EXPECT_DOUBLE_EQ(yaml["accelerometer_noise_density"].as<double>(), 2e-3);
+  EXPECT_DOUBLE_EQ(yaml["accelerometer_random_walk"].as<double>(), 3e-5);
+  EXPECT_DOUBLE_EQ(yaml["gyroscope_noise_density_discrete"].as<double>(), 3e-4 * 20.0);
+  EXPECT_DOUBLE_EQ(yaml["gyroscope_random_walk_discrete"].as<double>(), 4e-6 / 20.0);
+  EXPECT_DOUBLE_EQ(yaml["accelerometer_noise_density_discrete"].as<double>(), 2e-3 * 20.0);
+  EXPECT_DOUBLE_EQ(yaml["accelerometer_random_walk_discrete"].as<double>(), 3e-5 / 20.0);
+  EXPECT_TRUE(yaml["gyroscope_random_walk_is_upper_bound"].as<bool>());
+  EXPECT_FALSE(yaml["gyroscope_noise_density_is_upper_bound"].as<bool>());
+  EXPECT_FALSE(yaml["accelerometer_random_walk_is_upper_bound"].as<bool>());
+  EXPECT_EQ(yaml["rostopic"].as<std::string>(), "/imu/raw");
+  EXPECT_DOUBLE_EQ(yaml["update_rate"].as<double>(), 400.0);
+  EXPECT_EQ(noise.gyroscope_noise_density.axis, 1);
+}
+
+TEST(IdentifyPartialCurves, EachTermsCurveAndTheTotal) {
+  const TriadFit triad = exact_triad(SensorKind::kGyroscope, 1e-4, 1e-6);
+  const FitResult& fit = triad.axes[0];
+  std::vector<allan::StabilityPoint> measured(2);
+  measured[0].tau_s = 1.0;
+  measured[0].deviation = 1e-4;
+  measured[1].tau_s = 100.0;
+  measured[1].deviation = 1e-5;
+  const PartialCurves curves = partial_curves(fit, measured);
+  ASSERT_EQ(curves.term_names, (std::vector<std::string>{"white_rate", "random_walk"}));
+  const double n = fit.model.terms[0].amplitude, k = fit.model.terms[1].amplitude;
+  EXPECT_DOUBLE_EQ(curves.term_deviations[0][1], n / 10.0);
+  EXPECT_NEAR(curves.term_deviations[1][1], k * std::sqrt(100.0 / 3.0), 1e-18);
+  EXPECT_NEAR(curves.total_deviation[1],
+              std::hypot(curves.term_deviations[0][1], curves.term_deviations[1][1]), 1e-18);
+  const std::string csv = format_partial_curves_csv(curves, "rad_s");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "tau_s,measured_dev_rad_s,fit_total_dev_rad_s,white_rate_dev_rad_s,"
+            "random_walk_dev_rad_s");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);
+}
+
+}  // namespace
+}  // namespace identify
+}  // namespace imu_lab
