@@ -2,6 +2,7 @@
 // TriadChannel built from a TriadErrorModel carrying the noise processes on axis x only.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -13,22 +14,32 @@
 namespace imu_lab {
 namespace identify_test {
 
-// Rate samples (interval averages) of axis x of a gyro triad at rest.
+// Rate samples (interval averages) of the three axes of a triad at rest.
+inline std::array<std::vector<double>, 3> emulate_triad_rates(const emulator::TriadErrorModel& model,
+                                                             double rate_hz, double duration_s,
+                                                             std::uint64_t seed) {
+  emulator::TriadChannel channel(model, "gyro", seed);
+  const double interval_s = 1.0 / rate_hz;
+  const long long count = static_cast<long long>(duration_s * rate_hz);
+  std::array<std::vector<double>, 3> rates;
+  for (auto& axis : rates) axis.resize(count);
+  for (long long k = 0; k < count; ++k) {
+    const Eigen::Vector3d sample = channel.measure(Eigen::Vector3d::Zero(),
+                                                   Eigen::Vector3d::Zero(), k * interval_s,
+                                                   interval_s);
+    for (int axis = 0; axis < 3; ++axis) rates[axis][k] = sample[axis];
+  }
+  return rates;
+}
+
+// Rate samples of axis x of a gyro triad at rest carrying `noise` on x only.
 inline std::vector<double> emulate_axis_rates(const std::vector<noise::ProcessParameters>& noise,
                                               double rate_hz, double duration_s,
                                               std::uint64_t seed, double bandwidth_hz = 0.0) {
   emulator::TriadErrorModel model;
   model.noise_per_axis[0] = noise;
   model.bandwidth_hz = bandwidth_hz;
-  emulator::TriadChannel channel(model, "gyro", seed);
-  const double interval_s = 1.0 / rate_hz;
-  const long long count = static_cast<long long>(duration_s * rate_hz);
-  std::vector<double> rates(count);
-  for (long long k = 0; k < count; ++k) {
-    rates[k] = channel.measure(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
-                               k * interval_s, interval_s)[0];
-  }
-  return rates;
+  return emulate_triad_rates(model, rate_hz, duration_s, seed)[0];
 }
 
 // Overlapping Allan deviation of the rates at octave averaging factors.
