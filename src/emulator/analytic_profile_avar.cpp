@@ -10,12 +10,18 @@ namespace imu_lab {
 namespace emulator {
 namespace {
 
-double process_avar(const noise::ProcessParameters& parameters, double tau_s, double tau0_s) {
+constexpr double kTwoPi = 6.283185307179586;
+
+double process_avar(const noise::ProcessParameters& parameters, double bandwidth_hz, double tau_s, double tau0_s) {
   return std::visit(
       [&](const auto& p) -> double {
         using P = std::decay_t<decltype(p)>;
         if constexpr (std::is_same_v<P, noise::WhiteRateParameters>) {
-          return noise::white_rate_avar(p.density_per_sqrt_hz, tau_s);
+          if (bandwidth_hz <= 0.0) return noise::white_rate_avar(p.density_per_sqrt_hz, tau_s);
+          // White noise through a first-order low-pass is exactly a Gauss-Markov process with
+          // T_c = 1 / (2 pi f_c) and the same low-frequency density: q_c T_c = N.
+          const double correlation_time_s = 1.0 / (kTwoPi * bandwidth_hz);
+          return noise::markov_avar(p.density_per_sqrt_hz / correlation_time_s, correlation_time_s, tau_s);
         } else if constexpr (std::is_same_v<P, noise::BiasInstabilityParameters>) {
           return noise::bias_instability_avar(p.coefficient, p.cutoff_frequency_hz, tau_s);
         } else if constexpr (std::is_same_v<P, noise::RandomWalkParameters>) {
@@ -42,7 +48,7 @@ double process_avar(const noise::ProcessParameters& parameters, double tau_s, do
 
 double analytic_axis_avar(const TriadErrorModel& triad, int axis, double tau_s, double tau0_s) {
   double avar = 0.0;
-  for (const auto& parameters : triad.noise_per_axis.at(axis)) avar += process_avar(parameters, tau_s, tau0_s);
+  for (const auto& parameters : triad.noise_per_axis.at(axis)) avar += process_avar(parameters, triad.bandwidth_hz, tau_s, tau0_s);
   if (triad.pulse_weight > 0.0) avar += noise::pulse_quantization_avar(triad.pulse_weight, tau_s);
   return avar;
 }

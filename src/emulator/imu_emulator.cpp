@@ -31,20 +31,24 @@ ImuEmulator& ImuEmulator::operator=(ImuEmulator&&) noexcept = default;
 ImuSample ImuEmulator::next() {
   // Times from the index (not accumulated) so long runs do not drift.
   const double elapsed_start_s = static_cast<double>(sample_index_) * interval_s_;
-  const double start_s = settings_.start_time_s + elapsed_start_s;
   ++sample_index_;
-  const TruthIncrement truth_increment = motion_->increment(start_s, interval_s_);
+  // Scenario time from the run start: stamps near 1e9 s would round the motion's times to 1e-7 s.
+  const TruthIncrement truth_increment = motion_->increment(elapsed_start_s, interval_s_);
   const Eigen::Vector3d true_rate = truth_increment.delta_angle_rad / interval_s_;
   const Eigen::Vector3d true_force = truth_increment.delta_velocity_m_s / interval_s_;
 
   ImuSample sample;
   sample.stamp_s = settings_.start_time_s + static_cast<double>(sample_index_) * interval_s_;
-  sample.angular_rate_rad_s = gyro_->measure(true_rate, true_force, elapsed_start_s, interval_s_);
-  sample.specific_force_m_s2 =
-      accelerometer_->measure(true_force, Eigen::Vector3d::Zero(), elapsed_start_s, interval_s_);
+  const SensorTemperature temperature{truth_increment.mean_temperature_c,
+                                      truth_increment.mean_temperature_rate_c_s};
+  sample.angular_rate_rad_s =
+      gyro_->measure(true_rate, true_force, elapsed_start_s, interval_s_, temperature);
+  sample.specific_force_m_s2 = accelerometer_->measure(true_force, Eigen::Vector3d::Zero(),
+                                                       elapsed_start_s, interval_s_, temperature);
   sample.delta_angle_rad = sample.angular_rate_rad_s * interval_s_;
   sample.delta_velocity_m_s = sample.specific_force_m_s2 * interval_s_;
   sample.temperature_c = truth_increment.mean_temperature_c;
+  sample.second_temperature_c = truth_increment.mean_second_temperature_c;
   if (sample_index_ == 1) {
     gyro_variance_ = gyro_->sample_variance(interval_s_);
     accelerometer_variance_ = accelerometer_->sample_variance(interval_s_);
@@ -52,7 +56,8 @@ ImuSample ImuEmulator::next() {
   sample.angular_rate_variance_rad2_s2 = gyro_variance_;
   sample.specific_force_variance_m2_s4 = accelerometer_variance_;
 
-  const TruthState truth = motion_->truth_at(sample.stamp_s);
+  const TruthState truth =
+      motion_->truth_at(static_cast<double>(sample_index_) * interval_s_);
   sample.truth.stamp_s = sample.stamp_s;
   sample.truth.attitude_body_to_enu = truth.attitude_body_to_enu;
   sample.truth.angular_rate_rad_s = truth.angular_rate_body_rad_s;
@@ -62,6 +67,7 @@ ImuSample ImuEmulator::next() {
   sample.truth.height_m = truth.height_m;
   sample.truth.velocity_enu_m_s = truth.velocity_enu_m_s;
   sample.truth.temperature_c = truth.temperature_c;
+  sample.truth.second_temperature_c = truth.second_temperature_c;
   return sample;
 }
 

@@ -38,7 +38,20 @@ TriadChannel::TriadChannel(const TriadErrorModel& model, const std::string& tria
 Eigen::Vector3d TriadChannel::measure(const Eigen::Vector3d& true_average,
                                       const Eigen::Vector3d& specific_force_average,
                                       double elapsed_start_s, double interval_s) {
-  Eigen::Vector3d output = total_bias() + scale_misalignment_ * true_average +
+  return measure(true_average, specific_force_average, elapsed_start_s, interval_s,
+                 {model_.thermal.reference_temperature_c, 0.0});
+}
+
+Eigen::Vector3d TriadChannel::measure(const Eigen::Vector3d& true_average,
+                                      const Eigen::Vector3d& specific_force_average,
+                                      double elapsed_start_s, double interval_s,
+                                      const SensorTemperature& temperature) {
+  const ThermalSensitivity& thermal = model_.thermal;
+  const Eigen::Vector3d thermal_scale =
+      1e-6 * thermal.scale_factor_ppm(temperature.temperature_c, temperature.rate_c_s);
+  Eigen::Vector3d output = total_bias() + thermal.bias(temperature.temperature_c, temperature.rate_c_s) +
+                           scale_misalignment_ * true_average +
+                           thermal_scale.cwiseProduct(true_average) +
                            model_.quadratic_nonlinearity_per_unit.cwiseProduct(
                                true_average.cwiseProduct(true_average)) +
                            model_.g_sensitivity * specific_force_average;

@@ -144,16 +144,46 @@ void read_quantization(const YamlFields& f, const TriadUnits& u, TriadErrorModel
   }
 }
 
+// thermal: {reference_temperature_c, bias_polynomial_<u>: [row, ...], scale_factor_polynomial_ppm:
+// [row, ...], bias_per_temperature_rate_<u>_per_c_s, scale_factor_ppm_per_temperature_rate_per_c_s};
+// a row is one number or [x, y, z], row k multiplying (T - T_ref)^(k+1).
+ThermalSensitivity read_thermal_sensitivity(const YamlFields& f, const TriadUnits& u) {
+  const std::string bias_key = "bias_polynomial_" + u.rate;
+  const std::string bias_rate_key = "bias_per_temperature_rate_" + u.rate + "_per_c_s";
+  const std::string scale_key = "scale_factor_polynomial_ppm";
+  const std::string scale_rate_key = "scale_factor_ppm_per_temperature_rate_per_c_s";
+  f.allow_only({"reference_temperature_c", bias_key.c_str(), scale_key.c_str(), bias_rate_key.c_str(),
+                scale_rate_key.c_str()});
+  auto rows = [&](const std::string& key) {
+    std::vector<Eigen::Vector3d> result;
+    if (!f.has(key)) return result;
+    const YAML::Node list = f.raw(key);
+    if (!list.IsSequence()) f.fail(key, "expected a list of rows (row k multiplies (T - T_ref)^(k+1))");
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      result.push_back(f.per_axis_at(list[k], key + "[" + std::to_string(k) + "]", false));
+    }
+    return result;
+  };
+  ThermalSensitivity thermal;
+  thermal.reference_temperature_c = f.number("reference_temperature_c");
+  thermal.bias_polynomial = rows(bias_key);
+  thermal.scale_factor_polynomial_ppm = rows(scale_key);
+  thermal.bias_per_temperature_rate = f.per_axis_or_zero(bias_rate_key);
+  thermal.scale_factor_ppm_per_temperature_rate = f.per_axis_or_zero(scale_rate_key);
+  return thermal;
+}
+
 TriadErrorModel read_triad(const YamlFields& f, const TriadUnits& u, bool is_gyro) {
   const std::string bias = "bias_fixed_" + u.rate, turn_on = "bias_turn_on_sigma_" + u.rate,
                     quadratic = "quadratic_nonlinearity_per_" + u.rate,
                     g_sensitivity = "g_sensitivity_rad_s_per_m_s2";
   if (is_gyro) {
     f.allow_only({bias.c_str(), turn_on.c_str(), "scale_factor_error_ppm", "misalignment_rad",
-                  quadratic.c_str(), g_sensitivity.c_str(), "bandwidth_hz", "quantization", "noise"});
+                  quadratic.c_str(), g_sensitivity.c_str(), "bandwidth_hz", "quantization", "noise",
+                  "thermal"});
   } else {
     f.allow_only({bias.c_str(), turn_on.c_str(), "scale_factor_error_ppm", "misalignment_rad",
-                  quadratic.c_str(), "bandwidth_hz", "quantization", "noise"});
+                  quadratic.c_str(), "bandwidth_hz", "quantization", "noise", "thermal"});
   }
   TriadErrorModel model;
   model.bias_fixed = f.per_axis(bias, false);
@@ -169,6 +199,7 @@ TriadErrorModel read_triad(const YamlFields& f, const TriadUnits& u, bool is_gyr
   if (f.has("bandwidth_hz")) model.bandwidth_hz = f.positive("bandwidth_hz");
   if (f.has("quantization")) read_quantization(f.child("quantization"), u, model);
   read_noise(f.child("noise"), u, model);
+  if (f.has("thermal")) model.thermal = read_thermal_sensitivity(f.child("thermal"), u);
   return model;
 }
 

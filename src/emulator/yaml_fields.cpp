@@ -83,7 +83,11 @@ std::string YamlFields::text(const std::string& key) const {
 }
 
 Eigen::Vector3d YamlFields::per_axis(const std::string& key, bool non_negative_only) const {
-  const YAML::Node value = raw(key);
+  return per_axis_at(raw(key), key, non_negative_only);
+}
+
+Eigen::Vector3d YamlFields::per_axis_at(const YAML::Node& value, const std::string& key,
+                                        bool non_negative_only) const {
   Eigen::Vector3d result;
   if (value.IsScalar()) {
     result.setConstant(number_at(value, key));
@@ -94,6 +98,18 @@ Eigen::Vector3d YamlFields::per_axis(const std::string& key, bool non_negative_o
   }
   if (non_negative_only && result.minCoeff() < 0.0) {
     fail(key, "must be non-negative (it is a standard deviation or density)");
+  }
+  return result;
+}
+
+std::vector<YamlFields> YamlFields::mappings(const std::string& key) const {
+  const YAML::Node list = raw(key);
+  if (!list.IsSequence() || list.size() == 0) fail(key, "expected a non-empty list of mappings");
+  std::vector<YamlFields> result;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string item = key_path(key) + "[" + std::to_string(i) + "]";
+    if (!list[i].IsMap()) throw ConfigError(source_, item, "expected a mapping");
+    result.emplace_back(list[i], item, source_);
   }
   return result;
 }

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 namespace imu_lab {
 namespace emulator {
@@ -20,6 +21,7 @@ class YamlFields {
   bool has(const std::string& key) const;
   YamlFields child(const std::string& key) const;  // required mapping
   YAML::Node raw(const std::string& key) const;    // required, any shape
+  std::vector<YamlFields> mappings(const std::string& key) const;  // required non-empty list
 
   double number(const std::string& key) const;
   double number_or(const std::string& key, double fallback) const;
@@ -33,6 +35,7 @@ class YamlFields {
 
   // One scalar element of a sequence; key labels it in messages ("range[0]").
   double number_at(const YAML::Node& value, const std::string& key) const;
+  Eigen::Vector3d per_axis_at(const YAML::Node& value, const std::string& key, bool non_negative_only) const;
 
   std::string key_path(const std::string& key) const;
   [[noreturn]] void fail(const std::string& key, const std::string& problem) const;

@@ -7,9 +7,9 @@
 namespace imu_lab {
 namespace emulator {
 
-// tau0_s is needed for the bandwidth-defined terms (white angle noise given as a density).
-// Not included: the anti-alias filter's attenuation of the white noise at taus near its time
-// constant, and turn-on/fixed biases (constant, AVAR zero).
+// tau0_s is needed for the bandwidth-defined terms (white angle noise given as a density). The
+// anti-alias filter is included exactly where the emulator applies it (on the white rate noise).
+// Biases (fixed and turn-on) are constant and have no AVAR.
 double analytic_axis_avar(const TriadErrorModel& triad, int axis, double tau_s, double tau0_s);
 
 }  // namespace emulator

@@ -1,13 +1,15 @@
 // The IMU emulator: sensor profile + motion source + settings -> one sample per step.
 // Sample k covers [start_time_s + k dt, start_time_s + (k+1) dt]; its stamp is the END of the
 // interval (so the first stamp is start_time_s + dt). Rates are exact interval averages and
-// increments are average * dt. Same profile, scenario and settings (seed) -> bit-identical output.
+// increments are average * dt. The motion source runs on scenario time (0 at start_time_s).
+// Temperature terms of the profile see the interval's mean temperature and its rate. Same profile, scenario and settings (seed) -> bit-identical output.
 #pragma once
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 #include "imu_lab/emulator/motion_source.h"
 #include "imu_lab/emulator/scenario.h"
@@ -33,6 +35,7 @@ struct TruthSample {
   double height_m = 0.0;
   Eigen::Vector3d velocity_enu_m_s = Eigen::Vector3d::Zero();
   double temperature_c = 0.0;
+  std::optional<double> second_temperature_c;  // when the scenario has a second thermosensor
 };
 
 struct ImuSample {
@@ -41,7 +44,8 @@ struct ImuSample {
   Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();  // interval average
   Eigen::Vector3d delta_angle_rad = Eigen::Vector3d::Zero();      // = average * dt
   Eigen::Vector3d delta_velocity_m_s = Eigen::Vector3d::Zero();   // = average * dt
-  double temperature_c = 0.0;
+  double temperature_c = 0.0;  // interval mean
+  std::optional<double> second_temperature_c;  // interval mean of the second thermosensor, if any
   // Per-axis variance of one sample's stationary noise (for sensor_msgs/Imu covariance
   // diagonals): white, white-angle, quantization, Markov, flicker bank, zero-DC family.
   // Excludes biases, random walk and deterministic terms. Constant over a run.

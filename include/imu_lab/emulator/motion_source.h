@@ -1,10 +1,11 @@
 // What a scenario tells the emulator: the true body angular rate and specific force integrated
-// exactly over each sample interval, and the truth at any instant. Static is the first
-// implementation; motion and thermal scenarios implement the same interface later.
+// exactly over each sample interval, and the truth at any instant. Times are scenario times:
+// seconds since the start of the run (the emulator adds its start_time_s to the stamps).
 #pragma once
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <optional>
 
 namespace imu_lab {
 namespace emulator {
@@ -20,6 +21,8 @@ struct TruthState {
   double height_m = 0.0;  // above the ellipsoid (or sphere)
   Eigen::Vector3d velocity_enu_m_s = Eigen::Vector3d::Zero();
   double temperature_c = 0.0;
+  double temperature_rate_c_s = 0.0;
+  std::optional<double> second_temperature_c;  // a second, lagging thermosensor, if configured
 };
 
 // Exact integrals of the truth over [start_s, start_s + interval_s], in body axes.
@@ -27,6 +30,8 @@ struct TruthIncrement {
   Eigen::Vector3d delta_angle_rad = Eigen::Vector3d::Zero();      // integral of body rate
   Eigen::Vector3d delta_velocity_m_s = Eigen::Vector3d::Zero();   // integral of specific force
   double mean_temperature_c = 0.0;
+  double mean_temperature_rate_c_s = 0.0;  // (T(end) - T(start)) / interval
+  std::optional<double> mean_second_temperature_c;
 };
 
 class MotionSource {

@@ -1,4 +1,4 @@
-// One triad's measurement: output = b_fixed + b_turn_on + K * input + c .* input.^2
+// One triad's measurement: output = b_fixed + b_turn_on + b(T, dT/dt) + K(T, dT/dt) * input + c .* input.^2
 // + G * specific_force (gyro) + sum of noise processes, then optional pulse quantization of the
 // increment. Rates in and out are interval averages. The quadratic term is applied to the
 // interval average of the input (exact for static and constant-rate inputs only).
@@ -23,12 +23,24 @@
 namespace imu_lab {
 namespace emulator {
 
+// The sensor's temperature over the sample interval: mean and mean rate of change.
+struct SensorTemperature {
+  double temperature_c = 0.0;
+  double rate_c_s = 0.0;
+};
+
 class TriadChannel {
  public:
   // triad_name ("gyro", "accelerometer") names the RNG streams, e.g. "gyro.x.markov#1" (the
   // second Markov process on x), each seeded from stream_seed(seed, name).
   TriadChannel(const TriadErrorModel& model, const std::string& triad_name, std::uint64_t seed);
 
+  // Temperature terms (TriadErrorModel::thermal) are evaluated at the interval's mean
+  // temperature and mean rate: the polynomial's curvature over one sample is neglected.
+  Eigen::Vector3d measure(const Eigen::Vector3d& true_average,
+                          const Eigen::Vector3d& specific_force_average, double elapsed_start_s,
+                          double interval_s, const SensorTemperature& temperature);
+  // At the reference temperature, steady (no temperature terms).
   Eigen::Vector3d measure(const Eigen::Vector3d& true_average,
                           const Eigen::Vector3d& specific_force_average, double elapsed_start_s,
                           double interval_s);

@@ -18,6 +18,22 @@ class Node;
 namespace imu_lab {
 namespace emulator {
 
+// Temperature dependence of one triad (seed 001 eq. 4.1, per axis), with dT = T - T_ref:
+//   bias         += sum_k bias_polynomial[k] dT^(k+1) + bias_per_temperature_rate * dT/dt   [u]
+//   scale factor += sum_k scale_factor_polynomial_ppm[k] dT^(k+1)
+//                   + scale_factor_ppm_per_temperature_rate * dT/dt                         [ppm]
+// Empty polynomials and zero rate terms (the default) leave the triad temperature-independent.
+struct ThermalSensitivity {
+  double reference_temperature_c = 20.0;
+  std::vector<Eigen::Vector3d> bias_polynomial;              // row k: [u / degC^(k+1)]
+  std::vector<Eigen::Vector3d> scale_factor_polynomial_ppm;  // row k: [ppm / degC^(k+1)]
+  Eigen::Vector3d bias_per_temperature_rate = Eigen::Vector3d::Zero();              // [u / (degC/s)]
+  Eigen::Vector3d scale_factor_ppm_per_temperature_rate = Eigen::Vector3d::Zero();  // [ppm / (degC/s)]
+
+  Eigen::Vector3d bias(double temperature_c, double temperature_rate_c_s) const;
+  Eigen::Vector3d scale_factor_ppm(double temperature_c, double temperature_rate_c_s) const;
+};
+
 // One triad (gyro or accelerometer). "u" = rad/s (gyro) or m/s^2 (accelerometer); "v" = rad or m/s.
 struct TriadErrorModel {
   Eigen::Vector3d bias_fixed = Eigen::Vector3d::Zero();           // [u]
@@ -37,6 +53,7 @@ struct TriadErrorModel {
   double pulse_weight = 0.0;
   // Independent noise processes per axis (x, y, z), each switchable and combinable.
   std::array<std::vector<noise::ProcessParameters>, 3> noise_per_axis;
+  ThermalSensitivity thermal;
 
   // K = I + diag(scale_factor_error_ppm * 1e-6) + misalignment_rad.
   Eigen::Matrix3d scale_misalignment_matrix() const;
