@@ -1,6 +1,7 @@
 # Sourced by the other scripts: where the catkin workspace lives and how to build it.
-# The workspace is made outside the sources (git-ignored .ws/ by default) with this
-# repository linked into its src/.
+# The workspace is git-ignored .ws/ by default; its src/imu_lab/ holds one link per top-level
+# entry of this repository. (Linking the repository itself would put .ws inside its own src/:
+# rosrun's `find -L` then loops.)
 IMU_LAB_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 IMU_LAB_WS=${IMU_LAB_WS:-$IMU_LAB_ROOT/.ws}
 
@@ -10,9 +11,22 @@ IMU_LAB_CATKIN_ARGS=(
   -DCMAKE_BUILD_TYPE=Release -DCATKIN_ENABLE_TESTING=ON
 )
 
+imu_lab_link_sources() {
+  local package="$IMU_LAB_WS/src/imu_lab" entry name
+  [[ -L "$package" ]] && rm "$package"  # an older layout linked the whole repository
+  mkdir -p "$package"
+  for entry in "$package"/*; do  # links to entries the repository no longer has
+    [[ -L "$entry" && ! -e "$entry" ]] && rm "$entry"
+  done
+  for entry in "$IMU_LAB_ROOT"/*; do
+    name=$(basename "$entry")
+    [[ "$name" == report ]] && continue
+    ln -sfn "$entry" "$package/$name"
+  done
+}
+
 imu_lab_build() {
-  mkdir -p "$IMU_LAB_WS/src"
-  ln -sfn "$IMU_LAB_ROOT" "$IMU_LAB_WS/src/imu_lab"
+  imu_lab_link_sources
   (cd "$IMU_LAB_WS" && catkin_make -j"${IMU_LAB_JOBS:-2}" "${IMU_LAB_CATKIN_ARGS[@]}" "$@")
 }
 
