@@ -25,7 +25,7 @@ TruthIncrement KinematicMotion::increment(double start_s, double interval_s) {
         return IntegrandValue{truth.angular_rate_body_rad_s, truth.specific_force_body_m_s2,
                               truth.temperature_c};
       },
-      start_s, start_s + interval_s, breakpoints_s(), longest_smooth_piece_s(), IntegrandValue{});
+      start_s, interval_s, breakpoints_s(), longest_smooth_piece_s(), IntegrandValue{});
   TruthIncrement result;
   result.delta_angle_rad = integral.rate;
   result.delta_velocity_m_s = integral.force;
