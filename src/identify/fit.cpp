@@ -123,10 +123,7 @@ const TermEstimate* FitResult::find(const std::string& name) const {
 }
 
 TermEstimate* FitResult::find(const std::string& name) {
-  for (TermEstimate& term : terms) {
-    if (term.name == name) return &term;
-  }
-  return nullptr;
+  return const_cast<TermEstimate*>(static_cast<const FitResult*>(this)->find(name));
 }
 
 FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, double tau0_s,

@@ -36,19 +36,30 @@ std::string dominant_terms_at(const FitResult& fit, double tau_s, TermKind exclu
   return names.empty() ? "no single other term" : names;
 }
 
-void warn_white_rate(const FitResult& fit, std::vector<std::string>* warnings) {
-  const double reading = fit.graphical.white_rate_at_1s;
-  const TermEstimate* white = fit.find("white_rate");
-  const double fitted = value_or_bound(white);
-  if (std::isfinite(reading) && std::isfinite(fitted) &&
-      reading > kReadingDisagreementRatio * fitted) {
-    warnings->push_back("slope reading of N at tau = 1 s (" + format_number(reading) +
-                        ") is " + format_number(reading / fitted) + "x the fitted N" +
-                        (white->status == TermStatus::kPresent ? "" : " upper bound") + " (" +
-                        format_number(fitted) + "): the curve near 1 s is carried by " +
-                        dominant_terms_at(fit, 1.0, TermKind::kWhiteRate) +
-                        " (seed 003 Figs. 6.9-6.12: a Markov flank posing as white noise)");
+// A slope reading (N at 1 s, K at 3 s) that disagrees with the fitted term or its bound.
+void warn_slope_reading(const FitResult& fit, TermKind kind, double tau_s, double reading,
+                        std::vector<std::string>* warnings) {
+  const TermEstimate* term = fit.find(term_kind_name(kind));
+  const double fitted = value_or_bound(term);
+  if (!std::isfinite(reading) || !std::isfinite(fitted) ||
+      !(reading > kReadingDisagreementRatio * fitted)) {
+    return;
   }
+  const std::string symbol = amplitude_symbol(kind);
+  const std::string carriers = dominant_terms_at(fit, tau_s, kind);
+  warnings->push_back(
+      "slope reading of " + symbol + " at tau = " + format_number(tau_s) + " s (" +
+      format_number(reading) + ") is " + format_number(reading / fitted) + "x the fitted " +
+      symbol + (term->status == TermStatus::kPresent ? "" : " upper bound") + " (" +
+      format_number(fitted) + "): the curve there is carried by " + carriers +
+      (carriers.find("markov") != std::string::npos
+           ? " (seed 003 Figs. 6.9-6.12: a Markov flank posing as white noise)"
+           : ""));
+}
+
+void warn_white_rate(const FitResult& fit, std::vector<std::string>* warnings) {
+  warn_slope_reading(fit, TermKind::kWhiteRate, 1.0, fit.graphical.white_rate_at_1s, warnings);
+  const TermEstimate* white = fit.find("white_rate");
   // A low-pass filter shows as a leftmost point (with its large EDF) well below the fitted
   // white noise alone; noisy long-tau points touching the ray are not evidence of it.
   const FitPoint& leftmost = fit.points.front();
@@ -94,27 +105,13 @@ void warn_bias_instability(const FitResult& fit, std::vector<std::string>* warni
   }
 }
 
-void warn_random_walk(const FitResult& fit, std::vector<std::string>* warnings) {
-  const double reading = fit.graphical.random_walk_at_3s;
-  const TermEstimate* walk = fit.find("random_walk");
-  const double fitted = value_or_bound(walk);
-  if (std::isfinite(reading) && std::isfinite(fitted) &&
-      reading > kReadingDisagreementRatio * fitted) {
-    warnings->push_back("slope reading of K at tau = 3 s (" + format_number(reading) + ") is " +
-                        format_number(reading / fitted) + "x the fitted K" +
-                        (walk->status == TermStatus::kPresent ? "" : " upper bound") +
-                        ": the curve at 3 s is carried by " +
-                        dominant_terms_at(fit, 3.0, TermKind::kRandomWalk));
-  }
-}
-
 }  // namespace
 
 std::vector<std::string> fit_warnings(const FitResult& fit) {
   std::vector<std::string> warnings;
   warn_white_rate(fit, &warnings);
   warn_bias_instability(fit, &warnings);
-  warn_random_walk(fit, &warnings);
+  warn_slope_reading(fit, TermKind::kRandomWalk, 3.0, fit.graphical.random_walk_at_3s, &warnings);
   if (fit.quality.p_value < 0.01) {
     warnings.push_back("the model does not describe the curve (deviance " +
                        format_number(fit.quality.deviance) + " on " +
