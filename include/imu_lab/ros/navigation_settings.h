@@ -1,0 +1,61 @@
+// What a strapdown run needs besides the IMU data: how to align, where it starts, and the
+// navigator's models. The strapdown_navigator node fills it from ROS parameters
+// (navigation_parameters.h), the navigate tool from its command line; both then run the same
+// NavigationSession (navigation_session.h), so they give the same solution on the same data.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <string>
+
+#include "imu_lab/nav/navigator.h"
+#include "imu_lab/nav/static_alignment.h"
+
+namespace imu_lab {
+namespace ros_io {
+
+constexpr double kDegToRad = M_PI / 180.0;
+
+// A priori sensor errors, used only to predict the alignment errors reported with the result.
+struct ExpectedSensorErrors {
+  double gyro_bias_rad_s = 0.0;           // per axis, 1 sigma
+  double accel_bias_m_s2 = 0.0;           // per axis, 1 sigma
+  double gyro_noise_density_rad_s_per_sqrt_hz = 0.0;   // angle random walk (rad/sqrt(s))
+  double accel_noise_density_m_s2_per_sqrt_hz = 0.0;   // velocity random walk (m/s/sqrt(s))
+};
+
+struct NavigationSettings {
+  // Static alignment first (levelling, heading from gyrocompassing or given), or start from a
+  // given attitude (align = false: initial roll, pitch and yaw, REP-103 ENU, yaw from east).
+  bool align = true;
+  nav::StaticAlignmentConfig alignment;
+  double initial_roll_rad = 0.0;
+  double initial_pitch_rad = 0.0;
+  double initial_yaw_rad = 0.0;
+  // Initial position (geodetic); also the origin of the published local ENU position.
+  double latitude_rad = 0.0;
+  double longitude_rad = 0.0;
+  double height_m = 0.0;
+  nav::NavigatorConfig navigator;
+  // A stamp interval longer than this many times the typical one is a gap: the sample after it is
+  // not integrated (its rate says nothing about the missing time).
+  double gap_factor = 3.0;
+  ExpectedSensorErrors expected_errors;
+};
+
+// Parsers shared by the node's parameters and the tool's options; each throws ConfigError naming
+// `key` and the accepted values.
+nav::HeadingSource parse_heading_source(const std::string& key, const std::string& value);
+nav::EarthModelConfig parse_earth_model(const std::string& key, const std::string& value);
+nav::VerticalChannelMode parse_vertical_channel(const std::string& key, const std::string& value);
+
+// Checks ranges (latitude inside (-90, 90) deg, positive durations, finite angles); throws
+// ConfigError naming the offending key (`source` says where the settings came from).
+void validate(const NavigationSettings& settings, const std::string& source);
+
+// Roll, pitch, yaw of a body->ENU attitude with q = Rz(yaw) Ry(pitch) Rx(roll), the inverse of
+// emulator::attitude_from_roll_pitch_yaw (pitch in [-pi/2, pi/2], yaw from east towards north).
+Eigen::Vector3d roll_pitch_yaw_from_quaternion(const Eigen::Quaterniond& q_body_to_enu);
+
+}  // namespace ros_io
+}  // namespace imu_lab

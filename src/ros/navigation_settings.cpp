@@ -1,0 +1,66 @@
+#include "imu_lab/ros/navigation_settings.h"
+
+#include <cmath>
+
+#include "imu_lab/common/config_error.h"
+
+namespace imu_lab {
+namespace ros_io {
+
+nav::HeadingSource parse_heading_source(const std::string& key, const std::string& value) {
+  if (value == "gyrocompass") return nav::HeadingSource::kGyrocompass;
+  if (value == "given") return nav::HeadingSource::kGiven;
+  throw ConfigError("navigation settings", key, "is '" + value + "'; use gyrocompass or given");
+}
+
+nav::EarthModelConfig parse_earth_model(const std::string& key, const std::string& value) {
+  nav::EarthModelConfig config;
+  if (value == "wgs84") {
+    config.shape = nav::EarthShape::kWgs84Rotating;
+  } else if (value == "sphere") {
+    config.shape = nav::EarthShape::kSphereNonRotating;
+  } else {
+    throw ConfigError("navigation settings", key, "is '" + value + "'; use wgs84 or sphere");
+  }
+  return config;
+}
+
+nav::VerticalChannelMode parse_vertical_channel(const std::string& key, const std::string& value) {
+  if (value == "free") return nav::VerticalChannelMode::kFree;
+  if (value == "held") return nav::VerticalChannelMode::kHeld;
+  throw ConfigError("navigation settings", key, "is '" + value + "'; use free or held");
+}
+
+void validate(const NavigationSettings& settings, const std::string& source) {
+  const auto require = [&](bool ok, const std::string& key, const std::string& problem) {
+    if (!ok) throw ConfigError(source, key, problem);
+  };
+  require(std::abs(settings.latitude_rad) < 0.5 * M_PI, "latitude_deg",
+          "must be strictly between -90 and 90 degrees (the ENU mechanisation is singular at the poles)");
+  require(std::isfinite(settings.longitude_rad), "longitude_deg", "must be a finite angle in degrees");
+  require(std::isfinite(settings.height_m), "height_m", "must be a finite height in metres");
+  require(!settings.align || settings.alignment.duration_s > 0.0, "alignment_duration_s",
+          "must be a positive number of seconds");
+  require(std::isfinite(settings.initial_roll_rad), "initial_roll_deg", "must be a finite angle in degrees");
+  require(std::isfinite(settings.initial_pitch_rad), "initial_pitch_deg", "must be a finite angle in degrees");
+  require(std::isfinite(settings.initial_yaw_rad) && std::isfinite(settings.alignment.given_yaw_rad),
+          "initial_yaw_deg", "must be a finite angle in degrees");
+  require(settings.gap_factor > 1.0, "gap_factor", "must be greater than 1 (a gap is that many typical intervals)");
+  const auto& expected = settings.expected_errors;
+  require(expected.gyro_bias_rad_s >= 0.0 && expected.accel_bias_m_s2 >= 0.0 &&
+              expected.gyro_noise_density_rad_s_per_sqrt_hz >= 0.0 &&
+              expected.accel_noise_density_m_s2_per_sqrt_hz >= 0.0,
+          "expected sensor errors", "biases and noise densities must be non-negative numbers");
+}
+
+Eigen::Vector3d roll_pitch_yaw_from_quaternion(const Eigen::Quaterniond& q_body_to_enu) {
+  const Eigen::Matrix3d c = q_body_to_enu.normalized().toRotationMatrix();
+  // C = Rz(yaw) Ry(pitch) Rx(roll): C(2,0) = -sin pitch, C(2,1) = cos pitch sin roll, ...
+  const double pitch = std::asin(std::max(-1.0, std::min(1.0, -c(2, 0))));
+  const double roll = std::atan2(c(2, 1), c(2, 2));
+  const double yaw = std::atan2(c(1, 0), c(0, 0));
+  return {roll, pitch, yaw};
+}
+
+}  // namespace ros_io
+}  // namespace imu_lab

@@ -1,0 +1,116 @@
+// NavigationSession, the core of both the strapdown_navigator node and the navigate tool: rate
+// samples become exactly the increments an ImuIncrement stream would carry, and bad samples are
+// skipped and counted without stopping the run.
+#include "imu_lab/ros/navigation_session.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace {
+
+using imu_lab::ros_io::NavigationSession;
+using imu_lab::ros_io::NavigationSettings;
+using imu_lab::ros_io::SampleOutcome;
+
+constexpr std::int64_t kStart_ns = 1000000000LL * 1000000000LL;  // 1e9 s in nanoseconds
+constexpr std::int64_t kInterval_ns = 5000000;                                 // 200 Hz
+constexpr double kInterval_s = 0.005;
+
+struct Sample {
+  std::int64_t stamp_ns;
+  Eigen::Vector3d rate_rad_s;
+  Eigen::Vector3d force_m_s2;
+};
+
+// A level IMU at rest at 45 deg with a little deterministic "noise" so the paths are not trivial.
+std::vector<Sample> static_samples(int count) {
+  std::vector<Sample> samples;
+  for (int k = 0; k <= count; ++k) {
+    const double wobble = std::sin(0.37 * k);
+    samples.push_back({kStart_ns + k * kInterval_ns, Eigen::Vector3d(1e-6 * wobble, 5.16e-5, 5.16e-5 + 1e-6 * wobble),
+                       Eigen::Vector3d(1e-3 * wobble, -2e-3 * wobble, 9.806)});
+  }
+  return samples;
+}
+
+NavigationSettings settings() {
+  NavigationSettings s;
+  s.alignment.duration_s = 1.0;
+  s.latitude_rad = 45.0 * M_PI / 180.0;
+  return s;
+}
+
+TEST(NavigateSession, RateSamplesGiveTheSameSolutionAsTheEquivalentIncrements) {
+  const auto samples = static_samples(2000);
+  NavigationSession rates(settings());
+  NavigationSession increments(settings());
+  EXPECT_EQ(rates.add_rates(samples[0].stamp_ns, samples[0].rate_rad_s, samples[0].force_m_s2),
+            SampleOutcome::kStarted);
+  for (std::size_t k = 1; k < samples.size(); ++k) {
+    rates.add_rates(samples[k].stamp_ns, samples[k].rate_rad_s, samples[k].force_m_s2);
+    imu_lab::nav::ImuIncrement increment;
+    increment.delta_angle_rad = samples[k].rate_rad_s * kInterval_s;
+    increment.delta_velocity_m_s = samples[k].force_m_s2 * kInterval_s;
+    increment.dt_s = kInterval_s;
+    increments.add_increment(samples[k].stamp_ns, increment);
+    ASSERT_EQ(rates.navigating(), increments.navigating()) << "sample " << k;
+    if (!rates.navigating()) continue;
+    ASSERT_EQ(rates.stamp_ns(), increments.stamp_ns());
+    EXPECT_EQ(rates.state().velocity_enu_m_s, increments.state().velocity_enu_m_s) << "sample " << k;
+    EXPECT_EQ(rates.state().q_body_to_enu.coeffs(), increments.state().q_body_to_enu.coeffs()) << "sample " << k;
+  }
+  ASSERT_TRUE(rates.navigating());
+  // One second of intervals after the first stamp (the sum of 0.005 s steps may need one more).
+  EXPECT_NEAR(static_cast<double>(rates.alignment()->stamp_ns), static_cast<double>(kStart_ns + 200 * kInterval_ns),
+              static_cast<double>(kInterval_ns));
+  EXPECT_EQ(rates.counters().used, 2000u);
+}
+
+TEST(NavigateSession, SkipsAndCountsNaNUnorderedAndGapSamplesAndKeepsNavigating) {
+  const auto samples = static_samples(600);
+  NavigationSession session(settings());
+  std::vector<SampleOutcome> outcomes;
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    Sample s = samples[k];
+    if (k == 300) s.rate_rad_s.x() = std::nan("");
+    if (k >= 400) s.stamp_ns += 10 * kInterval_ns;  // a gap of ten intervals before sample 400
+    outcomes.push_back(session.add_rates(s.stamp_ns, s.rate_rad_s, s.force_m_s2));
+    if (k == 500) outcomes.push_back(session.add_rates(s.stamp_ns, s.rate_rad_s, s.force_m_s2));  // duplicate
+    if (k == 501) outcomes.push_back(session.add_rates(s.stamp_ns - 3 * kInterval_ns, s.rate_rad_s, s.force_m_s2));
+  }
+  EXPECT_EQ(outcomes[300], SampleOutcome::kSkippedInvalid);
+  EXPECT_EQ(outcomes[301], SampleOutcome::kNavigated);  // its own interval only: the NaN's stamp ended the last
+  EXPECT_EQ(outcomes[400], SampleOutcome::kSkippedGap);
+  EXPECT_EQ(outcomes[401], SampleOutcome::kNavigated);
+  EXPECT_EQ(outcomes[501], SampleOutcome::kSkippedUnordered);
+  EXPECT_EQ(outcomes[503], SampleOutcome::kSkippedUnordered);
+  EXPECT_EQ(session.counters().invalid, 1u);
+  EXPECT_EQ(session.counters().gaps, 1u);
+  EXPECT_EQ(session.counters().unordered, 2u);
+  EXPECT_EQ(session.counters().used, 600u - 2u);
+  EXPECT_TRUE(session.navigating());
+  EXPECT_TRUE(session.state().velocity_enu_m_s.allFinite());
+  EXPECT_EQ(session.stamp_ns(), samples.back().stamp_ns + 10 * kInterval_ns);
+}
+
+TEST(NavigateSession, GivenAttitudeStartsAtTheFirstSample) {
+  NavigationSettings s = settings();
+  s.align = false;
+  s.initial_roll_rad = 0.1;
+  s.initial_pitch_rad = -0.2;
+  s.initial_yaw_rad = 1.0;
+  NavigationSession session(s);
+  const auto samples = static_samples(1);
+  EXPECT_EQ(session.add_rates(samples[0].stamp_ns, samples[0].rate_rad_s, samples[0].force_m_s2),
+            SampleOutcome::kStarted);
+  ASSERT_TRUE(session.navigating());
+  EXPECT_TRUE(session.new_solution());
+  EXPECT_EQ(session.alignment()->method, "given_attitude");
+  EXPECT_NEAR(session.alignment()->roll_pitch_yaw_rad.x(), 0.1, 1e-12);
+  EXPECT_NEAR(session.alignment()->roll_pitch_yaw_rad.y(), -0.2, 1e-12);
+  EXPECT_NEAR(session.alignment()->roll_pitch_yaw_rad.z(), 1.0, 1e-12);
+}
+
+}  // namespace

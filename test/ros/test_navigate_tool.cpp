@@ -1,0 +1,222 @@
+// The navigate tool, run as a user runs it, on an emulated navigation-grade IMU at rest: its errors
+// against the truth stay where the nav core's error model puts them. The prediction uses the
+// sensor errors the bag actually holds (measured minus truth, averaged over the same samples), so
+// it is exact to first order, not a fudge factor.
+#include <gtest/gtest.h>
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
+#include <sensor_msgs/Imu.h>
+#include <sensor_msgs/Temperature.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "imu_lab/nav/alignment_error_budget.h"
+#include "imu_lab/nav/earth_model.h"
+#include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/ros/navigation_csv.h"
+#include "ros_test_support.h"
+
+#ifndef IMU_LAB_CONFIG_DIR
+#define IMU_LAB_CONFIG_DIR "config"
+#endif
+
+namespace {
+
+using imu_lab::test_support::run_tool;
+using imu_lab::test_support::scratch_directory;
+
+constexpr double kArcsecPerRad = 180.0 / M_PI * 3600.0;
+constexpr double kAlignmentS = 300.0;
+constexpr double kNavigationS = 300.0;
+// rlg_navigation's white-noise densities (rad/sqrt(s), m/s/sqrt(s)) and accelerometer bias instability.
+constexpr double kGyroRandomWalk = 2.9e-7;
+constexpr double kAccelRandomWalk = 5.0e-5;
+constexpr double kAccelBiasInstability_m_s2 = 5.0e-5;
+
+// Columns of the error CSV by name.
+std::vector<std::map<std::string, double>> read_error_csv(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  std::stringstream header(line);
+  for (std::string name; std::getline(header, name, ',');) names.push_back(name);
+  std::vector<std::map<std::string, double>> rows;
+  while (std::getline(in, line)) {
+    std::stringstream cells(line);
+    std::map<std::string, double> row;
+    std::string cell;
+    for (std::size_t i = 0; std::getline(cells, cell, ','); ++i) row[names.at(i)] = std::stod(cell);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// Sensor errors the bag holds: mean of measured minus true rate and specific force over (from, to].
+struct MeanSensorError {
+  Eigen::Vector3d gyro_rad_s = Eigen::Vector3d::Zero();
+  Eigen::Vector3d accel_m_s2 = Eigen::Vector3d::Zero();
+  imu_lab::ros_io::TruthRecord truth;
+};
+
+MeanSensorError mean_sensor_error(const std::string& bag, std::int64_t from_ns, std::int64_t to_ns) {
+  std::map<std::int64_t, imu_lab::ros_io::TruthRecord> truth;
+  imu_lab::ros_io::for_each_truth(bag, "/imu/truth", [&](const auto& record) { truth[record.stamp_ns] = record; });
+  MeanSensorError mean;
+  std::size_t count = 0;
+  imu_lab::ros_io::for_each_imu(bag, "/imu/raw", [&](const imu_lab::ros_io::ImuRecord& record) {
+    if (record.stamp_ns <= from_ns || record.stamp_ns > to_ns) return;
+    const auto& t = truth.at(record.stamp_ns);
+    mean.gyro_rad_s += record.angular_rate_rad_s - t.angular_rate_rad_s;
+    mean.accel_m_s2 += record.specific_force_m_s2 - t.specific_force_m_s2;
+    mean.truth = t;
+    ++count;
+  });
+  mean.gyro_rad_s /= count;
+  mean.accel_m_s2 /= count;
+  return mean;
+}
+
+class NavigateTool : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    directory_ = new std::string(scratch_directory());
+    const auto made = run_tool("emulate", "--profile " + std::string(IMU_LAB_CONFIG_DIR) +
+                                              "/sensors/rlg_navigation.yaml --scenario " + IMU_LAB_CONFIG_DIR +
+                                              "/scenarios/static.yaml --duration-s " +
+                                              std::to_string(kAlignmentS + kNavigationS) +
+                                              " --rate-hz 100 --seed 11 --out " + bag());
+    ASSERT_EQ(made.exit_code, 0) << made.output;
+  }
+  static std::string bag() { return *directory_ + "/rlg_static.bag"; }
+  static std::string* directory_;
+};
+std::string* NavigateTool::directory_ = nullptr;
+
+TEST_F(NavigateTool, AlignmentAndNavigationErrorsStayWithinTheNavCorePrediction) {
+  const std::string out = *directory_ + "/trajectory.csv";
+  const auto run = run_tool("navigate", bag() + " --out " + out + " --every-s 1 --alignment-duration-s 300");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  std::printf("%s", run.output.c_str());
+  const auto trajectory = imu_lab::ros_io::read_trajectory_csv(out);
+  const auto errors = read_error_csv(*directory_ + "/trajectory_errors.csv");
+  ASSERT_EQ(errors.size(), trajectory.size());
+  ASSERT_NEAR(errors.back().at("time_since_alignment_s"), kNavigationS, 1.5);
+
+  // Alignment: the first-order budget of alignment_error_budget.h with the bag's own sensor errors
+  // over the alignment window (biases, scale factors and the noise of that window).
+  const std::int64_t alignment_end_ns = trajectory.front().stamp_ns;
+  const MeanSensorError during_alignment = mean_sensor_error(bag(), 0, alignment_end_ns);
+  const imu_lab::nav::EarthModel earth;
+  const double latitude = during_alignment.truth.latitude_rad;
+  const Eigen::Vector3d predicted = imu_lab::nav::predictedAlignmentError_rad(
+      during_alignment.gyro_rad_s, during_alignment.accel_m_s2, during_alignment.truth.q_body_to_enu, latitude,
+      earth.gravity_m_s2(latitude, during_alignment.truth.height_m), earth.earthRate_rad_s());
+  const Eigen::Vector3d measured(errors.front().at("attitude_error_east_rad"),
+                                 errors.front().at("attitude_error_north_rad"),
+                                 errors.front().at("attitude_error_up_rad"));
+  std::printf("[navigate] alignment error (arcsec, E N U): measured %.3f %.3f %.3f, predicted %.3f %.3f %.3f\n",
+              measured.x() * kArcsecPerRad, measured.y() * kArcsecPerRad, measured.z() * kArcsecPerRad,
+              predicted.x() * kArcsecPerRad, predicted.y() * kArcsecPerRad, predicted.z() * kArcsecPerRad);
+  EXPECT_GT(predicted.norm() * kArcsecPerRad, 3.0);  // the comparison is not vacuous
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_NEAR(measured[axis], predicted[axis], 0.01 * std::abs(predicted[axis]) + 0.05 / kArcsecPerRad)
+        << "axis " << axis;
+  }
+
+  // Navigation: a self-aligned static system cancels the constant horizontal accelerometer bias
+  // (by the tilt) and the east gyro bias (by the heading); what remains is the north gyro bias,
+  // which tilts the platform at a constant rate: east error g e_N t^3 / 6 (well inside the Schuler
+  // period), plus the white noise's random walks (3 sigma) and the accelerometer bias instability.
+  const MeanSensorError during_navigation = mean_sensor_error(bag(), alignment_end_ns, trajectory.back().stamp_ns);
+  const Eigen::Vector3d gyro_drift_enu = during_navigation.truth.q_body_to_enu * during_navigation.gyro_rad_s;
+  const Eigen::Vector3d accel_error_enu = during_navigation.truth.q_body_to_enu * during_navigation.accel_m_s2;
+  const double g = earth.gravity_m_s2(latitude, during_navigation.truth.height_m);
+  const double height_time_constant_s = 30.0;  // the held channel's default loop
+  double worst_ratio = 0.0;
+  for (const auto& row : errors) {
+    const double t = row.at("time_since_alignment_s");
+    const double horizontal_bound = g * gyro_drift_enu.head<2>().norm() * t * t * t / 6.0 +
+                                    3.0 * (g * kGyroRandomWalk * std::pow(t, 2.5) / std::sqrt(20.0) +
+                                           kAccelRandomWalk * std::pow(t, 1.5) / std::sqrt(3.0)) +
+                                    3.0 * kAccelBiasInstability_m_s2 * t * t / 2.0 + 0.01;
+    EXPECT_LE(row.at("horizontal_position_error_m"), horizontal_bound) << "at t = " << t << " s";
+    worst_ratio = std::max(worst_ratio, row.at("horizontal_position_error_m") / horizontal_bound);
+    // Held vertical channel (vertical_channel.h): |h error| <= |b| tau^2, b the vertical error.
+    const double height_bound =
+        (std::abs(accel_error_enu.z()) + 3.0 * kAccelBiasInstability_m_s2) * height_time_constant_s * height_time_constant_s;
+    EXPECT_LE(std::abs(row.at("height_error_m")), height_bound) << "at t = " << t << " s";
+  }
+  std::printf("[navigate] horizontal error %.3f m after %.0f s; worst fraction of its bound %.2f\n",
+              errors.back().at("horizontal_position_error_m"), errors.back().at("time_since_alignment_s"),
+              worst_ratio);
+  EXPECT_GT(errors.back().at("horizontal_position_error_m"), 0.05);  // the bound is not met trivially
+  // Heading drifts only by the up gyro bias: far below the alignment error.
+  EXPECT_NEAR(errors.back().at("attitude_error_up_rad"), measured.z(), 5.0 / kArcsecPerRad);
+}
+
+// Bad input: a clear message naming the bag and the problem, a non-zero exit, and no CSV at all.
+void expect_refused(const std::string& arguments, const std::string& out, const std::string& expected_text) {
+  const auto run = run_tool("navigate", arguments + " --out " + out);
+  EXPECT_NE(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find(expected_text), std::string::npos) << run.output;
+  EXPECT_FALSE(imu_lab::test_support::file_exists(out));
+  EXPECT_FALSE(imu_lab::test_support::file_exists(out.substr(0, out.size() - 4) + "_errors.csv"));
+}
+
+// Copies the first `count` /imu/raw and /imu/truth messages of the suite's bag, setting the
+// angular rate of message `nan_index` to NaN.
+std::string copy_with_nan(const std::string& source, const std::string& target, int count, int nan_index) {
+  rosbag::Bag in(source, rosbag::bagmode::Read);
+  rosbag::Bag out(target, rosbag::bagmode::Write);
+  int written = 0;
+  rosbag::View view(in, rosbag::TopicQuery(std::vector<std::string>{"/imu/raw", "/imu/truth"}));
+  for (const rosbag::MessageInstance& instance : view) {
+    if (const auto imu = instance.instantiate<sensor_msgs::Imu>()) {
+      sensor_msgs::Imu copy = *imu;
+      if (written++ == nan_index) copy.angular_velocity.y = std::nan("");
+      if (written > count) break;
+      out.write(instance.getTopic(), instance.getTime(), copy);
+    } else {
+      out.write(instance.getTopic(), instance.getTime(), instance);
+    }
+  }
+  return target;
+}
+
+TEST_F(NavigateTool, RefusesABagWithoutAnImuTopic) {
+  const std::string bag_path = *directory_ + "/no_imu.bag";
+  {
+    rosbag::Bag bag(bag_path, rosbag::bagmode::Write);
+    sensor_msgs::Temperature temperature;
+    temperature.header.stamp.fromSec(10.0);
+    bag.write("/imu/temperature", temperature.header.stamp, temperature);
+  }
+  expect_refused(bag_path + " --latitude-deg 50 --longitude-deg 10 --height-m 0", *directory_ + "/no_imu.csv",
+                 "has no sensor_msgs/Imu topic");
+}
+
+TEST_F(NavigateTool, RefusesATruncatedBag) {
+  const std::string truncated = *directory_ + "/truncated.bag";
+  const std::string bytes = imu_lab::test_support::read_file(bag());
+  std::ofstream(truncated, std::ios::binary) << bytes.substr(0, bytes.size() / 3);
+  expect_refused(truncated + " --alignment-duration-s 10", *directory_ + "/truncated.csv", "truncated.bag");
+}
+
+TEST_F(NavigateTool, RefusesNaNSamplesUnlessAskedToSkipThem) {
+  const std::string with_nan = copy_with_nan(bag(), *directory_ + "/nan.bag", 3000, 2000);
+  const std::string arguments = with_nan + " --alignment-duration-s 10";
+  expect_refused(arguments, *directory_ + "/nan.csv", "NaN");
+  const auto skipped = run_tool("navigate", arguments + " --skip-bad-samples --out " + *directory_ + "/nan.csv");
+  EXPECT_EQ(skipped.exit_code, 0) << skipped.output;
+  EXPECT_NE(skipped.output.find("skipped 1 invalid"), std::string::npos) << skipped.output;
+  EXPECT_TRUE(imu_lab::test_support::file_exists(*directory_ + "/nan.csv"));
+}
+
+TEST_F(NavigateTool, RefusesABagTooShortForTheAlignment) {
+  expect_refused(bag() + " --alignment-duration-s 5000", *directory_ + "/short.csv", "alignment needs 5000");
+}
+
+}  // namespace
