@@ -1,0 +1,80 @@
+#include "imu_lab/ros/navigation_messages.h"
+
+namespace imu_lab {
+namespace ros_io {
+namespace {
+
+geometry_msgs::Quaternion to_message(const Eigen::Quaterniond& q) {
+  geometry_msgs::Quaternion out;
+  out.w = q.w();
+  out.x = q.x();
+  out.y = q.y();
+  out.z = q.z();
+  return out;
+}
+
+template <class Vector3Like>
+Vector3Like to_vector(const Eigen::Vector3d& v) {
+  Vector3Like out;
+  out.x = v.x();
+  out.y = v.y();
+  out.z = v.z();
+  return out;
+}
+
+}  // namespace
+
+ros::Time to_ros_time(std::int64_t stamp_ns) {
+  ros::Time stamp;
+  stamp.fromNSec(static_cast<std::uint64_t>(stamp_ns));
+  return stamp;
+}
+
+nav_msgs::Odometry to_odometry(const NavigationSolution& solution, const NavigationFrames& frames) {
+  nav_msgs::Odometry odometry;
+  odometry.header.stamp = to_ros_time(solution.stamp_ns);
+  odometry.header.frame_id = frames.world;
+  odometry.child_frame_id = frames.body;
+  odometry.pose.pose = to_pose(solution, frames).pose;
+  odometry.twist.twist.linear = to_vector<geometry_msgs::Vector3>(solution.velocity_body_m_s);
+  odometry.twist.twist.angular = to_vector<geometry_msgs::Vector3>(solution.angular_rate_body_rad_s);
+  return odometry;
+}
+
+geometry_msgs::PoseStamped to_pose(const NavigationSolution& solution, const NavigationFrames& frames) {
+  geometry_msgs::PoseStamped pose;
+  pose.header.stamp = to_ros_time(solution.stamp_ns);
+  pose.header.frame_id = frames.world;
+  pose.pose.position = to_vector<geometry_msgs::Point>(solution.position_enu_m);
+  pose.pose.orientation = to_message(solution.q_body_to_enu);
+  return pose;
+}
+
+geometry_msgs::TransformStamped to_transform(const NavigationSolution& solution, const NavigationFrames& frames) {
+  geometry_msgs::TransformStamped transform;
+  transform.header.stamp = to_ros_time(solution.stamp_ns);
+  transform.header.frame_id = frames.world;
+  transform.child_frame_id = frames.body;
+  transform.transform.translation = to_vector<geometry_msgs::Vector3>(solution.position_enu_m);
+  transform.transform.rotation = to_message(solution.q_body_to_enu);
+  return transform;
+}
+
+imu_lab::Alignment to_alignment_message(const AlignmentResult& alignment, const NavigationFrames& frames) {
+  imu_lab::Alignment message;
+  message.header.stamp = to_ros_time(alignment.stamp_ns);
+  message.header.frame_id = frames.world;
+  message.method = alignment.method;
+  message.duration_s = alignment.duration_s;
+  message.orientation = to_message(alignment.q_body_to_enu);
+  message.roll_rad = alignment.roll_pitch_yaw_rad.x();
+  message.pitch_rad = alignment.roll_pitch_yaw_rad.y();
+  message.yaw_rad = alignment.roll_pitch_yaw_rad.z();
+  message.mean_angular_rate_rad_s = to_vector<geometry_msgs::Vector3>(alignment.mean_angular_rate_rad_s);
+  message.mean_specific_force_m_s2 = to_vector<geometry_msgs::Vector3>(alignment.mean_specific_force_m_s2);
+  message.predicted_error_sigma_rad = to_vector<geometry_msgs::Vector3>(alignment.predicted_error_sigma_rad);
+  return message;
+}
+
+}  // namespace ros_io
+}  // namespace imu_lab

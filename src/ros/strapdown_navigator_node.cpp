@@ -1,0 +1,170 @@
+#include "imu_lab/ros/strapdown_navigator_node.h"
+
+#include <cmath>
+
+#include "imu_lab/common/config_error.h"
+#include "imu_lab/ros/navigation_parameters.h"
+
+namespace imu_lab {
+namespace ros_io {
+namespace {
+
+constexpr double kLogThrottle_s = 5.0;
+
+template <class Value>
+Value positive_parameter(const ros::NodeHandle& private_node, const std::string& name, Value fallback) {
+  const Value value = private_node.param(name, fallback);
+  if (!(value > 0)) throw ConfigError(private_node.resolveName(name), name, "must be a positive number");
+  return value;
+}
+
+std::uint64_t skipped(const InputCounters& counters) {
+  return counters.invalid + counters.unordered + counters.gaps;
+}
+
+}  // namespace
+
+StrapdownNavigatorNode::StrapdownNavigatorNode(ros::NodeHandle& node, ros::NodeHandle& private_node) {
+  const NavigationSettings settings = load_navigation_settings(private_node);
+  session_ = std::make_unique<NavigationSession>(settings);
+  world_ = std::make_unique<LocalEnuFrame>(settings.navigator.earth, settings.latitude_rad, settings.longitude_rad,
+                                           settings.height_m);
+  frames_.world = private_node.param<std::string>("world_frame", frames_.world);
+  frames_.body = private_node.param<std::string>("body_frame", frames_.body);
+  publish_tf_ = private_node.param("publish_tf", true);
+  attitude_only_ = private_node.param("attitude_only", false);
+  path_interval_s_ = positive_parameter(private_node, "path_interval_s", 1.0);
+  path_max_poses_ = static_cast<std::size_t>(positive_parameter(private_node, "path_max_poses", 3600));
+  const int queue_size = positive_parameter(private_node, "queue_size", 2000);
+  const InputType input_type =
+      parse_input_type(private_node.resolveName("input_type"), private_node.param<std::string>("input_type", "imu"));
+  path_.header.frame_id = frames_.world;
+
+  odometry_publisher_ = node.advertise<nav_msgs::Odometry>("nav/odometry", queue_size);
+  path_publisher_ = node.advertise<nav_msgs::Path>("nav/path", 10);
+  alignment_publisher_ = node.advertise<imu_lab::Alignment>("nav/alignment", 1, /*latch=*/true);
+  if (input_type == InputType::kImu) {
+    input_subscriber_ = node.subscribe("imu/corrected", queue_size, &StrapdownNavigatorNode::on_imu, this);
+  } else {
+    input_subscriber_ = node.subscribe("imu/increment", queue_size, &StrapdownNavigatorNode::on_increment, this);
+  }
+  if (private_node.param("reference_height_topic", false)) {
+    reference_height_subscriber_ =
+        node.subscribe("reference_height", 10, &StrapdownNavigatorNode::on_reference_height, this);
+  }
+
+  diagnostics_.setHardwareID("strapdown_navigator");
+  diagnostics_.add("strapdown navigation", this, &StrapdownNavigatorNode::report);
+  diagnostics_timer_ = node.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    diagnostics_.update();
+  });
+  ROS_INFO("strapdown_navigator: %s input on %s; %s; world frame '%s' (ENU) at lat %.6f lon %.6f deg, h %.2f m",
+           datatype_of(input_type), input_subscriber_.getTopic().c_str(),
+           settings.align ? ("aligning for " + std::to_string(settings.alignment.duration_s) + " s").c_str()
+                          : "given attitude",
+           frames_.world.c_str(), settings.latitude_rad / kDegToRad, settings.longitude_rad / kDegToRad,
+           settings.height_m);
+}
+
+void StrapdownNavigatorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const auto& w = message->angular_velocity;
+  const auto& f = message->linear_acceleration;
+  const auto outcome = session_->add_rates(static_cast<std::int64_t>(message->header.stamp.toNSec()),
+                                           Eigen::Vector3d(w.x, w.y, w.z), Eigen::Vector3d(f.x, f.y, f.z));
+  after_sample(outcome, message->header.stamp);
+}
+
+void StrapdownNavigatorNode::on_increment(const imu_lab::ImuIncrement::ConstPtr& message) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  nav::ImuIncrement increment;
+  const auto& a = message->delta_angle_rad;
+  const auto& v = message->delta_velocity_m_s;
+  increment.delta_angle_rad = Eigen::Vector3d(a.x, a.y, a.z);
+  increment.delta_velocity_m_s = Eigen::Vector3d(v.x, v.y, v.z);
+  increment.dt_s = message->interval_s;
+  after_sample(session_->add_increment(static_cast<std::int64_t>(message->header.stamp.toNSec()), increment),
+               message->header.stamp);
+}
+
+void StrapdownNavigatorNode::on_reference_height(const std_msgs::Float64::ConstPtr& message) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (std::isfinite(message->data)) {
+    session_->set_reference_height(message->data);
+  } else {
+    ROS_WARN_THROTTLE(kLogThrottle_s, "strapdown_navigator: ignoring a non-finite reference height");
+  }
+}
+
+void StrapdownNavigatorNode::after_sample(SampleOutcome outcome, const ros::Time& stamp) {
+  if (is_skipped(outcome) || outcome == SampleOutcome::kAlignmentFailed) {
+    ROS_WARN_THROTTLE(kLogThrottle_s, "strapdown_navigator: sample at %.9f skipped: %s (counted in diagnostics)",
+                      stamp.toSec(), session_->last_problem().c_str());
+    if (is_skipped(outcome)) return;
+  }
+  if (window_samples_++ == 0) window_first_stamp_ = stamp;
+  window_last_stamp_ = std::max(window_last_stamp_, stamp);
+  if (session_->alignment() && !alignment_published_) {
+    alignment_published_ = true;
+    const AlignmentResult& alignment = *session_->alignment();
+    alignment_publisher_.publish(to_alignment_message(alignment, frames_));
+    ROS_INFO("strapdown_navigator: %s alignment: roll %.4f pitch %.4f yaw %.4f deg", alignment.method.c_str(),
+             alignment.roll_pitch_yaw_rad.x() / kDegToRad, alignment.roll_pitch_yaw_rad.y() / kDegToRad,
+             alignment.roll_pitch_yaw_rad.z() / kDegToRad);
+  }
+  if (session_->new_solution()) publish_solution();
+}
+
+void StrapdownNavigatorNode::publish_solution() {
+  NavigationSolution solution = make_solution(*session_, *world_);
+  if (attitude_only_) {
+    solution.position_enu_m.setZero();
+    solution.velocity_body_m_s.setZero();
+  }
+  odometry_publisher_.publish(to_odometry(solution, frames_));
+  if (publish_tf_) transform_broadcaster_.sendTransform(to_transform(solution, frames_));
+  const ros::Time stamp = to_ros_time(solution.stamp_ns);
+  if (path_.poses.empty() || (stamp - path_.poses.back().header.stamp).toSec() >= path_interval_s_) {
+    path_.poses.push_back(to_pose(solution, frames_));
+    if (path_.poses.size() > path_max_poses_) path_.poses.erase(path_.poses.begin());
+    path_.header.stamp = stamp;
+    path_publisher_.publish(path_);
+  }
+}
+
+void StrapdownNavigatorNode::report(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  const InputCounters& counters = session_->counters();
+  const double span_s = (window_last_stamp_ - window_first_stamp_).toSec();
+  const double input_rate_hz = window_samples_ > 1 && span_s > 0.0 ? (window_samples_ - 1) / span_s : 0.0;
+  const std::uint64_t newly_skipped = skipped(counters) - skipped(reported_counters_);
+  if (window_samples_ == 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "no input since the last report");
+  } else if (newly_skipped > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   std::to_string(newly_skipped) + " samples skipped since the last report: " +
+                       session_->last_problem());
+  } else if (!session_->navigating()) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "aligning");
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "navigating");
+  }
+  status.add("input rate from stamps [Hz]", input_rate_hz);
+  status.add("samples used", counters.used);
+  status.add("skipped: NaN/Inf or bad interval", counters.invalid);
+  status.add("skipped: unordered stamps", counters.unordered);
+  status.add("gaps", counters.gaps);
+  status.add("failed alignments", counters.failed_alignments);
+  status.add("alignment", session_->navigating() ? "done (" + session_->alignment()->method + ")"
+                                                 : std::to_string(session_->alignment_progress_s()) + " of " +
+                                                       std::to_string(session_->settings().alignment.duration_s) + " s");
+  if (session_->navigating()) {
+    const Eigen::Vector3d rpy = roll_pitch_yaw_from_quaternion(session_->state().q_body_to_enu) / kDegToRad;
+    status.addf("roll, pitch, yaw [deg]", "%.4f, %.4f, %.4f", rpy.x(), rpy.y(), rpy.z());
+  }
+  window_samples_ = 0;
+  reported_counters_ = counters;
+}
+
+}  // namespace ros_io
+}  // namespace imu_lab

@@ -1,0 +1,110 @@
+// rostest checker for strapdown_navigator: emulates a navigation-grade IMU at rest into a bag,
+// runs the navigate tool on it for the reference solution, then plays the bag with
+// `rosbag play --clock` into the node and checks that every published odometry equals the tool's
+// solution at the same stamp, that tf2 serves world -> imu_link, and that the alignment is latched.
+// Counts and generous time-outs only, never wall-clock rates.
+#include <gtest/gtest.h>
+#include <imu_lab/Alignment.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+#include <stdlib.h>
+#include <tf2_ros/transform_listener.h>
+
+#include <cstdio>
+#include <map>
+#include <string>
+
+#include "imu_lab/ros/navigation_csv.h"
+#include "imu_lab/ros/navigation_messages.h"
+
+namespace {
+
+std::string private_string(const std::string& name) {
+  std::string value;
+  ros::param::get("~" + name, value);
+  return value;
+}
+
+void run_or_fail(const std::string& command) {
+  ASSERT_EQ(std::system(command.c_str()), 0) << "failed: " << command;
+}
+
+TEST(StrapdownNavigatorNode, PublishesTheNavigateToolsSolutionAndTheTransform) {
+  char pattern[] = "/tmp/imu_lab_navigator_check_XXXXXX";
+  const std::string directory = ::mkdtemp(pattern);
+  const std::string bag = directory + "/static.bag";
+  const std::string reference_csv = directory + "/reference.csv";
+  run_or_fail("rosrun imu_lab emulate " + private_string("emulate_arguments") + " --out " + bag + " > " + directory +
+              "/emulate.log 2>&1");
+  run_or_fail("rosrun imu_lab navigate " + bag + " " + private_string("navigate_arguments") + " --out " +
+              reference_csv + " > " + directory + "/navigate.log 2>&1");
+  const auto reference = imu_lab::ros_io::read_trajectory_csv(reference_csv);
+  ASSERT_GT(reference.size(), 100u);
+
+  ros::NodeHandle node;
+  std::map<ros::Time, nav_msgs::Odometry> odometry;
+  std::vector<imu_lab::Alignment> alignments;
+  auto odometry_subscriber = node.subscribe<nav_msgs::Odometry>(
+      "nav/odometry", 100000, [&](const nav_msgs::Odometry::ConstPtr& m) { odometry[m->header.stamp] = *m; });
+  auto alignment_subscriber = node.subscribe<imu_lab::Alignment>(
+      "nav/alignment", 10, [&](const imu_lab::Alignment::ConstPtr& m) { alignments.push_back(*m); });
+  tf2_ros::Buffer buffer(ros::Duration(600.0));
+  tf2_ros::TransformListener listener(buffer);
+
+  // The node's input subscription makes --wait-for-subscribers start the playback.
+  // The bag before the options: --topics takes every argument after it.
+  const std::string play = "rosbag play --clock --wait-for-subscribers --quiet --queue=100000 " + bag + " " +
+                           private_string("play_arguments") + " > " + directory + "/play.log 2>&1";
+  FILE* player = ::popen(play.c_str(), "r");
+  ASSERT_NE(player, nullptr);
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(240.0);  // generous for loaded CI
+  while (ros::ok() && ros::WallTime::now() < deadline && odometry.size() < reference.size()) {
+    ros::spinOnce();
+    ros::WallDuration(0.005).sleep();
+  }
+  EXPECT_EQ(::pclose(player), 0) << "rosbag play failed; see " << directory << "/play.log";
+  ros::WallDuration(0.5).sleep();
+  ros::spinOnce();
+  ASSERT_EQ(odometry.size(), reference.size()) << "the node did not publish one odometry per tool solution in time";
+
+  // Same input, same NavigationSession: the same numbers, to round-off.
+  double worst_position_m = 0.0;
+  double worst_attitude_rad = 0.0;
+  for (const auto& expected : reference) {
+    const auto found = odometry.find(imu_lab::ros_io::to_ros_time(expected.stamp_ns));
+    ASSERT_NE(found, odometry.end()) << "no odometry at " << imu_lab::ros_io::format_stamp(expected.stamp_ns);
+    const auto& pose = found->second.pose.pose;
+    const Eigen::Vector3d position(pose.position.x, pose.position.y, pose.position.z);
+    const Eigen::Quaterniond q(pose.orientation.w, pose.orientation.x, pose.orientation.y, pose.orientation.z);
+    worst_position_m = std::max(worst_position_m, (position - expected.position_enu_m).norm());
+    worst_attitude_rad = std::max(worst_attitude_rad, q.angularDistance(expected.q_body_to_enu));
+    EXPECT_EQ(found->second.header.frame_id, "world");
+    EXPECT_EQ(found->second.child_frame_id, "imu_link");
+  }
+  std::printf("[navigator_check] %zu odometry messages vs the tool: worst position %.3g m, attitude %.3g rad\n",
+              odometry.size(), worst_position_m, worst_attitude_rad);
+  EXPECT_LT(worst_position_m, 1e-9);
+  EXPECT_LT(worst_attitude_rad, 1e-12);
+
+  // tf2: world -> imu_link at the last solution's stamp is that solution's pose.
+  const auto& last = odometry.rbegin()->second;
+  std::string why;
+  ASSERT_TRUE(buffer.canTransform("world", "imu_link", last.header.stamp, ros::Duration(10.0), &why)) << why;
+  const auto transform = buffer.lookupTransform("world", "imu_link", last.header.stamp);
+  EXPECT_NEAR(transform.transform.translation.x, last.pose.pose.position.x, 1e-12);
+  EXPECT_NEAR(transform.transform.translation.y, last.pose.pose.position.y, 1e-12);
+  EXPECT_NEAR(transform.transform.rotation.w, last.pose.pose.orientation.w, 1e-12);
+  EXPECT_NEAR(transform.transform.rotation.z, last.pose.pose.orientation.z, 1e-12);
+
+  ASSERT_EQ(alignments.size(), 1u);
+  EXPECT_EQ(alignments[0].method, "gyrocompass");
+  EXPECT_EQ(alignments[0].header.stamp, odometry.begin()->first);  // navigation starts where alignment ends
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "navigator_check");
+  return RUN_ALL_TESTS();
+}
