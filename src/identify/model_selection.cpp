@@ -121,8 +121,9 @@ SolverSettings solver_settings(const FitOptions& options) {
   return settings;
 }
 
-double lr_threshold(const FitOptions& options, int parameters) {
-  return chi_squared_quantile(1.0 - options.significance, parameters);
+double slot_lr_threshold(const FitOptions& options, const TermSlot& slot, int point_count) {
+  const double trials = slot.shape_free ? std::max(1, point_count) : 1.0;
+  return chi_squared_quantile(1.0 - options.significance / trials, slot_parameter_count(slot));
 }
 
 SolveOutcome refit_structure(const std::vector<FitPoint>& points, const ModelStructure& structure,
@@ -136,6 +137,7 @@ SolveOutcome refit_structure(const std::vector<FitPoint>& points, const ModelStr
 SelectedModel select_model(const std::vector<FitPoint>& points, const DataSpan& span,
                            const FitOptions& options) {
   const SolverSettings settings = solver_settings(options);
+  const int point_count = static_cast<int>(points.size());
   std::vector<TermSlot> remaining = candidate_slots(options, span);
   SelectedModel current;
   current.structure.white_rate_corner_hz = options.white_rate_corner_hz;
@@ -169,7 +171,7 @@ SelectedModel select_model(const std::vector<FitPoint>& points, const DataSpan& 
                          term_kind_name(remaining[best_index].kind), 0.0, 0.0};
       if (!current.structure.slots.empty()) {
         step.lr_statistic = 2.0 * (current.cost - best.cost);
-        step.threshold = lr_threshold(options, slot_parameter_count(remaining[best_index]));
+        step.threshold = slot_lr_threshold(options, remaining[best_index], point_count);
         if (!(step.lr_statistic > step.threshold)) break;
       }
       current.steps.push_back(step);
@@ -197,7 +199,8 @@ SelectedModel select_model(const std::vector<FitPoint>& points, const DataSpan& 
       if (!outcome.usable) continue;
       const double lr = 2.0 * (outcome.cost - current.cost);
       current.removal_lr_statistics[i] = lr;
-      const double margin = lr - lr_threshold(options, slot_parameter_count(current.structure.slots[i]));
+      const double margin =
+          lr - slot_lr_threshold(options, current.structure.slots[i], point_count);
       if (margin < worst_margin) {
         worst_margin = margin;
         worst_slot = i;
@@ -209,7 +212,7 @@ SelectedModel select_model(const std::vector<FitPoint>& points, const DataSpan& 
     const TermSlot removed = current.structure.slots[worst_slot];
     current.steps.push_back({"remove", term_kind_name(removed.kind),
                              current.removal_lr_statistics[worst_slot],
-                             lr_threshold(options, slot_parameter_count(removed))});
+                             slot_lr_threshold(options, removed, point_count)});
     current.structure = worst_structure;
     current.log_parameters = worst_outcome.log_parameters;
     current.cost = worst_outcome.cost;

@@ -36,8 +36,11 @@ std::vector<TermSlot> candidate_slots(const FitOptions& options, const DataSpan&
 
 SolverSettings solver_settings(const FitOptions& options);
 
-// chi2 quantile (1 - significance, parameters) a likelihood-ratio statistic must exceed.
-double lr_threshold(const FitOptions& options, int parameters);
+// The chi2 quantile (1 - significance, its parameter count) a likelihood-ratio statistic must
+// exceed for one slot to enter or stay. A term with a free shape was searched over one start per point,
+// so its statistic is the best of ~point_count tries: Bonferroni, significance / point_count
+// (without it a long Markov term wins on the few-EDF last points and displaces K).
+double slot_lr_threshold(const FitOptions& options, const TermSlot& slot, int point_count);
 
 SelectedModel select_model(const std::vector<FitPoint>& points, const DataSpan& span,
                            const FitOptions& options);
