@@ -28,9 +28,7 @@ Eigen::Vector3d coning_rate_body_wrt_mount_rad_s(double half_angle_rad, double f
 }
 
 ConingMotion::ConingMotion(const ScenarioConfig& scenario)
-    : scenario_(scenario),
-      coning_(scenario.coning.value()),
-      longest_piece_s_(std::min(1.0, 1.0 / (kTwoPi * coning_.frequency_hz))) {}
+    : SmoothPeriodicMotion(scenario, scenario.coning.value().frequency_hz), coning_(*scenario.coning) {}
 
 TruthState ConingMotion::truth_at(double time_s) const {
   LocalLevelMotion motion;

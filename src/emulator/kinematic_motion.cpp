@@ -1,5 +1,7 @@
 #include "imu_lab/emulator/kinematic_motion.h"
 
+#include <algorithm>
+
 #include "imu_lab/emulator/piecewise_quadrature.h"
 
 namespace imu_lab {
@@ -32,6 +34,9 @@ TruthIncrement KinematicMotion::increment(double start_s, double interval_s) {
   result.mean_temperature_c = integral.temperature / interval_s;
   return result;
 }
+
+SmoothPeriodicMotion::SmoothPeriodicMotion(const ScenarioConfig& scenario, double frequency_hz)
+    : scenario_(scenario), longest_piece_s_(std::min(1.0, 1.0 / (2.0 * 3.14159265358979323846 * frequency_hz))) {}
 
 }  // namespace emulator
 }  // namespace imu_lab

@@ -14,10 +14,9 @@ constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
 }
 
 ScullingMotion::ScullingMotion(const ScenarioConfig& scenario)
-    : scenario_(scenario),
-      sculling_(scenario.sculling.value()),
-      vibration_enu_(sculling_.mount_body_to_enu * Eigen::Vector3d::Unit(sculling_.vibration_axis)),
-      longest_piece_s_(std::min(1.0, 1.0 / (kTwoPi * sculling_.frequency_hz))) {}
+    : SmoothPeriodicMotion(scenario, scenario.sculling.value().frequency_hz),
+      sculling_(*scenario.sculling),
+      vibration_enu_(sculling_.mount_body_to_enu * Eigen::Vector3d::Unit(sculling_.vibration_axis)) {}
 
 TruthState ScullingMotion::truth_at(double time_s) const {
   const double w = kTwoPi * sculling_.frequency_hz;

@@ -16,20 +16,13 @@ namespace emulator {
 Eigen::Quaterniond coning_attitude_body_to_mount(double half_angle_rad, double frequency_hz, double time_s);
 Eigen::Vector3d coning_rate_body_wrt_mount_rad_s(double half_angle_rad, double frequency_hz, double time_s);
 
-class ConingMotion : public KinematicMotion {
+class ConingMotion : public SmoothPeriodicMotion {
  public:
   explicit ConingMotion(const ScenarioConfig& scenario);
   TruthState truth_at(double time_s) const override;
 
- protected:
-  const std::vector<double>& breakpoints_s() const override { return no_breakpoints_; }
-  double longest_smooth_piece_s() const override { return longest_piece_s_; }
-
  private:
-  ScenarioConfig scenario_;
   ConingConfig coning_;
-  std::vector<double> no_breakpoints_;
-  double longest_piece_s_ = 1.0;
 };
 
 }  // namespace emulator

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "imu_lab/emulator/motion_source.h"
+#include "imu_lab/emulator/scenario.h"
 
 namespace imu_lab {
 namespace emulator {
@@ -22,6 +23,21 @@ class KinematicMotion : public MotionSource {
   // Longest piece one quadrature covers: short enough that the fastest oscillation or rotation
   // of the truth turns by at most ~1 rad across it.
   virtual double longest_smooth_piece_s() const = 0;
+};
+
+// A smooth oscillation at the scenario's site (coning, sculling): no breakpoints, and pieces
+// of at most 1 rad of its phase.
+class SmoothPeriodicMotion : public KinematicMotion {
+ protected:
+  SmoothPeriodicMotion(const ScenarioConfig& scenario, double frequency_hz);
+  const std::vector<double>& breakpoints_s() const override { return no_breakpoints_; }
+  double longest_smooth_piece_s() const override { return longest_piece_s_; }
+
+  ScenarioConfig scenario_;
+
+ private:
+  std::vector<double> no_breakpoints_;
+  double longest_piece_s_ = 1.0;
 };
 
 }  // namespace emulator

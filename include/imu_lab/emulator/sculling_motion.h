@@ -11,21 +11,14 @@
 namespace imu_lab {
 namespace emulator {
 
-class ScullingMotion : public KinematicMotion {
+class ScullingMotion : public SmoothPeriodicMotion {
  public:
   explicit ScullingMotion(const ScenarioConfig& scenario);
   TruthState truth_at(double time_s) const override;
 
- protected:
-  const std::vector<double>& breakpoints_s() const override { return no_breakpoints_; }
-  double longest_smooth_piece_s() const override { return longest_piece_s_; }
-
  private:
-  ScenarioConfig scenario_;
   ScullingConfig sculling_;
   Eigen::Vector3d vibration_enu_ = Eigen::Vector3d::Zero();
-  std::vector<double> no_breakpoints_;
-  double longest_piece_s_ = 1.0;
 };
 
 }  // namespace emulator
