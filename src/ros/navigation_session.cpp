@@ -65,20 +65,27 @@ SampleOutcome NavigationSession::skip(SampleOutcome outcome, std::uint64_t& coun
   return outcome;
 }
 
+bool NavigationSession::begin_sample(std::int64_t stamp_ns, std::optional<std::int64_t>& interval_start_ns) {
+  last_problem_.clear();
+  new_solution_ = false;
+  if (previous_stamp_ns_ && stamp_ns <= *previous_stamp_ns_) {
+    skip(SampleOutcome::kSkippedUnordered, counters_.unordered,
+         "stamp " + std::to_string(stamp_ns * kSecondsPerNanosecond) + " s is not after the previous one");
+    return false;
+  }
+  interval_start_ns = previous_stamp_ns_;
+  previous_stamp_ns_ = stamp_ns;
+  return true;
+}
+
 bool NavigationSession::is_gap(double interval_s, double expected_interval_s) const {
   return expected_interval_s > 0.0 && interval_s > settings_.gap_factor * expected_interval_s;
 }
 
 SampleOutcome NavigationSession::add_rates(std::int64_t stamp_ns, const Eigen::Vector3d& angular_rate_rad_s,
                                            const Eigen::Vector3d& specific_force_m_s2) {
-  last_problem_.clear();
-  new_solution_ = false;
-  if (previous_stamp_ns_ && stamp_ns <= *previous_stamp_ns_) {
-    return skip(SampleOutcome::kSkippedUnordered, counters_.unordered,
-                "stamp " + std::to_string(stamp_ns * kSecondsPerNanosecond) + " s is not after the previous one");
-  }
-  const std::optional<std::int64_t> start_ns = previous_stamp_ns_;
-  previous_stamp_ns_ = stamp_ns;
+  std::optional<std::int64_t> start_ns;
+  if (!begin_sample(stamp_ns, start_ns)) return SampleOutcome::kSkippedUnordered;
   if (!angular_rate_rad_s.allFinite() || !specific_force_m_s2.allFinite()) {
     return skip(SampleOutcome::kSkippedInvalid, counters_.invalid, "NaN or Inf in the angular rate or specific force");
   }
@@ -100,14 +107,8 @@ SampleOutcome NavigationSession::add_rates(std::int64_t stamp_ns, const Eigen::V
 }
 
 SampleOutcome NavigationSession::add_increment(std::int64_t stamp_ns, const nav::ImuIncrement& increment) {
-  last_problem_.clear();
-  new_solution_ = false;
-  if (previous_stamp_ns_ && stamp_ns <= *previous_stamp_ns_) {
-    return skip(SampleOutcome::kSkippedUnordered, counters_.unordered,
-                "stamp " + std::to_string(stamp_ns * kSecondsPerNanosecond) + " s is not after the previous one");
-  }
-  const std::optional<std::int64_t> start_ns = previous_stamp_ns_;
-  previous_stamp_ns_ = stamp_ns;
+  std::optional<std::int64_t> start_ns;
+  if (!begin_sample(stamp_ns, start_ns)) return SampleOutcome::kSkippedUnordered;
   if (!increment.delta_angle_rad.allFinite() || !increment.delta_velocity_m_s.allFinite() ||
       !(increment.dt_s > 0.0) || !std::isfinite(increment.dt_s)) {
     return skip(SampleOutcome::kSkippedInvalid, counters_.invalid,

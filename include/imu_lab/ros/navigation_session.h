@@ -94,6 +94,9 @@ class NavigationSession {
   void set_reference_height(double reference_height_m) { navigator_.setReferenceHeight(reference_height_m); }
 
  private:
+  // Resets the per-sample flags; false (counted) for a stamp not after the previous one, else the
+  // interval's start (none for the first sample) and this stamp becomes the previous one.
+  bool begin_sample(std::int64_t stamp_ns, std::optional<std::int64_t>& interval_start_ns);
   SampleOutcome skip(SampleOutcome outcome, std::uint64_t& counter, const std::string& problem);
   SampleOutcome integrate(std::int64_t stamp_ns, const nav::ImuIncrement& increment);
   SampleOutcome finish_alignment(std::int64_t stamp_ns);
