@@ -92,6 +92,149 @@ bool is_extra_term(TermKind kind) {
          kind == TermKind::kZeroDcFamily;
 }
 
+struct SelectionContext {
+  const std::vector<FitPoint>& points;
+  const DataSpan& span;
+  const FitOptions& options;
+  SolverSettings settings;
+  int point_count;
+};
+
+struct Addition {
+  SolveOutcome outcome;  // cost infinity when no candidate could be fitted
+  ModelStructure structure;
+  size_t index = 0;  // into the candidate list
+};
+
+// The candidate whose addition to `base` fits best (extra terms only if allowed).
+Addition best_addition(const SelectionContext& context, const ModelStructure& base,
+                       const std::vector<double>& base_parameters,
+                       const std::vector<TermSlot>& candidates, bool allow_extras) {
+  Addition best;
+  best.outcome.cost = kInfinity;
+  for (size_t c = 0; c < candidates.size(); ++c) {
+    if (is_extra_term(candidates[c].kind) && !allow_extras) continue;
+    ModelStructure extended;
+    const SolveOutcome outcome =
+        fit_with_new_slot(context.points, base, base_parameters, candidates[c], context.span,
+                          context.options, context.settings, &extended);
+    if (outcome.usable && outcome.cost < best.outcome.cost) {
+      best.outcome = outcome;
+      best.structure = extended;
+      best.index = c;
+    }
+  }
+  return best;
+}
+
+// Forward, in two tiers: the standards' power-law terms first (the hypothesis a reader
+// expects), then Markov, sinusoid and zero-DC terms when the data still ask for them. A
+// flexible two-parameter term admitted first would otherwise absorb a mixture of simple terms
+// (a long Markov mimicking B + K) and block them.
+void forward_pass(const SelectionContext& context, std::vector<TermSlot>* remaining,
+                  SelectedModel* current) {
+  for (bool extras : {false, true}) {
+    while (true) {
+      const Addition addition = best_addition(context, current->structure, current->log_parameters,
+                                        *remaining, extras);
+      if (!std::isfinite(addition.outcome.cost)) break;
+      const SolveOutcome best = polish(context.points, addition.structure, addition.outcome,
+                                       context.span, context.settings);
+      const ModelStructure& best_structure = addition.structure;
+      const size_t best_index = addition.index;
+      const TermSlot& added = (*remaining)[best_index];
+      SelectionStep step{current->structure.slots.empty() ? "start" : "add",
+                         term_kind_name(added.kind), 0.0, 0.0};
+      if (!current->structure.slots.empty()) {
+        step.lr_statistic = 2.0 * (current->cost - best.cost);
+        step.threshold = slot_lr_threshold(context.options, added, context.point_count);
+        if (!(step.lr_statistic > step.threshold)) break;
+      }
+      current->steps.push_back(step);
+      current->structure = best_structure;
+      current->log_parameters = best.log_parameters;
+      current->cost = best.cost;
+      remaining->erase(remaining->begin() + best_index);
+    }
+  }
+}
+
+// Backward: drop the least significant term while its removal is not significant; the dropped
+// slots go back to `remaining`. Leaves each kept slot's removal statistic; true if any dropped.
+bool backward_pass(const SelectionContext& context, std::vector<TermSlot>* remaining,
+                   SelectedModel* current) {
+  bool removed_any = false;
+  while (true) {
+    const int slot_count = static_cast<int>(current->structure.slots.size());
+    current->removal_lr_statistics.assign(slot_count, kInfinity);
+    if (slot_count <= 1) break;
+    double worst_margin = kInfinity;
+    int worst_slot = -1;
+    SolveOutcome worst_outcome;
+    ModelStructure worst_structure;
+    for (int i = 0; i < slot_count; ++i) {
+      ModelStructure reduced = current->structure;
+      std::vector<double> reduced_parameters = current->log_parameters;
+      remove_slot(reduced, reduced_parameters, i);
+      const SolveOutcome outcome = refit_structure(context.points, reduced, reduced_parameters,
+                                                   context.span, context.settings);
+      if (!outcome.usable) continue;
+      const double lr = 2.0 * (outcome.cost - current->cost);
+      current->removal_lr_statistics[i] = lr;
+      const double margin = lr - slot_lr_threshold(context.options, current->structure.slots[i],
+                                                   context.point_count);
+      if (margin < worst_margin) {
+        worst_margin = margin;
+        worst_slot = i;
+        worst_outcome = outcome;
+        worst_structure = reduced;
+      }
+    }
+    if (worst_slot < 0 || worst_margin >= 0.0) break;
+    const TermSlot removed = current->structure.slots[worst_slot];
+    current->steps.push_back(
+        {"remove", term_kind_name(removed.kind), current->removal_lr_statistics[worst_slot],
+         slot_lr_threshold(context.options, removed, context.point_count)});
+    remaining->push_back(removed);
+    current->structure = worst_structure;
+    current->log_parameters = worst_outcome.log_parameters;
+    current->cost = worst_outcome.cost;
+    removed_any = true;
+  }
+  return removed_any;
+}
+
+// Swap: an extra term (Markov, sinusoid, zero-DC) stays only if no absent standard term does
+// its job nearly as well (within its own threshold): a sinusoid near Nyquist can stand in for
+// white noise on the first points, and the standard term is the reading a user expects.
+bool swap_pass(const SelectionContext& context, std::vector<TermSlot>* remaining,
+               SelectedModel* current) {
+  for (size_t i = 0; i < current->structure.slots.size(); ++i) {
+    const TermSlot extra = current->structure.slots[i];
+    if (!is_extra_term(extra.kind)) continue;
+    ModelStructure reduced = current->structure;
+    std::vector<double> reduced_parameters = current->log_parameters;
+    remove_slot(reduced, reduced_parameters, static_cast<int>(i));
+    const Addition addition =
+        best_addition(context, reduced, reduced_parameters, *remaining, false);
+    const SolveOutcome& best = addition.outcome;
+    const ModelStructure& best_structure = addition.structure;
+    const size_t best_index = addition.index;
+    const double lr = 2.0 * (best.cost - current->cost);
+    const double threshold = slot_lr_threshold(context.options, extra, context.point_count);
+    if (!(lr < threshold)) continue;
+    current->steps.push_back({"swap " + term_kind_name(extra.kind) + " for",
+                              term_kind_name((*remaining)[best_index].kind), lr, threshold});
+    remaining->erase(remaining->begin() + best_index);
+    remaining->push_back(extra);
+    current->structure = best_structure;
+    current->log_parameters = best.log_parameters;
+    current->cost = best.cost;
+    return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::vector<TermSlot> candidate_slots(const FitOptions& options, const DataSpan& span) {
@@ -136,86 +279,21 @@ SolveOutcome refit_structure(const std::vector<FitPoint>& points, const ModelStr
 
 SelectedModel select_model(const std::vector<FitPoint>& points, const DataSpan& span,
                            const FitOptions& options) {
-  const SolverSettings settings = solver_settings(options);
-  const int point_count = static_cast<int>(points.size());
+  const SelectionContext context{points, span, options, solver_settings(options),
+                                 static_cast<int>(points.size())};
   std::vector<TermSlot> remaining = candidate_slots(options, span);
   SelectedModel current;
   current.structure.white_rate_corner_hz = options.white_rate_corner_hz;
   current.cost = kInfinity;
-
-  // Forward, in two tiers: the standards' power-law terms first (the hypothesis a reader
-  // expects), then Markov, sinusoid and zero-DC terms when the data still ask for them. A
-  // flexible two-parameter term admitted first would otherwise absorb a mixture of simple terms
-  // (a long Markov mimicking B + K) and block them.
-  for (bool extras : {false, true}) {
-    while (true) {
-      SolveOutcome best;
-      best.cost = kInfinity;
-      ModelStructure best_structure;
-      size_t best_index = 0;
-      for (size_t c = 0; c < remaining.size(); ++c) {
-        if (is_extra_term(remaining[c].kind) && !extras) continue;
-        ModelStructure extended;
-        const SolveOutcome outcome =
-            fit_with_new_slot(points, current.structure, current.log_parameters, remaining[c],
-                              span, options, settings, &extended);
-        if (outcome.usable && outcome.cost < best.cost) {
-          best = outcome;
-          best_structure = extended;
-          best_index = c;
-        }
-      }
-      if (!std::isfinite(best.cost)) break;
-      best = polish(points, best_structure, best, span, settings);
-      SelectionStep step{current.structure.slots.empty() ? "start" : "add",
-                         term_kind_name(remaining[best_index].kind), 0.0, 0.0};
-      if (!current.structure.slots.empty()) {
-        step.lr_statistic = 2.0 * (current.cost - best.cost);
-        step.threshold = slot_lr_threshold(options, remaining[best_index], point_count);
-        if (!(step.lr_statistic > step.threshold)) break;
-      }
-      current.steps.push_back(step);
-      current.structure = best_structure;
-      current.log_parameters = best.log_parameters;
-      current.cost = best.cost;
-      remaining.erase(remaining.begin() + best_index);
-    }
-  }
-
-  // Backward: drop the least significant term while its removal is not significant.
-  while (true) {
-    const int slot_count = static_cast<int>(current.structure.slots.size());
-    current.removal_lr_statistics.assign(slot_count, kInfinity);
-    if (slot_count <= 1) break;
-    double worst_margin = kInfinity;
-    int worst_slot = -1;
-    SolveOutcome worst_outcome;
-    ModelStructure worst_structure;
-    for (int i = 0; i < slot_count; ++i) {
-      ModelStructure reduced = current.structure;
-      std::vector<double> reduced_parameters = current.log_parameters;
-      remove_slot(reduced, reduced_parameters, i);
-      const SolveOutcome outcome = refit_structure(points, reduced, reduced_parameters, span, settings);
-      if (!outcome.usable) continue;
-      const double lr = 2.0 * (outcome.cost - current.cost);
-      current.removal_lr_statistics[i] = lr;
-      const double margin =
-          lr - slot_lr_threshold(options, current.structure.slots[i], point_count);
-      if (margin < worst_margin) {
-        worst_margin = margin;
-        worst_slot = i;
-        worst_outcome = outcome;
-        worst_structure = reduced;
-      }
-    }
-    if (worst_slot < 0 || worst_margin >= 0.0) break;
-    const TermSlot removed = current.structure.slots[worst_slot];
-    current.steps.push_back({"remove", term_kind_name(removed.kind),
-                             current.removal_lr_statistics[worst_slot],
-                             slot_lr_threshold(options, removed, point_count)});
-    current.structure = worst_structure;
-    current.log_parameters = worst_outcome.log_parameters;
-    current.cost = worst_outcome.cost;
+  // Greedy forward selection depends on the order terms enter (a sinusoid admitted before a
+  // second Markov can stand in for white noise); after a removal or swap, search again.
+  constexpr int kMaxRounds = 3;
+  for (int round = 0; round < kMaxRounds; ++round) {
+    forward_pass(context, &remaining, &current);
+    const bool removed = backward_pass(context, &remaining, &current);
+    const bool swapped = swap_pass(context, &remaining, &current);
+    if (swapped) backward_pass(context, &remaining, &current);
+    if (!removed && !swapped) break;
   }
 
   // Canonical order, carrying the removal statistics along.

@@ -1,7 +1,9 @@
 // Stepwise model selection by likelihood ratio: forward from the best single term, adding the
 // candidate that improves the likelihood most while the improvement is significant; then
-// backward, dropping any term whose removal does not worsen the fit significantly. Absent terms
-// therefore come out absent instead of being forced to a small, meaningless value.
+// backward, dropping any term whose removal does not worsen the fit significantly; an extra term
+// (Markov, sinusoid, zero-DC) that a standard term can replace within its threshold is swapped
+// for it; repeated while anything changes. Absent terms therefore come out absent instead of
+// being forced to a small, meaningless value.
 #pragma once
 
 #include <string>
@@ -16,7 +18,7 @@ namespace imu_lab {
 namespace identify {
 
 struct SelectionStep {
-  std::string action;  // "start", "add", "remove"
+  std::string action;  // "start", "add", "remove", "swap <extra term> for"
   std::string term;    // kind name
   double lr_statistic = 0.0;  // 2 (log L_larger - log L_smaller)
   double threshold = 0.0;     // chi2 quantile it was compared with

@@ -1,0 +1,71 @@
+// Terms beyond the IEEE five on exact (noise-free) curves: a sinusoid (eq. 5.8), a second Markov
+// process and, when enabled, seed 003's zero-at-DC family. Each must be selected and recovered.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "imu_lab/identify/fit.h"
+
+namespace imu_lab {
+namespace identify {
+namespace {
+
+constexpr double kTau0 = 0.01, kLength = 7200.0;
+
+std::vector<allan::StabilityPoint> exact_curve(const NoiseModel& model) {
+  std::vector<allan::StabilityPoint> points;
+  for (int m : octave_averaging_factors(static_cast<long long>(kLength / kTau0))) {
+    allan::StabilityPoint p;
+    p.averaging_factor = m;
+    p.tau_s = m * kTau0;
+    p.deviation = std::sqrt(model_avar(model, p.tau_s));
+    p.edf = 1.5 * kLength / p.tau_s;
+    points.push_back(p);
+  }
+  return points;
+}
+
+const TermEstimate& expect_present(const FitResult& fit, const std::string& name) {
+  const TermEstimate* term = fit.find(name);
+  EXPECT_NE(term, nullptr) << name;
+  static const TermEstimate missing;
+  if (term == nullptr) return missing;
+  EXPECT_EQ(term->status, TermStatus::kPresent) << name;
+  return *term;
+}
+
+TEST(IdentifyExtraTerms, SinusoidIsFoundWithItsFrequency) {
+  NoiseModel truth;
+  truth.terms = {{TermKind::kWhiteRate, 1e-4, 0.0}, {TermKind::kSinusoid, 2e-4, 0.05}};
+  const FitResult fit = fit_noise_model(exact_curve(truth), kTau0, kLength);
+  const TermEstimate& sinusoid = expect_present(fit, "sinusoid");
+  EXPECT_NEAR(sinusoid.amplitude.value, 2e-4, 2e-6);
+  EXPECT_NEAR(sinusoid.shape.value, 0.05, 5e-4);
+  EXPECT_EQ(fit.model.terms.size(), 2u);
+}
+
+TEST(IdentifyExtraTerms, TwoMarkovProcessesAreSeparated) {
+  NoiseModel truth;
+  truth.terms = {{TermKind::kWhiteRate, 1e-5, 0.0},
+                 {TermKind::kMarkov, 3e-4, 0.05},
+                 {TermKind::kMarkov, 1e-3, 20.0}};
+  const FitResult fit = fit_noise_model(exact_curve(truth), kTau0, kLength);
+  EXPECT_NEAR(expect_present(fit, "markov_1").shape.value, 0.05, 0.005);
+  EXPECT_NEAR(expect_present(fit, "markov_2").shape.value, 20.0, 2.0);
+  EXPECT_NEAR(expect_present(fit, "white_rate").amplitude.value, 1e-5, 1e-6);
+}
+
+TEST(IdentifyExtraTerms, ZeroDcFamilyWhenEnabled) {
+  NoiseModel truth;
+  truth.terms = {{TermKind::kWhiteRate, 1e-4, 0.0}, {TermKind::kZeroDcFamily, 3e-4, 0.5}};
+  FitOptions options;
+  options.allow_zero_dc_family = true;
+  const FitResult fit = fit_noise_model(exact_curve(truth), kTau0, kLength, options);
+  const TermEstimate& zero_dc = expect_present(fit, "zero_dc_family");
+  EXPECT_NEAR(zero_dc.amplitude.value, 3e-4, 3e-5);
+  EXPECT_NEAR(zero_dc.shape.value, 0.5, 0.05);
+}
+
+}  // namespace
+}  // namespace identify
+}  // namespace imu_lab
