@@ -67,6 +67,24 @@ std::size_t for_each_message(const std::string& bag_path, const std::string& top
 
 }  // namespace
 
+ImuRecord to_imu_record(const sensor_msgs::Imu& message) {
+  ImuRecord record;
+  record.stamp_s = message.header.stamp.toSec();
+  record.stamp_ns = static_cast<std::int64_t>(message.header.stamp.toNSec());
+  record.angular_rate_rad_s = to_eigen(message.angular_velocity);
+  record.specific_force_m_s2 = to_eigen(message.linear_acceleration);
+  return record;
+}
+
+IncrementRecord to_increment_record(const imu_lab::ImuIncrement& message) {
+  IncrementRecord record;
+  record.stamp_ns = static_cast<std::int64_t>(message.header.stamp.toNSec());
+  record.interval_s = message.interval_s;
+  record.delta_angle_rad = to_eigen(message.delta_angle_rad);
+  record.delta_velocity_m_s = to_eigen(message.delta_velocity_m_s);
+  return record;
+}
+
 std::vector<TopicInfo> list_topics(const std::string& bag_path) {
   rosbag::Bag bag;
   open_for_reading(bag, bag_path);
@@ -121,27 +139,15 @@ std::string choose_topic(const std::string& bag_path, const std::string& request
 
 std::size_t for_each_imu(const std::string& bag_path, const std::string& topic,
                          const std::function<void(const ImuRecord&)>& on_record) {
-  return for_each_message<sensor_msgs::Imu>(bag_path, topic, kImuType, [&](const sensor_msgs::Imu& message) {
-    ImuRecord record;
-    record.stamp_s = message.header.stamp.toSec();
-    record.stamp_ns = static_cast<std::int64_t>(message.header.stamp.toNSec());
-    record.angular_rate_rad_s = to_eigen(message.angular_velocity);
-    record.specific_force_m_s2 = to_eigen(message.linear_acceleration);
-    on_record(record);
-  });
+  return for_each_message<sensor_msgs::Imu>(
+      bag_path, topic, kImuType, [&](const sensor_msgs::Imu& message) { on_record(to_imu_record(message)); });
 }
 
 std::size_t for_each_increment(const std::string& bag_path, const std::string& topic,
                                const std::function<void(const IncrementRecord&)>& on_record) {
   return for_each_message<imu_lab::ImuIncrement>(
-      bag_path, topic, "imu_lab/ImuIncrement", [&](const imu_lab::ImuIncrement& message) {
-        IncrementRecord record;
-        record.stamp_ns = static_cast<std::int64_t>(message.header.stamp.toNSec());
-        record.interval_s = message.interval_s;
-        record.delta_angle_rad = to_eigen(message.delta_angle_rad);
-        record.delta_velocity_m_s = to_eigen(message.delta_velocity_m_s);
-        on_record(record);
-      });
+      bag_path, topic, "imu_lab/ImuIncrement",
+      [&](const imu_lab::ImuIncrement& message) { on_record(to_increment_record(message)); });
 }
 
 std::size_t for_each_truth(const std::string& bag_path, const std::string& topic,

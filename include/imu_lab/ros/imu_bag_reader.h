@@ -5,6 +5,8 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <imu_lab/ImuIncrement.h>
+#include <sensor_msgs/Imu.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -47,6 +49,10 @@ struct TopicInfo {
   std::string datatype;
   std::size_t message_count = 0;
 };
+
+// The records of one message, as the readers below give them; live nodes use the same conversion.
+ImuRecord to_imu_record(const sensor_msgs::Imu& message);
+IncrementRecord to_increment_record(const imu_lab::ImuIncrement& message);
 
 // All topics of a bag with their types and counts. Throws InputError if the bag cannot be read.
 std::vector<TopicInfo> list_topics(const std::string& bag_path);

@@ -1,0 +1,42 @@
+// One streaming Allan pass over a bag: the allan tool's whole computation, also used by the tests,
+// the rostest checkers and the benchmark. A reader thread deserialises messages into batches of
+// samples (a bounded queue, so memory stays bounded for any bag length) while the calling thread
+// pushes them into the streaming engine; nothing is written anywhere.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+
+#include "imu_lab/allan/streaming_allan.h"
+#include "imu_lab/ros/allan_samples.h"
+
+namespace imu_lab {
+namespace ros_io {
+
+struct AllanBagPassOptions {
+  std::string topic;  // empty: the bag's only topic of the input's message type
+  AllanInput input = AllanInput::kRate;
+  // channel_count and input_kind are set from `input`; a bag shorter than warm_up_sample_count
+  // warms up on all of its messages instead.
+  allan::StreamingOptions engine;
+  // Called on the computing thread after each batch: messages processed and the topic's total.
+  std::function<void(std::size_t processed, std::size_t total)> on_progress;
+};
+
+struct AllanBagPassResult {
+  std::string bag_path;
+  std::string topic;
+  AllanInput input = AllanInput::kRate;
+  allan::StreamingOptions engine;  // as used
+  std::size_t message_count = 0;
+  allan::StreamingSnapshot snapshot;
+};
+
+// Throws InputError naming the bag (and the topic) for an unreadable, truncated or corrupt bag,
+// a missing or ambiguous topic, a topic of the wrong type, one with too few messages, and, under
+// StampPolicy::kStop, the first irregular stamp. ConfigError for unusable engine options.
+AllanBagPassResult run_allan_bag_pass(const std::string& bag_path, const AllanBagPassOptions& options);
+
+}  // namespace ros_io
+}  // namespace imu_lab

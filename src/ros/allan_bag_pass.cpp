@@ -1,0 +1,111 @@
+#include "imu_lab/ros/allan_bag_pass.h"
+
+#include <algorithm>
+#include <exception>
+#include <thread>
+#include <vector>
+
+#include "imu_lab/common/config_error.h"
+#include "imu_lab/ros/bounded_queue.h"
+
+namespace imu_lab {
+namespace ros_io {
+namespace {
+
+// Large enough to amortise the queue's locking, small enough for a smooth progress bar.
+constexpr std::size_t kBatchSamples = 4096;
+constexpr std::size_t kQueuedBatches = 8;
+// tau0 needs a few intervals; below this a bag is refused rather than analysed on noise.
+constexpr std::size_t kMinimumMessages = 16;
+
+using SampleBatch = std::vector<AllanSample>;
+
+// Thrown inside the reader's callback to stop the bag iteration when the consumer gave up.
+struct ReadingCancelled {};
+
+void read_batches(const std::string& bag_path, const std::string& topic, AllanInput input,
+                  BoundedQueue<SampleBatch>& queue) {
+  SampleBatch batch;
+  batch.reserve(kBatchSamples);
+  const auto add = [&](const AllanSample& sample) {
+    batch.push_back(sample);
+    if (batch.size() < kBatchSamples) return;
+    if (!queue.push(std::move(batch))) throw ReadingCancelled{};
+    batch = SampleBatch();
+    batch.reserve(kBatchSamples);
+  };
+  if (input == AllanInput::kRate) {
+    for_each_imu(bag_path, topic, [&](const ImuRecord& record) { add(to_allan_sample(record)); });
+  } else {
+    for_each_increment(bag_path, topic, [&](const IncrementRecord& record) { add(to_allan_sample(record)); });
+  }
+  if (!batch.empty()) queue.push(std::move(batch));
+}
+
+std::size_t topic_message_count(const std::string& bag_path, const std::string& topic) {
+  for (const TopicInfo& info : list_topics(bag_path)) {
+    if (info.name == topic) return info.message_count;
+  }
+  return 0;
+}
+
+}  // namespace
+
+AllanBagPassResult run_allan_bag_pass(const std::string& bag_path, const AllanBagPassOptions& options) {
+  AllanBagPassResult result;
+  result.bag_path = bag_path;
+  result.input = options.input;
+  result.topic = choose_topic(bag_path, options.topic, allan_input_datatype(options.input));
+  const std::string where = "bag " + bag_path + ", topic " + result.topic;
+  const std::size_t total = topic_message_count(bag_path, result.topic);
+  if (total < kMinimumMessages) {
+    throw InputError(where + " has " + std::to_string(total) + " messages; an Allan analysis needs at least " +
+                     std::to_string(kMinimumMessages) + " (and thousands for useful curves)");
+  }
+  result.engine = options.engine;
+  result.engine.channel_count = kAllanChannelCount;
+  result.engine.input_kind = engine_input_kind(options.input);
+  result.engine.warm_up_sample_count = std::min(result.engine.warm_up_sample_count, total);
+  allan::StreamingAllan engine(result.engine);
+
+  BoundedQueue<SampleBatch> queue(kQueuedBatches);
+  std::exception_ptr reader_error;
+  std::thread reader([&] {
+    try {
+      read_batches(bag_path, result.topic, options.input, queue);
+    } catch (const ReadingCancelled&) {
+    } catch (...) {
+      reader_error = std::current_exception();
+    }
+    queue.close();
+  });
+  try {
+    while (std::optional<SampleBatch> batch = queue.pop()) {
+      for (const AllanSample& sample : *batch) engine.push(sample.stamp_ns, sample.values.data(), sample.values.size());
+      result.message_count += batch->size();
+      if (options.on_progress) options.on_progress(result.message_count, total);
+    }
+  } catch (const InputError& error) {
+    queue.close();
+    reader.join();
+    const bool stopped_by_policy = result.engine.stamp_policy == allan::StampPolicy::kStop;
+    throw InputError(where + ": " + error.what() +
+                     (stopped_by_policy ? " (the split policy, --on-gap split, pools the segments instead)" : ""));
+  } catch (...) {
+    queue.close();
+    reader.join();
+    throw;
+  }
+  reader.join();
+  if (reader_error) std::rethrow_exception(reader_error);
+
+  result.snapshot = engine.snapshot();
+  if (!result.snapshot.warmed_up) {
+    throw InputError(where + ": the " + std::to_string(result.message_count) +
+                     " messages have too few regular stamps to estimate the sample period");
+  }
+  return result;
+}
+
+}  // namespace ros_io
+}  // namespace imu_lab

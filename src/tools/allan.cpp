@@ -1,0 +1,118 @@
+// allan: bag -> the nine Allan-family stability curves (CSV per statistic), a YAML summary of the
+// stamps and channels, and a plot, in one streaming pass (see include/imu_lab/ros/allan_bag_pass.h
+// and allan_report.h). Nothing is written unless the whole pass succeeds.
+#include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+#include "imu_lab/common/config_error.h"
+#include "imu_lab/ros/allan_bag_pass.h"
+#include "imu_lab/ros/allan_report.h"
+
+namespace {
+
+// A one-line progress bar with an ETA on stderr, redrawn at most a few times a second.
+class ProgressBar {
+ public:
+  void update(std::size_t processed, std::size_t total) {
+    const auto now = std::chrono::steady_clock::now();
+    if (processed < total && now - last_draw_ < std::chrono::milliseconds(200)) return;
+    last_draw_ = now;
+    const double fraction = total > 0 ? static_cast<double>(processed) / total : 1.0;
+    const double elapsed_s = std::chrono::duration<double>(now - start_).count();
+    const double remaining_s = fraction > 0.0 ? elapsed_s * (1.0 - fraction) / fraction : 0.0;
+    constexpr int kWidth = 30;
+    const int filled = static_cast<int>(fraction * kWidth);
+    std::fprintf(stderr, "\rallan: [%s%s] %5.1f %% %zu/%zu messages, ETA %4.0f s ",
+                 std::string(filled, '#').c_str(), std::string(kWidth - filled, ' ').c_str(), 100.0 * fraction,
+                 processed, total, remaining_s);
+    if (processed >= total) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point last_draw_{};
+};
+
+void print_summary(const imu_lab::ros_io::AllanBagPassResult& result, const imu_lab::ros_io::AllanReportFiles& files) {
+  const auto& timing = result.snapshot.timing;
+  std::printf("allan: %s, topic %s: %lld samples, tau0 %.9g s (%.6g Hz), interval jitter rms %.3g s, max %.3g s\n",
+              result.bag_path.c_str(), result.topic.c_str(), static_cast<long long>(timing.input_sample_count),
+              timing.tau0_s, 1.0 / timing.tau0_s, timing.interval_rms_deviation_s, timing.interval_max_deviation_s);
+  long long non_finite = 0;
+  for (const auto& channel : result.snapshot.channels) non_finite += channel.non_finite_count;
+  if (timing.gap_count + timing.duplicate_count + timing.out_of_order_count + non_finite > 0) {
+    std::printf("allan: irregular input (split and pooled / dropped, see allan_summary.yaml): %lld gaps (%.6g s), "
+                "%lld duplicate and %lld out-of-order stamps, %lld NaN/Inf values\n",
+                static_cast<long long>(timing.gap_count), timing.gap_time_s,
+                static_cast<long long>(timing.duplicate_count), static_cast<long long>(timing.out_of_order_count),
+                non_finite);
+  }
+  for (const auto& path : files.written) std::printf("allan: wrote %s\n", path.c_str());
+  if (!files.plot_problem.empty()) std::fprintf(stderr, "allan: warning: %s\n", files.plot_problem.c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Allan-family stability curves of an IMU bag: CSV per statistic, YAML summary, plot."};
+  std::string bag_path;
+  std::string out_directory = "allan_report";
+  std::string on_gap = "split";
+  std::string input = "rate";
+  bool progress = false;
+  bool no_plot = false;
+  imu_lab::ros_io::AllanBagPassOptions options;
+  auto& engine = options.engine;
+  app.add_option("bag", bag_path, "bag to read")->required();
+  app.add_option("--topic", options.topic, "topic (default: the only one of the input's message type)");
+  app.add_option("-o,--out", out_directory, "report directory (created)")->capture_default_str();
+  app.add_option("--input", input, "rate (sensor_msgs/Imu) or increment (imu_lab/ImuIncrement)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"rate", "increment"}));
+  app.add_option("--points-per-decade", engine.points_per_decade, "taus per decade")->capture_default_str();
+  app.add_option("--max-tau-s", engine.max_tau_s, "largest tau [s]")->capture_default_str();
+  app.add_option("--exact-m", engine.exact_max_averaging_factor,
+                 "largest averaging factor computed exactly (beyond: on rate averaged over 2^L samples)")
+      ->capture_default_str();
+  app.add_option("--confidence", engine.confidence, "two-sided confidence of the chi-squared bounds")
+      ->capture_default_str();
+  app.add_option("--on-gap", on_gap,
+                 "split: gaps split the run and the segments are pooled, bad stamps dropped and reported; "
+                 "stop: fail at the first irregular stamp")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"split", "stop"}));
+  app.add_option("--gap-factor", engine.gap_factor, "an interval above this many tau0 is a gap")->capture_default_str();
+  app.add_option("--warm-up-samples", engine.warm_up_sample_count, "samples that fix tau0 and the offsets")
+      ->capture_default_str();
+  app.add_flag("--progress", progress, "progress bar on stderr even when it is not a terminal");
+  app.add_flag("--no-plot", no_plot, "do not write allan.png");
+  CLI11_PARSE(app, argc, argv);
+  options.input = imu_lab::ros_io::parse_allan_input("--input", input);
+  engine.stamp_policy = on_gap == "stop" ? imu_lab::allan::StampPolicy::kStop : imu_lab::allan::StampPolicy::kSplitAndPool;
+
+  try {
+    ProgressBar bar;
+    if (progress || ::isatty(STDERR_FILENO)) {
+      options.on_progress = [&](std::size_t processed, std::size_t total) { bar.update(processed, total); };
+    }
+    const auto result = imu_lab::ros_io::run_allan_bag_pass(bag_path, options);
+    imu_lab::ros_io::AllanRunDescription run;
+    run.bag = bag_path;
+    run.topic = result.topic;
+    run.input = result.input;
+    run.engine = result.engine;
+    const auto files = imu_lab::ros_io::write_allan_report(out_directory, run, result.snapshot, !no_plot);
+    print_summary(result, files);
+    return 0;
+  } catch (const imu_lab::ConfigError& error) {
+    std::cerr << "allan: bad configuration: " << error.what() << "\n";
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "\nallan: " << error.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,52 @@
+#include "allan_test_support.h"
+
+#include <rosbag/bag.h>
+#include <sensor_msgs/Imu.h>
+
+#include <algorithm>
+#include <random>
+
+namespace imu_lab {
+namespace test_support {
+
+std::vector<ros_io::AllanSample> white_noise_samples(std::size_t count, std::int64_t interval_ns, unsigned seed,
+                                                     std::int64_t start_ns) {
+  std::mt19937_64 generator(seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::vector<ros_io::AllanSample> samples(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    samples[i].stamp_ns = start_ns + static_cast<std::int64_t>(i) * interval_ns;
+    for (std::size_t c = 0; c < 3; ++c) samples[i].values[c] = 1e-3 * normal(generator);
+    for (std::size_t c = 3; c < 6; ++c) samples[i].values[c] = (c == 5 ? 9.81 : 0.0) + 1e-2 * normal(generator);
+  }
+  return samples;
+}
+
+void write_imu_bag(const std::string& path, const std::vector<ros_io::AllanSample>& samples, const std::string& topic) {
+  rosbag::Bag bag(path, rosbag::bagmode::Write);
+  std::int64_t record_ns = 0;
+  for (const auto& sample : samples) {
+    sensor_msgs::Imu imu;
+    imu.header.stamp.fromNSec(static_cast<std::uint64_t>(sample.stamp_ns));
+    imu.header.frame_id = "imu_link";
+    imu.angular_velocity.x = sample.values[0];
+    imu.angular_velocity.y = sample.values[1];
+    imu.angular_velocity.z = sample.values[2];
+    imu.linear_acceleration.x = sample.values[3];
+    imu.linear_acceleration.y = sample.values[4];
+    imu.linear_acceleration.z = sample.values[5];
+    // The view orders by record time: keep it strictly increasing (the arrival order), so
+    // unordered or duplicate header stamps reach the reader as they were recorded.
+    record_ns = std::max(record_ns + 1, sample.stamp_ns);
+    ros::Time record_time;
+    record_time.fromNSec(static_cast<std::uint64_t>(record_ns));
+    bag.write(topic, record_time, imu);
+  }
+}
+
+YAML::Node read_allan_summary(const std::string& report_directory) {
+  return YAML::LoadFile(report_directory + "/allan_summary.yaml");
+}
+
+}  // namespace test_support
+}  // namespace imu_lab

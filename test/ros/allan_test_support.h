@@ -1,0 +1,27 @@
+// Helpers for the allan tool's tests: synthetic IMU bags with chosen stamps and values, and the
+// tool's summary file.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+#include <vector>
+
+#include "imu_lab/ros/allan_samples.h"
+
+namespace imu_lab {
+namespace test_support {
+
+// `count` samples of white noise (gyro ~1e-3 rad/s, accel ~1e-2 m/s^2 about gravity on z),
+// stamped every interval_ns from start_ns; the same seed gives the same samples.
+std::vector<ros_io::AllanSample> white_noise_samples(std::size_t count, std::int64_t interval_ns, unsigned seed,
+                                                     std::int64_t start_ns = 1'000'000'000'000'000'000LL);
+
+// Writes the samples as sensor_msgs/Imu messages on `topic`, each recorded at its stamp.
+void write_imu_bag(const std::string& path, const std::vector<ros_io::AllanSample>& samples,
+                   const std::string& topic = "/imu/raw");
+
+YAML::Node read_allan_summary(const std::string& report_directory);
+
+}  // namespace test_support
+}  // namespace imu_lab
