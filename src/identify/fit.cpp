@@ -98,21 +98,13 @@ void describe_absent_terms(const SelectedModel& selected, const DataSpan& span,
 }  // namespace
 
 std::string term_status_name(TermStatus status) {
-  switch (status) {
-    case TermStatus::kPresent: return "present";
-    case TermStatus::kUnconstrained: return "unconstrained";
-    case TermStatus::kAbsent: return "absent";
-  }
-  return "unknown";
+  static const char* const kNames[] = {"present", "unconstrained", "absent"};
+  return kNames[static_cast<int>(status)];
 }
 
 std::string sigma_source_name(SigmaSource source) {
-  switch (source) {
-    case SigmaSource::kNone: return "none";
-    case SigmaSource::kCeresCovariance: return "ceres_covariance";
-    case SigmaSource::kBootstrap: return "bootstrap";
-  }
-  return "unknown";
+  static const char* const kNames[] = {"none", "ceres_covariance", "bootstrap"};
+  return kNames[static_cast<int>(source)];
 }
 
 const TermEstimate* FitResult::find(const std::string& name) const {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "imu_lab/emulator/sensor_channel.h"
 #include "imu_lab/emulator/sensor_profile.h"
 #include "imu_lab/identify/fit_points.h"
+#include "imu_lab/identify/noise_model.h"
 
 namespace imu_lab {
 namespace identify_test {
@@ -47,6 +49,22 @@ inline std::vector<allan::StabilityPoint> octave_oadev(const std::vector<double>
                                                        double rate_hz) {
   return allan::evaluate_frequency(allan::Statistic::kOverlappingAllan, rates, 1.0 / rate_hz,
                                    identify::octave_averaging_factors(rates.size()));
+}
+
+// A noise-free overlapping-Allan curve of `model` at octave factors for a record of length_s,
+// with white-FM-like EDFs (1.5 length / tau).
+inline std::vector<allan::StabilityPoint> exact_octave_curve(const identify::NoiseModel& model,
+                                                             double tau0_s, double length_s) {
+  std::vector<allan::StabilityPoint> points;
+  for (int m : identify::octave_averaging_factors(static_cast<long long>(length_s / tau0_s))) {
+    allan::StabilityPoint point;
+    point.averaging_factor = m;
+    point.tau_s = m * tau0_s;
+    point.deviation = std::sqrt(identify::model_avar(model, point.tau_s));
+    point.edf = 1.5 * length_s / point.tau_s;
+    points.push_back(point);
+  }
+  return points;
 }
 
 }  // namespace identify_test

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "identify_test_records.h"
 #include "imu_lab/identify/fit.h"
 
 namespace imu_lab {
@@ -13,16 +14,7 @@ namespace {
 constexpr double kTau0 = 0.01, kLength = 7200.0;
 
 std::vector<allan::StabilityPoint> exact_curve(const NoiseModel& model) {
-  std::vector<allan::StabilityPoint> points;
-  for (int m : octave_averaging_factors(static_cast<long long>(kLength / kTau0))) {
-    allan::StabilityPoint p;
-    p.averaging_factor = m;
-    p.tau_s = m * kTau0;
-    p.deviation = std::sqrt(model_avar(model, p.tau_s));
-    p.edf = 1.5 * kLength / p.tau_s;
-    points.push_back(p);
-  }
-  return points;
+  return identify_test::exact_octave_curve(model, kTau0, kLength);
 }
 
 const TermEstimate& expect_present(const FitResult& fit, const std::string& name) {

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "identify_test_records.h"
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/identify/kalibr_yaml.h"
 #include "imu_lab/identify/noise_report.h"
@@ -19,29 +20,13 @@ namespace imu_lab {
 namespace identify {
 namespace {
 
-// An exact (noise-free) overlapping-Allan curve of `model` for a record of `length_s`, with
-// white-FM-like EDFs.
-std::vector<allan::StabilityPoint> exact_curve(const NoiseModel& model, double tau0_s,
-                                               double length_s) {
-  std::vector<allan::StabilityPoint> points;
-  for (int m : octave_averaging_factors(static_cast<long long>(length_s / tau0_s))) {
-    allan::StabilityPoint p;
-    p.averaging_factor = m;
-    p.tau_s = m * tau0_s;
-    p.deviation = std::sqrt(model_avar(model, p.tau_s));
-    p.edf = 1.5 * length_s / p.tau_s;
-    points.push_back(p);
-  }
-  return points;
-}
-
 TriadFit exact_triad(SensorKind sensor, double n, double k) {
   std::array<std::vector<allan::StabilityPoint>, 3> curves;
   for (int axis = 0; axis < 3; ++axis) {
     NoiseModel model;
     model.terms = {{TermKind::kWhiteRate, n * (1.0 + 0.5 * axis), 0.0},
                    {TermKind::kRandomWalk, k, 0.0}};
-    curves[axis] = exact_curve(model, 0.01, 7200.0);
+    curves[axis] = identify_test::exact_octave_curve(model, 0.01, 7200.0);
   }
   return fit_triad(sensor, curves, 0.01, 7200.0);
 }
