@@ -1,0 +1,80 @@
+// The allan_monitor node (also the nodelet imu_lab/AllanMonitorNodelet): taps an IMU topic and
+// keeps the streaming Allan engine's curves up to date. Header stamps only, never arrival time.
+//
+// Subscribes (relative names; remap them): imu/raw (sensor_msgs/Imu) with input_type: imu, or
+//   imu/increment (imu_lab/ImuIncrement) with input_type: increment.
+// Publishes every publish_period_s (wall clock) once warmed up: allan/gyro and allan/accel
+//   (imu_lab/AllanDeviation), one message per statistic in `statistics`; /diagnostics (input rate
+//   from stamps, tau0, jitter, gaps, NaN/Inf values, duplicate and out-of-order stamps).
+// Service: ~write_report (std_srvs/Trigger): the allan tool's report files (allan_report.h) in
+//   report_dir; written again on shutdown.
+// Checkpoints: with checkpoint_path set, the engine's whole state is saved there (atomically)
+//   every checkpoint_period_s and on shutdown; with resume: true the node starts from it and
+//   skips every input stamp at or before the checkpoint's last stamp (a replay from before it).
+// Parameters: allan_monitor_settings.h. Bad input is counted, logged (throttled) and reported in
+// the diagnostics; the node keeps running.
+#pragma once
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <imu_lab/ImuIncrement.h>
+#include <ros/ros.h>
+#include <sensor_msgs/Imu.h>
+#include <std_srvs/Trigger.h>
+
+#include <memory>
+#include <mutex>
+#include <optional>
+
+#include "imu_lab/allan/streaming_allan.h"
+#include "imu_lab/ros/allan_monitor_settings.h"
+
+namespace imu_lab {
+namespace ros_io {
+
+class AllanMonitorNode {
+ public:
+  // Throws ConfigError naming the parameter that is wrong (or the checkpoint it cannot resume from).
+  AllanMonitorNode(ros::NodeHandle& node, ros::NodeHandle& private_node);
+  // Calls finish() if it has not run.
+  ~AllanMonitorNode();
+
+  // On shutdown: a last checkpoint and the report files. Runs once; later calls do nothing.
+  void finish();
+
+ private:
+  void on_imu(const sensor_msgs::Imu::ConstPtr& message);
+  void on_increment(const imu_lab::ImuIncrement::ConstPtr& message);
+  void add(const AllanSample& sample, const std_msgs::Header& header);
+  void publish_curves();
+  void save_checkpoint();
+  bool on_write_report(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
+  std::string write_report();  // with mutex_ held; returns what was written
+  void report(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  std::mutex mutex_;  // a nodelet may run the callbacks on several threads
+  AllanMonitorSettings settings_;
+  std::unique_ptr<allan::StreamingAllan> engine_;
+  std::optional<std::int64_t> resume_after_stamp_ns_;
+  std::int64_t skipped_before_checkpoint_ = 0;
+  std::optional<allan::StreamingSnapshot> latest_snapshot_;
+  std_msgs::Header last_header_;
+  std::int64_t previous_stamp_ns_ = 0;
+  bool finished_ = false;
+
+  ros::Subscriber input_subscriber_;
+  ros::Publisher gyro_publisher_;
+  ros::Publisher accel_publisher_;
+  ros::ServiceServer write_report_service_;
+  ros::WallTimer publish_timer_;
+  ros::WallTimer checkpoint_timer_;
+  diagnostic_updater::Updater diagnostics_;
+  ros::WallTimer diagnostics_timer_;
+
+  // Input statistics from header stamps since the last diagnostics report.
+  std::uint64_t window_samples_ = 0;
+  std::int64_t window_first_stamp_ns_ = 0;
+  std::int64_t window_last_stamp_ns_ = 0;
+};
+
+}  // namespace ros_io
+}  // namespace imu_lab

@@ -1,0 +1,43 @@
+// The allan_monitor node's ROS parameters (private namespace) -> AllanMonitorSettings.
+//   input_type (imu | increment; imu), statistics ([oadev]: any of oadev adev mdev ohdev hdev tdev
+//   totdev akdev hkdev), publish_period_s (1.0), report_dir ($ROS_HOME/allan_report, ROS_HOME
+//   defaulting to ~/.ros), plot (true), checkpoint_path ("" = no checkpoints),
+//   checkpoint_period_s (60), resume (false), queue_size (20000);
+//   the engine's (streaming_options.h): points_per_decade (10), max_tau_s (1e4),
+//   exact_max_averaging_factor (1000), confidence (0.683), warm_up_sample_count (1000),
+//   gap_factor (1.5). Gaps always split and pool: a live node never stops on bad stamps.
+#pragma once
+
+#include <ros/node_handle.h>
+
+#include <string>
+#include <vector>
+
+#include "imu_lab/allan/batch.h"
+#include "imu_lab/allan/streaming_options.h"
+#include "imu_lab/ros/allan_samples.h"
+
+namespace imu_lab {
+namespace ros_io {
+
+struct AllanMonitorSettings {
+  AllanInput input = AllanInput::kRate;
+  std::vector<allan::Statistic> statistics = {allan::Statistic::kOverlappingAllan};
+  double publish_period_s = 1.0;
+  std::string report_dir;
+  bool plot = true;
+  std::string checkpoint_path;
+  double checkpoint_period_s = 60.0;
+  bool resume = false;
+  int queue_size = 20000;
+  allan::StreamingOptions engine;
+};
+
+// Throws ConfigError naming the parameter that is wrong.
+AllanMonitorSettings load_allan_monitor_settings(const ros::NodeHandle& private_node);
+
+// "oadev" -> Statistic::kOverlappingAllan, ...; throws ConfigError naming `key` for an unknown name.
+allan::Statistic parse_statistic(const std::string& key, const std::string& name);
+
+}  // namespace ros_io
+}  // namespace imu_lab

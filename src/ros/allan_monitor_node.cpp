@@ -1,0 +1,217 @@
+#include "imu_lab/ros/allan_monitor_node.h"
+
+#include <cmath>
+#include <fstream>
+
+#include "imu_lab/common/config_error.h"
+#include "imu_lab/ros/allan_messages.h"
+#include "imu_lab/ros/allan_report.h"
+
+namespace imu_lab {
+namespace ros_io {
+namespace {
+
+constexpr double kLogThrottle_s = 5.0;
+
+bool file_exists(const std::string& path) { return std::ifstream(path).good(); }
+
+// A fresh engine, or the checkpoint's when resuming from one that exists.
+std::unique_ptr<allan::StreamingAllan> make_engine(const AllanMonitorSettings& settings, const std::string& resume_key) {
+  if (!settings.resume || !file_exists(settings.checkpoint_path)) {
+    if (settings.resume) {
+      ROS_WARN("allan_monitor: no checkpoint at %s yet; starting from scratch", settings.checkpoint_path.c_str());
+    }
+    return std::make_unique<allan::StreamingAllan>(settings.engine);
+  }
+  try {
+    auto engine = std::make_unique<allan::StreamingAllan>(allan::StreamingAllan::load_checkpoint(settings.checkpoint_path));
+    if (engine->options().input_kind != settings.engine.input_kind ||
+        engine->options().channel_count != settings.engine.channel_count) {
+      throw InputError("it holds another input type than input_type says");
+    }
+    return engine;
+  } catch (const InputError& error) {
+    throw ConfigError(resume_key, "resume", "cannot resume from the checkpoint " + settings.checkpoint_path + ": " +
+                                                error.what() + "; delete it or set resume: false");
+  }
+}
+
+std::int64_t irregularities(const allan::StreamingSnapshot& snapshot) {
+  std::int64_t count = snapshot.timing.gap_count + snapshot.timing.duplicate_count + snapshot.timing.out_of_order_count;
+  for (const auto& channel : snapshot.channels) count += channel.non_finite_count;
+  return count;
+}
+
+}  // namespace
+
+AllanMonitorNode::AllanMonitorNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
+    : settings_(load_allan_monitor_settings(private_node)),
+      engine_(make_engine(settings_, private_node.resolveName("resume"))) {
+  if (settings_.resume && engine_->input_sample_count() > 0) {
+    resume_after_stamp_ns_ = engine_->last_stamp_ns();
+    ROS_INFO("allan_monitor: resumed from %s: %lld samples, skipping input stamped at or before %.9f s",
+             settings_.checkpoint_path.c_str(), static_cast<long long>(engine_->input_sample_count()),
+             *resume_after_stamp_ns_ * 1e-9);
+  }
+
+  gyro_publisher_ = node.advertise<imu_lab::AllanDeviation>("allan/gyro", 10);
+  accel_publisher_ = node.advertise<imu_lab::AllanDeviation>("allan/accel", 10);
+  if (settings_.input == AllanInput::kRate) {
+    input_subscriber_ = node.subscribe("imu/raw", settings_.queue_size, &AllanMonitorNode::on_imu, this);
+  } else {
+    input_subscriber_ = node.subscribe("imu/increment", settings_.queue_size, &AllanMonitorNode::on_increment, this);
+  }
+  write_report_service_ = private_node.advertiseService("write_report", &AllanMonitorNode::on_write_report, this);
+
+  publish_timer_ = node.createWallTimer(ros::WallDuration(settings_.publish_period_s),
+                                        [this](const ros::WallTimerEvent&) { publish_curves(); });
+  if (!settings_.checkpoint_path.empty()) {
+    checkpoint_timer_ = node.createWallTimer(ros::WallDuration(settings_.checkpoint_period_s),
+                                             [this](const ros::WallTimerEvent&) { save_checkpoint(); });
+  }
+  diagnostics_.setHardwareID("allan_monitor");
+  diagnostics_.add("allan monitor", this, &AllanMonitorNode::report);
+  diagnostics_timer_ = node.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    diagnostics_.update();
+  });
+  ROS_INFO("allan_monitor: %s input on %s; curves every %.3g s; report to %s%s%s", allan_input_datatype(settings_.input),
+           input_subscriber_.getTopic().c_str(), settings_.publish_period_s, settings_.report_dir.c_str(),
+           settings_.checkpoint_path.empty() ? "" : "; checkpoints to ", settings_.checkpoint_path.c_str());
+}
+
+AllanMonitorNode::~AllanMonitorNode() { finish(); }
+
+void AllanMonitorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message) {
+  add(to_allan_sample(to_imu_record(*message)), message->header);
+}
+
+void AllanMonitorNode::on_increment(const imu_lab::ImuIncrement::ConstPtr& message) {
+  add(to_allan_sample(to_increment_record(*message)), message->header);
+}
+
+void AllanMonitorNode::add(const AllanSample& sample, const std_msgs::Header& header) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (finished_) return;
+  if (resume_after_stamp_ns_ && sample.stamp_ns <= *resume_after_stamp_ns_) {
+    ++skipped_before_checkpoint_;
+    return;
+  }
+  for (const double value : sample.values) {
+    if (std::isfinite(value)) continue;
+    ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: NaN/Inf value at %.9f s excluded (counted in diagnostics)",
+                      sample.stamp_ns * 1e-9);
+    break;
+  }
+  if (engine_->input_sample_count() > 0 && sample.stamp_ns <= previous_stamp_ns_) {
+    ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: stamp %.9f s not after %.9f s: sample dropped (counted in "
+                      "diagnostics)", sample.stamp_ns * 1e-9, previous_stamp_ns_ * 1e-9);
+  }
+  previous_stamp_ns_ = sample.stamp_ns;
+  engine_->push(sample.stamp_ns, sample.values.data(), sample.values.size());
+  last_header_ = header;
+  if (window_samples_++ == 0) window_first_stamp_ns_ = sample.stamp_ns;
+  window_last_stamp_ns_ = std::max(window_last_stamp_ns_, sample.stamp_ns);
+}
+
+void AllanMonitorNode::publish_curves() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (finished_ || !engine_->warmed_up()) return;
+  latest_snapshot_ = engine_->snapshot();
+  for (const allan::Statistic statistic : settings_.statistics) {
+    const double confidence = engine_->options().confidence;
+    gyro_publisher_.publish(to_allan_deviation(*latest_snapshot_, statistic, AllanTriad::kGyro, confidence, last_header_));
+    accel_publisher_.publish(
+        to_allan_deviation(*latest_snapshot_, statistic, AllanTriad::kAccel, confidence, last_header_));
+  }
+}
+
+void AllanMonitorNode::save_checkpoint() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (finished_) return;
+  try {
+    engine_->save_checkpoint(settings_.checkpoint_path);
+  } catch (const std::exception& error) {
+    ROS_ERROR_THROTTLE(kLogThrottle_s, "allan_monitor: checkpoint not saved: %s", error.what());
+  }
+}
+
+std::string AllanMonitorNode::write_report() {
+  if (!engine_->warmed_up()) {
+    throw InputError("no report yet: " + std::to_string(engine_->input_sample_count()) + " samples on " +
+                     input_subscriber_.getTopic() + ", the warm-up needs " +
+                     std::to_string(engine_->options().warm_up_sample_count));
+  }
+  AllanRunDescription run;
+  run.topic = input_subscriber_.getTopic();
+  run.input = settings_.input;
+  run.engine = engine_->options();
+  run.skipped_before_checkpoint = skipped_before_checkpoint_;
+  const AllanReportFiles files = write_allan_report(settings_.report_dir, run, engine_->snapshot(), settings_.plot);
+  std::string text = "wrote " + std::to_string(files.written.size()) + " files to " + settings_.report_dir + " (" +
+                     std::to_string(engine_->input_sample_count()) + " samples)";
+  if (!files.plot_problem.empty()) text += "; no plot: " + files.plot_problem;
+  return text;
+}
+
+bool AllanMonitorNode::on_write_report(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  try {
+    response.message = write_report();
+    response.success = true;
+  } catch (const std::exception& error) {
+    response.message = error.what();
+    response.success = false;
+  }
+  ROS_INFO("allan_monitor: write_report: %s", response.message.c_str());
+  return true;
+}
+
+void AllanMonitorNode::finish() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (finished_) return;
+  finished_ = true;
+  publish_timer_.stop();
+  checkpoint_timer_.stop();
+  diagnostics_timer_.stop();
+  try {
+    if (!settings_.checkpoint_path.empty()) engine_->save_checkpoint(settings_.checkpoint_path);
+    ROS_INFO("allan_monitor: on shutdown: %s", write_report().c_str());
+  } catch (const std::exception& error) {
+    ROS_WARN("allan_monitor: on shutdown: %s", error.what());
+  }
+}
+
+void AllanMonitorNode::report(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  const double span_s = (window_last_stamp_ns_ - window_first_stamp_ns_) * 1e-9;
+  const double input_rate_hz = window_samples_ > 1 && span_s > 0.0 ? (window_samples_ - 1) / span_s : 0.0;
+  if (window_samples_ == 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "no input since the last report");
+  } else if (!engine_->warmed_up()) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "warming up");
+  } else if (latest_snapshot_ && irregularities(*latest_snapshot_) > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "irregular input (gaps, NaN/Inf or bad stamps) counted");
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "monitoring");
+  }
+  status.add("input rate from stamps [Hz]", input_rate_hz);
+  status.add("samples", engine_->input_sample_count());
+  status.add("skipped: at or before the checkpoint", skipped_before_checkpoint_);
+  if (latest_snapshot_) {
+    const allan::TimingReport& timing = latest_snapshot_->timing;
+    std::int64_t non_finite = 0;
+    for (const auto& channel : latest_snapshot_->channels) non_finite += channel.non_finite_count;
+    status.add("tau0 [s]", timing.tau0_s);
+    status.add("interval rms deviation [s]", timing.interval_rms_deviation_s);
+    status.add("interval max deviation [s]", timing.interval_max_deviation_s);
+    status.add("gaps", timing.gap_count);
+    status.add("NaN/Inf values", non_finite);
+    status.add("duplicate stamps", timing.duplicate_count);
+    status.add("out-of-order stamps", timing.out_of_order_count);
+  }
+  status.add("engine state [bytes]", engine_->state_size_bytes());
+  window_samples_ = 0;
+}
+
+}  // namespace ros_io
+}  // namespace imu_lab
