@@ -1,0 +1,45 @@
+// Static intervals of a calibration recording, found automatically: the IMU is at rest where the
+// mean angular rate over short windows stays near the recording's resting level. Used in both
+// modes (a table schedule says what the orientations are, not exactly when the table stopped).
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <vector>
+
+namespace imu_lab {
+namespace calib {
+
+// One IMU sample: rates are averages over the interval ending at the stamp.
+struct CalibrationSample {
+  double stamp_s = 0.0;
+  Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();
+  Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();
+};
+
+struct StaticInterval {
+  std::size_t begin = 0;  // first sample
+  std::size_t end = 0;    // one past the last sample
+  std::size_t size() const { return end - begin; }
+};
+
+struct StaticDetectionOptions {
+  double window_s = 0.25;        // windows whose mean rate is tested
+  double min_duration_s = 2.0;   // shorter rests are ignored (hesitations while turning)
+  double threshold_sigmas = 6.0; // threshold = this many window-mean noise sigmas + 2 |Earth rate|
+  double threshold_rad_s = 0.0;  // > 0: use this threshold instead
+};
+
+struct StaticDetection {
+  std::vector<StaticInterval> intervals;  // in time order; one window trimmed at each end
+  double window_s = 0.0;
+  double window_noise_rad_s = 0.0;  // robust sigma of a window's mean rate at rest
+  double threshold_rad_s = 0.0;     // |window mean - resting level| below this counts as rest
+};
+
+// Throws InputError if the samples are too few for one window or the stamps are not increasing.
+StaticDetection detect_static_intervals(const std::vector<CalibrationSample>& samples,
+                                        const StaticDetectionOptions& options);
+
+}  // namespace calib
+}  // namespace imu_lab

@@ -1,0 +1,74 @@
+#include "imu_lab/calib/rest_statistics.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "imu_lab/common/config_error.h"
+
+namespace imu_lab {
+namespace calib {
+namespace {
+
+struct PooledVariance {
+  Eigen::Vector3d sum_squares = Eigen::Vector3d::Zero();
+  double degrees_of_freedom = 0.0;
+  Eigen::Vector3d variance() const { return sum_squares / std::max(1.0, degrees_of_freedom); }
+};
+
+template <class Get>
+Eigen::Vector3d mean_over(const std::vector<CalibrationSample>& samples, std::size_t begin, std::size_t end, Get get) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (std::size_t k = begin; k < end; ++k) sum += get(samples[k]);
+  return sum / static_cast<double>(end - begin);
+}
+
+}  // namespace
+
+RestStatistics rest_statistics(const std::vector<CalibrationSample>& samples,
+                               const std::vector<StaticInterval>& intervals, double block_s) {
+  if (samples.size() < 2 || intervals.empty()) throw InputError("calibration recording: no static intervals");
+  const double sample_interval_s = (samples.back().stamp_s - samples.front().stamp_s) / (samples.size() - 1);
+  const std::size_t block = std::max<std::size_t>(1, std::lround(block_s / sample_interval_s));
+  const auto rate = [](const CalibrationSample& s) { return s.angular_rate_rad_s; };
+  const auto force = [](const CalibrationSample& s) { return s.specific_force_m_s2; };
+
+  RestStatistics statistics;
+  statistics.block_s = block * sample_interval_s;
+  PooledVariance rate_blocks, force_blocks;
+  for (const StaticInterval& interval : intervals) {
+    RestMeans rest;
+    rest.interval = interval;
+    rest.start_s = samples[interval.begin].stamp_s;
+    rest.duration_s = interval.size() * sample_interval_s;
+    rest.mean_rate_rad_s = mean_over(samples, interval.begin, interval.end, rate);
+    rest.mean_force_m_s2 = mean_over(samples, interval.begin, interval.end, force);
+    const std::size_t blocks = interval.size() / block;
+    for (std::size_t b = 0; b < blocks; ++b) {
+      const std::size_t first = interval.begin + b * block;
+      rate_blocks.sum_squares += (mean_over(samples, first, first + block, rate) - rest.mean_rate_rad_s).cwiseAbs2();
+      force_blocks.sum_squares += (mean_over(samples, first, first + block, force) - rest.mean_force_m_s2).cwiseAbs2();
+    }
+    if (blocks >= 2) {
+      rate_blocks.degrees_of_freedom += blocks - 1;
+      force_blocks.degrees_of_freedom += blocks - 1;
+    }
+    statistics.rests.push_back(rest);
+  }
+  if (rate_blocks.degrees_of_freedom < 1.0) {
+    throw InputError("calibration recording: the rests are too short (under two " + std::to_string(statistics.block_s) +
+                     " s blocks) to measure the noise; dwell longer");
+  }
+  const Eigen::Vector3d rate_block_sigma = rate_blocks.variance().cwiseSqrt();
+  const Eigen::Vector3d force_block_sigma = force_blocks.variance().cwiseSqrt();
+  statistics.rate_density_rad_s_per_sqrt_hz = rate_block_sigma * std::sqrt(statistics.block_s);
+  statistics.force_density_m_s2_per_sqrt_hz = force_block_sigma * std::sqrt(statistics.block_s);
+  for (RestMeans& rest : statistics.rests) {
+    const double shrink = std::sqrt(static_cast<double>(block) / rest.interval.size());
+    rest.rate_sigma_of_mean_rad_s = rate_block_sigma * shrink;
+    rest.force_sigma_of_mean_m_s2 = force_block_sigma * shrink;
+  }
+  return statistics;
+}
+
+}  // namespace calib
+}  // namespace imu_lab

@@ -1,0 +1,79 @@
+#include "imu_lab/calib/static_intervals.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "imu_lab/common/config_error.h"
+#include "imu_lab/emulator/earth_model.h"
+
+namespace imu_lab {
+namespace calib {
+namespace {
+
+double median(std::vector<double> values) {
+  const auto middle = values.begin() + values.size() / 2;
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+}  // namespace
+
+StaticDetection detect_static_intervals(const std::vector<CalibrationSample>& samples,
+                                        const StaticDetectionOptions& options) {
+  if (samples.size() < 2) throw InputError("calibration recording: fewer than 2 samples");
+  for (std::size_t k = 1; k < samples.size(); ++k) {
+    if (!(samples[k].stamp_s > samples[k - 1].stamp_s)) {
+      std::ostringstream message;
+      message << "calibration recording: stamps not increasing at sample " << k << " (" << samples[k].stamp_s
+              << " s after " << samples[k - 1].stamp_s << " s); record in order or sort the bag";
+      throw InputError(message.str());
+    }
+  }
+  const double sample_interval_s = (samples.back().stamp_s - samples.front().stamp_s) / (samples.size() - 1);
+  const std::size_t window = std::max<std::size_t>(1, std::lround(options.window_s / sample_interval_s));
+  const std::size_t window_count = samples.size() / window;
+  if (window_count < 3) throw InputError("calibration recording: too short to look for static intervals");
+
+  std::vector<Eigen::Vector3d> window_means(window_count, Eigen::Vector3d::Zero());
+  for (std::size_t w = 0; w < window_count; ++w) {
+    for (std::size_t k = w * window; k < (w + 1) * window; ++k) window_means[w] += samples[k].angular_rate_rad_s;
+    window_means[w] /= static_cast<double>(window);
+  }
+  // Noise from differences of neighbouring windows: robust to the minority of moving windows and
+  // to the different Earth-rate projections of different rests.
+  std::vector<double> differences;
+  Eigen::Vector3d resting_level;
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<double> level;
+    for (std::size_t w = 0; w < window_count; ++w) {
+      level.push_back(window_means[w][axis]);
+      if (w > 0) differences.push_back(std::abs(window_means[w][axis] - window_means[w - 1][axis]));
+    }
+    resting_level[axis] = median(level);
+  }
+  StaticDetection detection;
+  detection.window_s = window * sample_interval_s;
+  detection.window_noise_rad_s = 1.4826 * median(differences) / std::sqrt(2.0);
+  detection.threshold_rad_s = options.threshold_rad_s > 0.0
+                                  ? options.threshold_rad_s
+                                  : options.threshold_sigmas * detection.window_noise_rad_s +
+                                        2.0 * emulator::kWgs84EarthRate_rad_s;
+
+  const std::size_t min_windows = std::max<std::size_t>(3, std::ceil(options.min_duration_s / detection.window_s) + 2);
+  std::size_t run_start = 0;
+  for (std::size_t w = 0; w <= window_count; ++w) {
+    const bool at_rest =
+        w < window_count && (window_means[w] - resting_level).norm() < detection.threshold_rad_s;
+    if (at_rest) continue;
+    if (w - run_start >= min_windows) {
+      // Trim one window at each end: it may hold the tail of a move.
+      detection.intervals.push_back({(run_start + 1) * window, (w - 1) * window});
+    }
+    run_start = w + 1;
+  }
+  return detection;
+}
+
+}  // namespace calib
+}  // namespace imu_lab
