@@ -48,20 +48,20 @@ TEST(AllanMonitorResume, RestartFromTheCheckpointEndsWithTheUninterruptedResult)
   const std::size_t messages = write_emulated_imu_bag(bag, kDuration_s);
   LatestCurves curves(node);
 
-  const pid_t first = start_monitor("allan_monitor_first", monitor_parameters(directory, directory + "/first", false));
-  ASSERT_GT(first, 0);
+  MonitorProcess first("allan_monitor_first", monitor_parameters(directory, directory + "/first", false));
+  ASSERT_TRUE(first.started());
   ASSERT_TRUE(ros::service::waitForService("/allan_monitor_first/write_report", ros::Duration(60.0)));
   ASSERT_EQ(play_bag(bag, "--rate=25 --duration=" + std::to_string(kFirstPart_s)), 0);
   const auto first_part = static_cast<std::int64_t>(kFirstPart_s * kEmulatedRate_hz * 0.9);
   std::int64_t checkpoint_stamp_ns = 0;
   const std::int64_t checkpoint_samples =
       wait_for_checkpoint(directory + "/allan.checkpoint", first_part, &checkpoint_stamp_ns);
-  stop_monitor(first, SIGKILL);  // a crash: whatever came after the last checkpoint is lost
+  first.stop(SIGKILL);  // a crash: whatever came after the last checkpoint is lost
   ASSERT_GT(checkpoint_samples, 0) << "no checkpoint with " << first_part << " samples";
 
   const std::string report = directory + "/second";
-  const pid_t second = start_monitor("allan_monitor_second", monitor_parameters(directory, report, true));
-  ASSERT_GT(second, 0);
+  MonitorProcess second("allan_monitor_second", monitor_parameters(directory, report, true));
+  ASSERT_TRUE(second.started());
   ASSERT_TRUE(ros::service::waitForService("/allan_monitor_second/write_report", ros::Duration(60.0)));
   const double bag_start_s = kEmulatedStart_s + 1.0 / kEmulatedRate_hz;
   const double replay_from_s = checkpoint_stamp_ns * 1e-9 - bag_start_s - kReplayedBeforeCheckpoint_s;
@@ -72,7 +72,7 @@ TEST(AllanMonitorResume, RestartFromTheCheckpointEndsWithTheUninterruptedResult)
   std_srvs::Trigger trigger;
   ASSERT_TRUE(ros::service::call("/allan_monitor_second/write_report", trigger));
   ASSERT_TRUE(trigger.response.success) << trigger.response.message;
-  stop_monitor(second, SIGINT);
+  second.stop(SIGINT);
 
   const double difference = max_relative_difference(report, tool_result(bag));
   std::printf("allan_monitor resumed from a checkpoint at sample %lld of %zu: max relative difference to the "

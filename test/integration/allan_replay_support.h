@@ -62,24 +62,35 @@ inline int play_bag(const std::string& bag, const std::string& options) {
   return std::system(command.c_str());
 }
 
-// Starts `rosrun imu_lab allan_monitor` with command-line parameters (rosrun execs the node, so
-// the pid is the node's).
-inline pid_t start_monitor(const std::string& name, const std::vector<std::string>& parameters) {
-  std::vector<std::string> arguments = {"rosrun", "imu_lab", "allan_monitor", "__name:=" + name};
-  arguments.insert(arguments.end(), parameters.begin(), parameters.end());
-  std::vector<char*> argv;
-  for (std::string& argument : arguments) argv.push_back(argument.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  if (::posix_spawnp(&pid, "rosrun", nullptr, nullptr, argv.data(), environ) != 0) return -1;
-  return pid;
-}
+// `rosrun imu_lab allan_monitor` with command-line parameters, stopped (SIGINT: a clean shutdown)
+// when it goes out of scope, so a failed assertion leaves no node behind. rosrun execs the node,
+// so the pid is the node's.
+class MonitorProcess {
+ public:
+  MonitorProcess(const std::string& name, const std::vector<std::string>& parameters) {
+    std::vector<std::string> arguments = {"rosrun", "imu_lab", "allan_monitor", "__name:=" + name};
+    arguments.insert(arguments.end(), parameters.begin(), parameters.end());
+    std::vector<char*> argv;
+    for (std::string& argument : arguments) argv.push_back(argument.data());
+    argv.push_back(nullptr);
+    if (::posix_spawnp(&pid_, "rosrun", nullptr, nullptr, argv.data(), environ) != 0) pid_ = -1;
+  }
+  ~MonitorProcess() { stop(SIGINT); }
+  MonitorProcess(const MonitorProcess&) = delete;
+  MonitorProcess& operator=(const MonitorProcess&) = delete;
 
-inline void stop_monitor(pid_t pid, int signal_number) {
-  ::kill(pid, signal_number);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-}
+  bool started() const { return pid_ > 0; }
+  void stop(int signal_number) {
+    if (pid_ <= 0) return;
+    ::kill(pid_, signal_number);
+    int status = 0;
+    ::waitpid(pid_, &status, 0);
+    pid_ = -1;
+  }
+
+ private:
+  pid_t pid_ = -1;
+};
 
 // The node's latest gyro curves (it publishes every statistic it is asked for on one topic).
 class LatestCurves {
