@@ -1,5 +1,6 @@
 #include "imu_lab/identify/fit_points.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -23,7 +24,11 @@ std::vector<FitPoint> select_octave_points(const std::vector<allan::StabilityPoi
                         std::isfinite(point.edf) && point.edf > 0.0;
     if (!usable) continue;
     if (!kept.empty() && point.tau_s < min_ratio * kept.back().tau_s) continue;
-    kept.push_back({point.tau_s, point.deviation * point.deviation, point.edf});
+    // The EDF of one record's overlapping AVAR falls with tau for every noise type; a rise means
+    // the noise-type estimate behind it failed on the few long-tau samples (a flicker-PM call
+    // at 65 s in a Markov + white record gave 10x the EDF of its neighbours). Cap it.
+    const double edf = kept.empty() ? point.edf : std::min(point.edf, kept.back().edf);
+    kept.push_back({point.tau_s, point.deviation * point.deviation, edf});
   }
   if (kept.size() < 3) {
     throw InputError("noise identification: need at least 3 usable stability points an octave "

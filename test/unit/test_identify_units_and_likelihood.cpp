@@ -99,6 +99,9 @@ TEST(IdentifyFitPoints, KeepsOneUsablePointPerOctave) {
   EXPECT_EQ(kept[2].tau_s, 4.0);
   EXPECT_EQ(kept[3].tau_s, 16.0);
   EXPECT_DOUBLE_EQ(kept[1].avar, 0.5);
+  auto rising = curve({1, 2, 4});
+  rising[1].edf = 1000.0;  // a failed noise-type estimate
+  EXPECT_DOUBLE_EQ(select_octave_points(rising)[1].edf, 100.0);
   EXPECT_THROW(select_octave_points(curve({1, 2})), InputError);
   EXPECT_THROW(select_octave_points(curve({1, 4, 2, 8})), InputError);
   EXPECT_EQ(octave_averaging_factors(10), (std::vector<int>{1, 2, 4}));
