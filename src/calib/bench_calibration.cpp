@@ -57,14 +57,16 @@ struct FreeBlock {
 };
 
 void require_enough_rests(std::size_t fitted, std::size_t held_out, bool known_orientations,
-                          const StaticDetection& detection) {
+                          const StaticDetection& detection, const StaticDetectionOptions& detection_options) {
   const std::size_t minimum = known_orientations ? kMinimumKnownRests : kMinimumUnknownRests;
   if (fitted == 0 && held_out == 0) {
     std::ostringstream message;
     message << "no static intervals found (window " << detection.window_s << " s, threshold "
             << detection.threshold_rad_s << " rad/s = " << detection.threshold_rad_s * kDegPerRad
             << " deg/s over the resting level, from a window noise of " << detection.window_noise_rad_s
-            << " rad/s): the IMU must rest still in each orientation for at least the minimum rest duration; "
+            << " rad/s; resting level " << detection.resting_level_rad_s.norm() << " rad/s, at most "
+            << detection_options.max_resting_rate_rad_s
+            << " rad/s for a rest): the IMU must rest still in each orientation for at least the minimum rest duration; "
                "raise the threshold or lower the minimum duration if it did";
     throw InputError(message.str());
   }
@@ -145,7 +147,8 @@ CalibrationResult calibrate(const std::vector<CalibrationSample>& samples, const
     held_out[index] = true;
   }
   const std::size_t held_out_count = std::count(held_out.begin(), held_out.end(), true);
-  require_enough_rests(rest_count - held_out_count, held_out_count, known, result.detection);
+  require_enough_rests(rest_count - held_out_count, held_out_count, known, result.detection,
+                       options.static_detection);
   if (known && options.schedule->attitudes_body_to_enu.size() != rest_count) {
     std::ostringstream message;
     message << "found " << rest_count << " static intervals but the schedule " << options.schedule->source << " has "

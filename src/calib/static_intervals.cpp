@@ -60,6 +60,9 @@ StaticDetection detect_static_intervals(const std::vector<CalibrationSample>& sa
                                   : options.threshold_sigmas * detection.window_noise_rad_s +
                                         2.0 * emulator::kWgs84EarthRate_rad_s;
 
+  detection.resting_level_rad_s = resting_level;
+  if (resting_level.norm() > options.max_resting_rate_rad_s) return detection;
+
   const std::size_t min_windows = std::max<std::size_t>(3, std::ceil(options.min_duration_s / detection.window_s) + 2);
   std::size_t run_start = 0;
   for (std::size_t w = 0; w <= window_count; ++w) {

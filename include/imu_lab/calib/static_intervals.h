@@ -28,6 +28,9 @@ struct StaticDetectionOptions {
   double min_duration_s = 2.0;   // shorter rests are ignored (hesitations while turning)
   double threshold_sigmas = 6.0; // threshold = this many window-mean noise sigmas + 2 |Earth rate|
   double threshold_rad_s = 0.0;  // > 0: use this threshold instead
+  // The resting level (median window mean) is a gyro bias plus Earth rate; above this the
+  // recording has no rests (e.g. a continuous rotation) rather than a huge bias.
+  double max_resting_rate_rad_s = 0.02;
 };
 
 struct StaticDetection {
@@ -35,6 +38,7 @@ struct StaticDetection {
   double window_s = 0.0;
   double window_noise_rad_s = 0.0;  // robust sigma of a window's mean rate at rest
   double threshold_rad_s = 0.0;     // |window mean - resting level| below this counts as rest
+  Eigen::Vector3d resting_level_rad_s = Eigen::Vector3d::Zero();
 };
 
 // Throws InputError if the samples are too few for one window or the stamps are not increasing.
