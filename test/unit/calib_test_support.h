@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "imu_lab/calib/bench_calibration.h"
+#include "imu_lab/calib/kalibr_intrinsics.h"
 #include "imu_lab/emulator/imu_emulator.h"
 #include "imu_lab/emulator/scenario.h"
 #include "imu_lab/emulator/sensor_channel.h"
@@ -153,19 +154,13 @@ inline EmulatedRun emulate_table_run(const emulator::SensorProfile& profile, con
   return result;
 }
 
-// Truth re-expressed in the mode-2 frame convention: K_accelerometer = L Q (L lower triangular with a
-// positive diagonal, Q a rotation from the body frame to the accelerometer frame); the gyro's K and G
-// see body vectors through Q^T.
+// Truth re-expressed in the mode-2 frame convention: K_accelerometer = L Q (L lower triangular,
+// Q the rotation body -> accelerometer frame); the gyro's K and G see body vectors through Q^T.
 inline calib::ImuCalibration in_accelerometer_frame(const calib::ImuCalibration& truth) {
-  const Eigen::HouseholderQR<Eigen::Matrix3d> qr(truth.accelerometer.scale_misalignment.transpose());
-  Eigen::Matrix3d q = qr.householderQ();
-  Eigen::Matrix3d r = q.transpose() * truth.accelerometer.scale_misalignment.transpose();
-  const Eigen::Vector3d signs = r.diagonal().array().sign();
-  q = q * signs.asDiagonal();
-  r = signs.asDiagonal() * r;
+  Eigen::Matrix3d lower, body_to_accelerometer;
+  calib::lower_triangular_times_rotation(truth.accelerometer.scale_misalignment, lower, body_to_accelerometer);
   calib::ImuCalibration converted = truth;
-  converted.accelerometer.scale_misalignment = r.transpose();            // L
-  const Eigen::Matrix3d body_to_accelerometer = q.transpose();            // Q
+  converted.accelerometer.scale_misalignment = lower;
   converted.gyro.scale_misalignment = truth.gyro.scale_misalignment * body_to_accelerometer.transpose();
   converted.gyro.g_sensitivity = truth.gyro.g_sensitivity * body_to_accelerometer.transpose();
   return converted;

@@ -1,0 +1,146 @@
+#include "imu_lab/calib/calibration_file.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "imu_lab/common/config_error.h"
+
+namespace imu_lab {
+namespace calib {
+namespace {
+
+constexpr const char* kFormat = "imu_lab_calibration_1";
+constexpr double kDegPerHour = kDegPerRad * 3600.0;
+
+std::string vector_text(const Eigen::Vector3d& v) {
+  std::ostringstream text;
+  text << std::setprecision(12) << "[" << v.x() << ", " << v.y() << ", " << v.z() << "]";
+  return text.str();
+}
+
+void write_matrix(std::ostream& out, const std::string& key, const Eigen::Matrix3d& m) {
+  out << "  " << key << ":\n";
+  for (int row = 0; row < 3; ++row) out << "    - " << vector_text(m.row(row).transpose()) << "\n";
+}
+
+Eigen::Matrix3d block(const ParameterVector& values, int offset) {
+  Eigen::Matrix3d m;
+  for (int k = 0; k < 9; ++k) m(k / 3, k % 3) = values[offset + k];
+  return m;
+}
+
+Eigen::Vector3d read_vector(const YAML::Node& node, const std::string& path, const std::string& key) {
+  if (!node || !node.IsSequence() || node.size() != 3) throw ConfigError(path, key, "must be a list of 3 numbers");
+  Eigen::Vector3d v;
+  for (int k = 0; k < 3; ++k) {
+    v[k] = node[k].as<double>();
+    if (!std::isfinite(v[k])) throw ConfigError(path, key, "must be finite");
+  }
+  return v;
+}
+
+Eigen::Matrix3d read_matrix(const YAML::Node& node, const std::string& path, const std::string& key) {
+  if (!node || !node.IsSequence() || node.size() != 3) throw ConfigError(path, key, "must be 3 rows of 3 numbers");
+  Eigen::Matrix3d m;
+  for (int row = 0; row < 3; ++row) {
+    m.row(row) = read_vector(node[row], path, key + "[" + std::to_string(row) + "]").transpose();
+  }
+  return m;
+}
+
+TriadCalibration read_triad(const YAML::Node& node, const std::string& path, const std::string& triad,
+                            const std::string& bias_key) {
+  if (!node || !node.IsMap()) throw ConfigError(path, triad, "missing (a map with " + bias_key + " and scale_misalignment)");
+  TriadCalibration calibration;
+  calibration.bias = read_vector(node[bias_key], path, triad + "." + bias_key);
+  calibration.scale_misalignment = read_matrix(node["scale_misalignment"], path, triad + ".scale_misalignment");
+  if (std::abs(calibration.scale_misalignment.determinant()) < 1e-6) {
+    throw ConfigError(path, triad + ".scale_misalignment", "is singular: it cannot be inverted for the correction");
+  }
+  if (node["g_sensitivity_rad_s_per_m_s2"]) {
+    calibration.g_sensitivity =
+        read_matrix(node["g_sensitivity_rad_s_per_m_s2"], path, triad + ".g_sensitivity_rad_s_per_m_s2");
+  }
+  return calibration;
+}
+
+}  // namespace
+
+std::string calibration_yaml(const CalibrationResult& result) {
+  using namespace parameter_offset;
+  std::ostringstream out;
+  out << std::setprecision(12);
+  out << "# imu_lab calibration (fit_calibration). Correct with input = K^-1 (output - bias - G f),\n"
+      << "# accelerometers first (the gyro's G needs the corrected specific force). Sigmas are 1-sigma.\n";
+  out << "format: " << kFormat << "\n";
+  out << "model: \"output = bias + K * input (+ G * specific_force, gyro); input = K^-1 (output - bias - G f)\"\n";
+  out << "mode: " << (result.known_orientations ? "known_orientations" : "unknown_orientations") << "\n";
+  out << "frame: \"" << result.frame_convention << "\"\n";
+  const auto triad = [&](const std::string& name, const TriadCalibration& t, int bias_offset, int k_offset,
+                         const std::string& unit) {
+    out << name << ":\n";
+    out << "  bias_" << unit << ": " << vector_text(t.bias) << "\n";
+    out << "  bias_sigma_" << unit << ": " << vector_text(result.sigmas.segment<3>(bias_offset)) << "\n";
+    write_matrix(out, "scale_misalignment", t.scale_misalignment);
+    write_matrix(out, "scale_misalignment_sigma", block(result.sigmas, k_offset));
+    out << "  scale_factor_error_ppm: " << vector_text(t.scale_factor_error_ppm()) << "\n";
+    write_matrix(out, "misalignment_arcsec", t.misalignment_arcsec());
+  };
+  triad("gyro", result.calibration.gyro, kGyroBias, kGyroK, "rad_s");
+  write_matrix(out, "g_sensitivity_rad_s_per_m_s2", result.calibration.gyro.g_sensitivity);
+  write_matrix(out, "g_sensitivity_sigma_rad_s_per_m_s2", block(result.sigmas, kGyroGSensitivity));
+  out << "  g_sensitivity_estimated: " << (result.estimated[kGyroGSensitivity] ? "true" : "false") << "\n";
+  triad("accelerometer", result.calibration.accelerometer, kAccelerometerBias, kAccelerometerK, "m_s2");
+  out << "noise:  # white-noise densities from block means inside the rests (continuous time)\n";
+  out << "  gyro_white_density_rad_s_per_sqrt_hz: " << vector_text(result.noise.rate_density_rad_s_per_sqrt_hz) << "\n";
+  out << "  accelerometer_white_density_m_s2_per_sqrt_hz: "
+      << vector_text(result.noise.force_density_m_s2_per_sqrt_hz) << "\n";
+  std::size_t held_out = 0;
+  for (const auto& rest : result.rests) held_out += rest.held_out ? 1 : 0;
+  out << "fit:\n";
+  out << "  rests: " << result.rests.size() << "\n  held_out_rests: " << held_out << "\n";
+  out << "  moves: " << result.moves.size() << "\n";
+  out << "  residuals: " << result.residual_count << "\n  free_parameters: " << result.free_parameter_count << "\n";
+  out << "  chi2_per_dof: " << result.chi2_per_degree_of_freedom << "\n";
+  out << "  condition_number: " << result.condition_number << "\n";
+  out << "  static_window_s: " << result.detection.window_s << "\n";
+  out << "  static_threshold_rad_s: " << result.detection.threshold_rad_s << "\n";
+  const auto& g = result.held_out.gravity_m_s2;
+  const auto& w = result.held_out.earth_rate_rad_s;
+  out << "held_out_check:  # spread (std) over the held-out rests of |g| and |Earth rate|\n";
+  out << "  rests: " << g.rests << "\n";
+  out << "  gravity_spread_raw_m_s2: " << g.raw_spread << "\n";
+  out << "  gravity_spread_corrected_m_s2: " << g.corrected_spread << "\n";
+  out << "  gravity_spread_expected_m_s2: " << g.expected_spread << "\n";
+  out << "  earth_rate_spread_raw_deg_h: " << w.raw_spread * kDegPerHour << "\n";
+  out << "  earth_rate_spread_corrected_deg_h: " << w.corrected_spread * kDegPerHour << "\n";
+  out << "  earth_rate_spread_expected_deg_h: " << w.expected_spread * kDegPerHour << "\n";
+  return out.str();
+}
+
+ImuCalibration load_calibration(const std::string& path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& error) {
+    throw ConfigError(path, "(file)", std::string("cannot be read as YAML: ") + error.what());
+  }
+  if (!root["format"] || root["format"].as<std::string>() != kFormat) {
+    throw ConfigError(path, "format", std::string("must be ") + kFormat + " (write the file with fit_calibration)");
+  }
+  try {
+    ImuCalibration calibration;
+    calibration.gyro = read_triad(root["gyro"], path, "gyro", "bias_rad_s");
+    calibration.accelerometer = read_triad(root["accelerometer"], path, "accelerometer", "bias_m_s2");
+    calibration.accelerometer.g_sensitivity.setZero();
+    return calibration;
+  } catch (const YAML::Exception& error) {
+    throw ConfigError(path, "(values)", std::string("not numbers: ") + error.what());
+  }
+}
+
+}  // namespace calib
+}  // namespace imu_lab
