@@ -1,0 +1,102 @@
+#include "imu_lab/ros/calibration_corrector_node.h"
+
+#include <Eigen/LU>
+#include <cmath>
+
+#include "imu_lab/calib/calibration_file.h"
+#include "imu_lab/common/config_error.h"
+
+namespace imu_lab {
+namespace ros_io {
+namespace {
+
+constexpr double kLogThrottle_s = 5.0;
+
+Eigen::Vector3d vector_of(const geometry_msgs::Vector3& v) { return Eigen::Vector3d(v.x, v.y, v.z); }
+
+geometry_msgs::Vector3 message_of(const Eigen::Vector3d& v) {
+  geometry_msgs::Vector3 m;
+  m.x = v.x();
+  m.y = v.y();
+  m.z = v.z();
+  return m;
+}
+
+// K^-1 C K^-T for a known covariance; -1 in element 0 ("unknown", REP-145) stays as it is.
+void carry_covariance(boost::array<double, 9>& covariance, const Eigen::Matrix3d& k_inverse) {
+  if (covariance[0] < 0.0) return;
+  Eigen::Matrix3d c;
+  for (int k = 0; k < 9; ++k) c(k / 3, k % 3) = covariance[k];
+  const Eigen::Matrix3d carried = k_inverse * c * k_inverse.transpose();
+  for (int k = 0; k < 9; ++k) covariance[k] = carried(k / 3, k % 3);
+}
+
+bool finite(const sensor_msgs::Imu& message) {
+  return vector_of(message.angular_velocity).allFinite() && vector_of(message.linear_acceleration).allFinite();
+}
+
+}  // namespace
+
+sensor_msgs::Imu corrected_message(const sensor_msgs::Imu& input, const calib::ImuCalibration& calibration) {
+  sensor_msgs::Imu output = input;
+  const calib::CorrectedSample corrected =
+      calibration.correct(vector_of(input.angular_velocity), vector_of(input.linear_acceleration));
+  output.angular_velocity = message_of(corrected.angular_rate_rad_s);
+  output.linear_acceleration = message_of(corrected.specific_force_m_s2);
+  carry_covariance(output.angular_velocity_covariance, calibration.gyro.scale_misalignment.inverse());
+  carry_covariance(output.linear_acceleration_covariance, calibration.accelerometer.scale_misalignment.inverse());
+  return output;
+}
+
+CalibrationCorrectorNode::CalibrationCorrectorNode(ros::NodeHandle& node, ros::NodeHandle& private_node) {
+  if (!private_node.getParam("calibration_file", calibration_file_) || calibration_file_.empty()) {
+    throw ConfigError(private_node.resolveName("calibration_file"), "calibration_file",
+                      "required: the YAML written by fit_calibration");
+  }
+  calibration_ = calib::load_calibration(calibration_file_);
+  const int queue_size = private_node.param("queue_size", 1000);
+  if (queue_size <= 0) throw ConfigError(private_node.resolveName("queue_size"), "queue_size", "must be positive");
+
+  publisher_ = node.advertise<sensor_msgs::Imu>("imu/corrected", queue_size);
+  subscriber_ = node.subscribe("imu/thermal", queue_size, &CalibrationCorrectorNode::on_imu, this);
+  diagnostics_.setHardwareID("calibration_corrector");
+  diagnostics_.add("calibration correction", this, &CalibrationCorrectorNode::report);
+  diagnostics_timer_ = node.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    diagnostics_.update();
+  });
+  ROS_INFO("calibration_corrector: %s -> %s with %s", subscriber_.getTopic().c_str(), publisher_.getTopic().c_str(),
+           calibration_file_.c_str());
+}
+
+void CalibrationCorrectorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++window_samples_;
+  if (!finite(*message)) {
+    ++dropped_;
+    ROS_WARN_THROTTLE(kLogThrottle_s, "calibration_corrector: dropped a sample with NaN/Inf at %.9f (counted in "
+                      "diagnostics)", message->header.stamp.toSec());
+    return;
+  }
+  publisher_.publish(corrected_message(*message, calibration_));
+  ++corrected_;
+}
+
+void CalibrationCorrectorNode::report(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  if (window_samples_ == 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "no input since the last report");
+  } else if (dropped_ > dropped_reported_) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   std::to_string(dropped_ - dropped_reported_) + " samples with NaN/Inf dropped since the last report");
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "correcting");
+  }
+  status.add("calibration file", calibration_file_);
+  status.add("samples corrected", corrected_);
+  status.add("samples dropped (NaN/Inf)", dropped_);
+  window_samples_ = 0;
+  dropped_reported_ = dropped_;
+}
+
+}  // namespace ros_io
+}  // namespace imu_lab

@@ -1,0 +1,99 @@
+// fit_calibration: a calibration bag (IMU resting in several orientations, turned between them)
+// in; the calibration YAML, the Kalibr/OpenVINS intrinsics and a text report out (all atomic).
+// With --schedule (a multi_position scenario) the orientations are known (mode 1); without it
+// they are estimated (mode 2, hand-turned IMU). See include/imu_lab/calib/bench_calibration.h.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "imu_lab/calib/bench_calibration.h"
+#include "imu_lab/calib/calibration_file.h"
+#include "imu_lab/calib/calibration_report.h"
+#include "imu_lab/calib/kalibr_intrinsics.h"
+#include "imu_lab/common/atomic_file.h"
+#include "imu_lab/common/config_error.h"
+#include "imu_lab/ros/config_paths.h"
+#include "imu_lab/ros/imu_bag_reader.h"
+
+namespace {
+
+constexpr double kRadPerDeg = 3.14159265358979323846 / 180.0;
+
+// "out/calibration.yaml" -> "out/calibration" + suffix.
+std::string beside(const std::string& path, const std::string& suffix) {
+  const auto dot = path.rfind('.');
+  const auto slash = path.rfind('/');
+  const bool has_extension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  return (has_extension ? path.substr(0, dot) : path) + suffix;
+}
+
+imu_lab::emulator::EarthModel earth_model_named(const std::string& name) {
+  if (name == "wgs84_rotating") return imu_lab::emulator::EarthModel::kWgs84Rotating;
+  if (name == "sphere_non_rotating") return imu_lab::emulator::EarthModel::kSphereNonRotating;
+  throw imu_lab::ConfigError("--earth-model", "earth_model", "must be wgs84_rotating or sphere_non_rotating");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Bench calibration of an IMU bag: bias and full scale/misalignment matrix of gyros and accelerometers."};
+  std::string bag_path, topic, schedule_name, out_path, earth_model = "wgs84_rotating";
+  double latitude_deg = 0.0, height_m = 0.0;
+  std::size_t held_out_last = 0;
+  imu_lab::calib::CalibrationOptions options;
+  app.add_option("bag", bag_path, "calibration bag")->required();
+  app.add_option("--out", out_path, "calibration YAML to write (beside it: *_kalibr_imu_chain.yaml, *_report.txt)")
+      ->required();
+  app.add_option("--topic", topic, "sensor_msgs/Imu topic (default: the only one in the bag)");
+  app.add_option("--schedule", schedule_name,
+                 "multi_position scenario (name in config/scenarios or path) giving the orientations: mode 1");
+  app.add_option("--latitude-deg", latitude_deg, "site latitude, without a schedule")->capture_default_str();
+  app.add_option("--height-m", height_m, "site height, without a schedule")->capture_default_str();
+  app.add_option("--earth-model", earth_model, "wgs84_rotating | sphere_non_rotating, without a schedule")
+      ->capture_default_str();
+  app.add_option("--held-out-last", held_out_last, "leave the last N rests out of the fit, for the |g|/|Earth rate| check");
+  app.add_flag("--g-sensitivity", options.estimate_g_sensitivity, "also fit the gyros' g-sensitivity matrix");
+  app.add_option("--static-window-s", options.static_detection.window_s, "rest detection window")->capture_default_str();
+  app.add_option("--min-rest-s", options.static_detection.min_duration_s, "shortest rest")->capture_default_str();
+  app.add_option("--static-threshold-rad-s", options.static_detection.threshold_rad_s,
+                 "rest threshold on the window mean rate (default: from the noise)");
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    if (!schedule_name.empty()) {
+      options.schedule = imu_lab::calib::schedule_from_scenario(
+          imu_lab::emulator::load_scenario(imu_lab::ros_io::resolve_config("scenarios", schedule_name)));
+    } else {
+      options.site.latitude_rad = latitude_deg * kRadPerDeg;
+      options.site.height_m = height_m;
+      options.site.earth_model = earth_model_named(earth_model);
+    }
+    topic = imu_lab::ros_io::choose_imu_topic(bag_path, topic);
+    std::vector<imu_lab::calib::CalibrationSample> samples;
+    imu_lab::ros_io::for_each_imu(bag_path, topic, [&](const imu_lab::ros_io::ImuRecord& record) {
+      samples.push_back({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2});
+    });
+    if (samples.size() < 2) throw imu_lab::InputError("bag " + bag_path + ": topic " + topic + " has too few messages");
+    // Held out at the end, like the thesis's verification run after the calibration run.
+    const std::size_t rests = imu_lab::calib::detect_static_intervals(samples, options.static_detection).intervals.size();
+    for (std::size_t k = rests > held_out_last ? rests - held_out_last : 0; k < rests; ++k) {
+      options.held_out_positions.push_back(k);
+    }
+    const auto result = imu_lab::calib::calibrate(samples, options);
+    const double rate_hz = (samples.size() - 1) / (samples.back().stamp_s - samples.front().stamp_s);
+    const std::string report = imu_lab::calib::calibration_report(result);
+    imu_lab::write_file_atomically(out_path, imu_lab::calib::calibration_yaml(result));
+    imu_lab::write_file_atomically(beside(out_path, "_kalibr_imu_chain.yaml"),
+                                   imu_lab::calib::kalibr_imu_chain_yaml(result, topic, rate_hz));
+    imu_lab::write_file_atomically(beside(out_path, "_report.txt"), report);
+    std::cout << report << "\nwrote " << out_path << ", " << beside(out_path, "_kalibr_imu_chain.yaml") << ", "
+              << beside(out_path, "_report.txt") << "\n";
+    return 0;
+  } catch (const imu_lab::ConfigError& error) {
+    std::cerr << "fit_calibration: bad configuration: " << error.what() << "\n";
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "fit_calibration: " << error.what() << "\n";
+    return 1;
+  }
+}

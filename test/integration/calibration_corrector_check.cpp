@@ -1,0 +1,84 @@
+// rostest checker for calibration_corrector: emulates a bag, plays it with `rosbag play --clock`
+// into the node, and checks that the node publishes one corrected sample per input sample, with
+// the same stamps, equal to the core library's correction (ImuCalibration::correct). Counts and
+// generous time-outs only, never wall-clock rates.
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <sensor_msgs/Imu.h>
+#include <stdlib.h>
+
+#include <cstdio>
+#include <map>
+#include <string>
+
+#include "imu_lab/calib/calibration_file.h"
+#include "imu_lab/ros/imu_bag_reader.h"
+
+namespace {
+
+std::string private_string(const std::string& name) {
+  std::string value;
+  ros::param::get("~" + name, value);
+  return value;
+}
+
+Eigen::Vector3d vector_of(const geometry_msgs::Vector3& v) { return Eigen::Vector3d(v.x, v.y, v.z); }
+
+TEST(CalibrationCorrectorNode, PublishesTheCoreCorrectionOfEverySample) {
+  char pattern[] = "/tmp/imu_lab_corrector_check_XXXXXX";
+  const std::string directory = ::mkdtemp(pattern);
+  const std::string bag = directory + "/calibration.bag";
+  const std::string emulate = "rosrun imu_lab emulate " + private_string("emulate_arguments") + " --out " + bag +
+                              " > " + directory + "/emulate.log 2>&1";
+  ASSERT_EQ(std::system(emulate.c_str()), 0) << "failed: " << emulate;
+  const auto calibration = imu_lab::calib::load_calibration(private_string("calibration_file"));
+  std::map<std::int64_t, imu_lab::ros_io::ImuRecord> inputs;
+  imu_lab::ros_io::for_each_imu(bag, "/imu/raw",
+                                [&](const imu_lab::ros_io::ImuRecord& record) { inputs[record.stamp_ns] = record; });
+  ASSERT_GT(inputs.size(), 1000u);
+
+  ros::NodeHandle node;
+  std::map<std::int64_t, sensor_msgs::Imu> outputs;
+  auto subscriber = node.subscribe<sensor_msgs::Imu>("/imu/corrected", 100000, [&](const sensor_msgs::Imu::ConstPtr& m) {
+    outputs[static_cast<std::int64_t>(m->header.stamp.toNSec())] = *m;
+  });
+  const std::string play = "rosbag play --clock --wait-for-subscribers --quiet --queue=100000 " + bag + " " +
+                           private_string("play_arguments") + " > " + directory + "/play.log 2>&1";
+  FILE* player = ::popen(play.c_str(), "r");
+  ASSERT_NE(player, nullptr);
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(200.0);  // generous for loaded CI
+  while (ros::ok() && ros::WallTime::now() < deadline && outputs.size() < inputs.size()) {
+    ros::spinOnce();
+    ros::WallDuration(0.005).sleep();
+  }
+  EXPECT_EQ(::pclose(player), 0) << "rosbag play failed; see " << directory << "/play.log";
+  ros::WallDuration(0.5).sleep();
+  ros::spinOnce();
+  ASSERT_EQ(outputs.size(), inputs.size()) << "the node did not publish one corrected sample per input in time";
+
+  double worst_rate_rad_s = 0.0, worst_force_m_s2 = 0.0, largest_change_m_s2 = 0.0;
+  for (const auto& [stamp_ns, input] : inputs) {
+    const auto found = outputs.find(stamp_ns);
+    ASSERT_NE(found, outputs.end()) << "no corrected sample at " << stamp_ns << " ns";
+    const auto expected = calibration.correct(input.angular_rate_rad_s, input.specific_force_m_s2);
+    worst_rate_rad_s = std::max(worst_rate_rad_s,
+                                (vector_of(found->second.angular_velocity) - expected.angular_rate_rad_s).norm());
+    worst_force_m_s2 = std::max(worst_force_m_s2,
+                                (vector_of(found->second.linear_acceleration) - expected.specific_force_m_s2).norm());
+    largest_change_m_s2 = std::max(largest_change_m_s2, (expected.specific_force_m_s2 - input.specific_force_m_s2).norm());
+  }
+  std::printf("[calibration_corrector_check] %zu samples: worst difference from the core %.3g rad/s, %.3g m/s^2 "
+              "(the correction itself moves the force by up to %.3g m/s^2)\n",
+              outputs.size(), worst_rate_rad_s, worst_force_m_s2, largest_change_m_s2);
+  EXPECT_LT(worst_rate_rad_s, 1e-15);
+  EXPECT_LT(worst_force_m_s2, 1e-13);
+  EXPECT_GT(largest_change_m_s2, 1e-3);  // the calibration really changes the data
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "calibration_corrector_check");
+  return RUN_ALL_TESTS();
+}
