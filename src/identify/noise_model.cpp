@@ -1,6 +1,5 @@
 #include "imu_lab/identify/noise_model.h"
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -85,10 +84,6 @@ double model_avar(const NoiseModel& model, double tau_s) {
 bool term_order_less(const Term& a, const Term& b) {
   if (a.kind != b.kind) return static_cast<int>(a.kind) < static_cast<int>(b.kind);
   return a.kind == TermKind::kMarkov && a.shape < b.shape;
-}
-
-void sort_terms(NoiseModel& model) {
-  std::stable_sort(model.terms.begin(), model.terms.end(), term_order_less);
 }
 
 std::vector<std::string> term_names(const NoiseModel& model) {

@@ -35,7 +35,7 @@ std::vector<double> log_parameters_from_model(const ModelStructure& structure,
 // The structure and parameters without slot i.
 void remove_slot(ModelStructure& structure, std::vector<double>& log_parameters, int slot_index);
 
-// Reorders slots (and their parameters) as sort_terms() orders terms.
+// Reorders slots (and their parameters) by term_order_less(), so term names are stable.
 void canonical_order(ModelStructure& structure, std::vector<double>& log_parameters);
 
 }  // namespace identify

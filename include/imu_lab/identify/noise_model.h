@@ -55,8 +55,6 @@ std::vector<std::string> term_names(const NoiseModel& model);
 
 // Canonical order: by kind, Markov terms by increasing correlation time.
 bool term_order_less(const Term& a, const Term& b);
-// Orders terms canonically (by kind, Markov terms by correlation time) so names are stable.
-void sort_terms(NoiseModel& model);
 
 }  // namespace identify
 }  // namespace imu_lab
