@@ -22,7 +22,10 @@ std::uint64_t write_emulated_bag(emulator::ImuEmulator& emulator, const Emulated
     const ros::Time stamp = sample_stamp(emulator.settings().start_time_s, interval_s, emulator.samples_emitted());
     const EmulatorMessages messages = to_messages(sample, stamp, interval_s, options.frame_id);
     bag.write(options.topics.raw, stamp, messages.raw);
-    if (options.write_temperature) bag.write(options.topics.temperature, stamp, messages.temperature);
+    if (options.write_temperature) {
+      bag.write(options.topics.temperature, stamp, messages.temperature);
+      if (messages.second_temperature) bag.write(options.topics.second_temperature, stamp, *messages.second_temperature);
+    }
     if (options.write_truth) bag.write(options.topics.truth, stamp, messages.truth);
     if (options.write_increments) bag.write(options.topics.increment, stamp, messages.increment);
   }

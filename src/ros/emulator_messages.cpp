@@ -42,6 +42,10 @@ EmulatorMessages to_messages(const emulator::ImuSample& sample, const ros::Time&
   out.temperature.header = header;
   out.temperature.temperature = sample.temperature_c;
   out.temperature.variance = 0.0;
+  if (sample.second_temperature_c) {
+    out.second_temperature = out.temperature;
+    out.second_temperature->temperature = *sample.second_temperature_c;
+  }
 
   const emulator::TruthSample& truth = sample.truth;
   out.truth.header = header;

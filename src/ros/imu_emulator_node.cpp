@@ -47,6 +47,9 @@ ImuEmulatorNode::ImuEmulatorNode(ros::NodeHandle& node, ros::NodeHandle& private
   const int queue = 4 * static_cast<int>(std::ceil(settings.rate_hz)) + 100;
   raw_publisher_ = node.advertise<sensor_msgs::Imu>("imu/raw", queue);
   temperature_publisher_ = node.advertise<sensor_msgs::Temperature>("imu/temperature", queue);
+  if (scenario.thermal && scenario.thermal->second_sensor_time_constant_s) {
+    second_temperature_publisher_ = node.advertise<sensor_msgs::Temperature>("imu/temperature2", queue);
+  }
   if (publish_truth_) truth_publisher_ = node.advertise<imu_lab::ImuTruth>("imu/truth", queue);
   if (publish_increments_) increment_publisher_ = node.advertise<imu_lab::ImuIncrement>("imu/increment", queue);
 
@@ -64,6 +67,7 @@ void ImuEmulatorNode::publish_next() {
   const EmulatorMessages messages = to_messages(sample, stamp, interval_s, frame_id_);
   raw_publisher_.publish(messages.raw);
   temperature_publisher_.publish(messages.temperature);
+  if (messages.second_temperature) second_temperature_publisher_.publish(*messages.second_temperature);
   if (publish_truth_) truth_publisher_.publish(messages.truth);
   if (publish_increments_) increment_publisher_.publish(messages.increment);
 }

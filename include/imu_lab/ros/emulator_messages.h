@@ -1,6 +1,7 @@
 // Conversion of emulator samples into the messages the emulator node publishes and the
 // emulate tool writes: sensor_msgs/Imu (/imu/raw), sensor_msgs/Temperature (/imu/temperature),
-// imu_lab/ImuTruth (/imu/truth) and imu_lab/ImuIncrement (/imu/increment).
+// imu_lab/ImuTruth (/imu/truth) and imu_lab/ImuIncrement (/imu/increment); when the scenario
+// has a second, lagging thermosensor, its sensor_msgs/Temperature on /imu/temperature2.
 #pragma once
 
 #include <imu_lab/ImuIncrement.h>
@@ -9,6 +10,7 @@
 #include <sensor_msgs/Temperature.h>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "imu_lab/emulator/imu_emulator.h"
@@ -20,6 +22,7 @@ namespace ros_io {
 struct EmulatorTopics {
   std::string raw = "/imu/raw";
   std::string temperature = "/imu/temperature";
+  std::string second_temperature = "/imu/temperature2";
   std::string truth = "/imu/truth";
   std::string increment = "/imu/increment";
 };
@@ -27,6 +30,7 @@ struct EmulatorTopics {
 struct EmulatorMessages {
   sensor_msgs::Imu raw;
   sensor_msgs::Temperature temperature;
+  std::optional<sensor_msgs::Temperature> second_temperature;  // only with a second thermosensor
   imu_lab::ImuTruth truth;
   imu_lab::ImuIncrement increment;
 };

@@ -5,7 +5,8 @@
 //   start_time_s (0 = the wall clock at start-up; >0 = that stamp, for reproducible runs)
 //   realtime_factor (1.0; 2.0 publishes twice as fast as real time)
 //   duration_s (0 = until shut down), publish_truth (true), publish_increments (true)
-// Topics: imu/raw, imu/temperature, imu/truth, imu/increment (relative: remap or push a namespace);
+// Topics: imu/raw, imu/temperature, imu/truth, imu/increment, and imu/temperature2 when the scenario
+// has a second thermosensor (relative: remap or push a namespace);
 // diagnostics on /diagnostics.
 #pragma once
 
@@ -41,6 +42,7 @@ class ImuEmulatorNode {
   bool publish_increments_ = true;
   ros::Publisher raw_publisher_;
   ros::Publisher temperature_publisher_;
+  ros::Publisher second_temperature_publisher_;  // valid only with a second thermosensor
   ros::Publisher truth_publisher_;
   ros::Publisher increment_publisher_;
   diagnostic_updater::Updater diagnostics_;
