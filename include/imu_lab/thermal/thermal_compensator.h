@@ -1,0 +1,56 @@
+// Live thermal compensation of an IMU stream: IMU samples and thermosensor readings arrive on
+// separate topics in any interleaving; each IMU sample is corrected with the temperature at its
+// own stamp. A sample waits until a reading at or after its stamp has arrived (so it is
+// interpolated, exactly as offline), or until newer IMU samples show that the temperature is
+// more than max_temperature_age_s behind; then the nearest reading is used if it is within
+// max_temperature_age_s, otherwise the sample is reported stale and not corrected.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <vector>
+
+#include "imu_lab/thermal/temperature_history.h"
+#include "imu_lab/thermal/thermal_model.h"
+#include "imu_lab/thermal/thermal_windows.h"
+
+namespace imu_lab {
+namespace thermal {
+
+struct CompensatedSample {
+  enum class Status { kCorrected, kClamped, kStale };
+  Status status = Status::kCorrected;
+  ImuReading corrected;  // the raw reading when stale
+  ThermalInput input;    // what the correction used (before clamping)
+};
+
+class ThermalCompensator {
+ public:
+  ThermalCompensator(ThermalModel model, double max_temperature_age_s);
+
+  // Each returns the samples that became decidable, in stamp order. Out-of-order or non-finite
+  // readings are refused (false / counted) and change nothing.
+  bool add_temperature(double stamp_s, double temperature_c, std::vector<CompensatedSample>* ready);
+  bool add_second_temperature(double stamp_s, double temperature_c, std::vector<CompensatedSample>* ready);
+  bool add_imu(const ImuReading& reading, std::vector<CompensatedSample>* ready);
+  // Decides every waiting sample with what has arrived (end of a bag).
+  void flush(std::vector<CompensatedSample>* ready);
+
+  const ThermalModel& model() const { return model_; }
+  std::size_t waiting() const { return waiting_.size(); }
+
+ private:
+  void release(bool everything, std::vector<CompensatedSample>* ready);
+  bool has_reading_after(const TemperatureHistory& history, double stamp_s) const;
+  CompensatedSample compensate(const ImuReading& reading) const;
+
+  ThermalModel model_;
+  double max_temperature_age_s_;
+  TemperatureHistory temperature_;
+  TemperatureHistory second_temperature_;
+  std::deque<ImuReading> waiting_;
+  double newest_imu_stamp_s_ = -1.0;
+};
+
+}  // namespace thermal
+}  // namespace imu_lab

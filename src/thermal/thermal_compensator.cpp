@@ -1,0 +1,80 @@
+#include "imu_lab/thermal/thermal_compensator.h"
+
+#include <cmath>
+
+namespace imu_lab {
+namespace thermal {
+
+ThermalCompensator::ThermalCompensator(ThermalModel model, double max_temperature_age_s)
+    : model_(std::move(model)), max_temperature_age_s_(max_temperature_age_s) {}
+
+bool ThermalCompensator::add_temperature(double stamp_s, double temperature_c, std::vector<CompensatedSample>* ready) {
+  if (!temperature_.add(stamp_s, temperature_c)) return false;
+  release(false, ready);
+  return true;
+}
+
+bool ThermalCompensator::add_second_temperature(double stamp_s, double temperature_c,
+                                                std::vector<CompensatedSample>* ready) {
+  if (!second_temperature_.add(stamp_s, temperature_c)) return false;
+  release(false, ready);
+  return true;
+}
+
+bool ThermalCompensator::add_imu(const ImuReading& reading, std::vector<CompensatedSample>* ready) {
+  if (!(reading.stamp_s > newest_imu_stamp_s_) || !reading.angular_rate_rad_s.allFinite() ||
+      !reading.specific_force_m_s2.allFinite()) {
+    return false;
+  }
+  newest_imu_stamp_s_ = reading.stamp_s;
+  waiting_.push_back(reading);
+  release(false, ready);
+  return true;
+}
+
+void ThermalCompensator::flush(std::vector<CompensatedSample>* ready) { release(true, ready); }
+
+bool ThermalCompensator::has_reading_after(const TemperatureHistory& history, double stamp_s) const {
+  return !history.empty() && history.newest_stamp_s() >= stamp_s;
+}
+
+void ThermalCompensator::release(bool everything, std::vector<CompensatedSample>* ready) {
+  while (!waiting_.empty()) {
+    const double stamp_s = waiting_.front().stamp_s;
+    const bool bracketed = has_reading_after(temperature_, stamp_s) &&
+                           (!model_.uses_second_sensor || has_reading_after(second_temperature_, stamp_s));
+    const bool given_up = newest_imu_stamp_s_ - stamp_s > max_temperature_age_s_;
+    if (!(bracketed || given_up || everything)) break;
+    ready->push_back(compensate(waiting_.front()));
+    waiting_.pop_front();
+  }
+  // The rate needs one window of history; interpolation needs the reading before.
+  const double keep_from_s = (waiting_.empty() ? newest_imu_stamp_s_ : waiting_.front().stamp_s) -
+                             model_.rate_window_s - max_temperature_age_s_;
+  temperature_.drop_before(keep_from_s);
+  second_temperature_.drop_before(keep_from_s);
+}
+
+CompensatedSample ThermalCompensator::compensate(const ImuReading& reading) const {
+  CompensatedSample out;
+  out.corrected = reading;
+  const auto temperature_c = temperature_.temperature_at(reading.stamp_s, max_temperature_age_s_);
+  std::optional<double> second_c;
+  if (model_.uses_second_sensor) second_c = second_temperature_.temperature_at(reading.stamp_s, max_temperature_age_s_);
+  if (!temperature_c || (model_.uses_second_sensor && !second_c)) {
+    out.status = CompensatedSample::Status::kStale;
+    return out;
+  }
+  out.input.temperature_c = *temperature_c;
+  out.input.rate_c_s = temperature_.rate_at(reading.stamp_s, model_.rate_window_s);
+  out.input.second_temperature_c = second_c;
+  const ThermalCorrection correction =
+      correct(model_, reading.angular_rate_rad_s, reading.specific_force_m_s2, out.input);
+  out.corrected.angular_rate_rad_s = correction.angular_rate_rad_s;
+  out.corrected.specific_force_m_s2 = correction.specific_force_m_s2;
+  out.status = correction.clamped ? CompensatedSample::Status::kClamped : CompensatedSample::Status::kCorrected;
+  return out;
+}
+
+}  // namespace thermal
+}  // namespace imu_lab

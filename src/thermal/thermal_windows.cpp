@@ -1,0 +1,112 @@
+#include "imu_lab/thermal/thermal_windows.h"
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+#include "imu_lab/common/config_error.h"
+
+namespace imu_lab {
+namespace thermal {
+namespace {
+
+std::string stale_message(const char* which, double stamp_s, double age_s, double max_age_s) {
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(3) << "the " << which << " is stale at IMU stamp " << stamp_s
+       << " s: the nearest reading is " << age_s << " s away (maximum age " << max_age_s
+       << " s); check that the thermosensor was recorded through the whole test, or raise the maximum "
+          "temperature age";
+  return text.str();
+}
+
+Eigen::Vector3d spread(const Eigen::Vector3d& sum, const Eigen::Vector3d& square_sum, double count) {
+  const Eigen::Vector3d mean = sum / count;
+  return (square_sum / count - mean.cwiseProduct(mean)).cwiseMax(0.0).cwiseSqrt();
+}
+
+}  // namespace
+
+ThermalWindowAverager::ThermalWindowAverager(const WindowSettings& settings, const TemperatureHistory& temperature,
+                                             const TemperatureHistory* second_temperature)
+    : settings_(settings), temperature_(temperature), second_temperature_(second_temperature) {}
+
+void ThermalWindowAverager::add(const ImuReading& reading) {
+  if (first_stamp_s_ && !(reading.stamp_s > last_stamp_s_)) {
+    std::ostringstream text;
+    text << std::setprecision(15) << "IMU stamps go backwards or repeat at " << reading.stamp_s
+         << " s (previous " << last_stamp_s_ << " s); re-record or sort the bag by header stamp";
+    throw InputError(text.str());
+  }
+  const auto temperature_c = temperature_.temperature_at(reading.stamp_s, settings_.max_temperature_age_s);
+  if (!temperature_c) {
+    throw InputError(stale_message("temperature", reading.stamp_s, temperature_.age_at(reading.stamp_s),
+                                   settings_.max_temperature_age_s));
+  }
+  std::optional<double> second_c;
+  if (second_temperature_) {
+    second_c = second_temperature_->temperature_at(reading.stamp_s, settings_.max_temperature_age_s);
+    if (!second_c) {
+      throw InputError(stale_message("second temperature", reading.stamp_s,
+                                     second_temperature_->age_at(reading.stamp_s), settings_.max_temperature_age_s));
+    }
+  }
+  if (first_stamp_s_) {
+    const double interval_s = reading.stamp_s - last_stamp_s_;
+    if (sample_interval_s_ == 0.0 || interval_s < sample_interval_s_) sample_interval_s_ = interval_s;
+  } else {
+    first_stamp_s_ = reading.stamp_s;
+  }
+  last_stamp_s_ = reading.stamp_s;
+  const long index = static_cast<long>(std::floor((reading.stamp_s - *first_stamp_s_) / settings_.window_s));
+  if (index != window_index_) {
+    if (count_ > 0) close_window();
+    window_index_ = index;
+    count_ = 0;
+    rate_offset_ = reading.angular_rate_rad_s;
+    force_offset_ = reading.specific_force_m_s2;
+    rate_sum_ = rate_square_sum_ = force_sum_ = force_square_sum_ = Eigen::Vector3d::Zero();
+    stamp_sum_ = temperature_sum_ = rate_c_s_sum_ = second_sum_ = 0.0;
+  }
+  const Eigen::Vector3d rate = reading.angular_rate_rad_s - rate_offset_;
+  const Eigen::Vector3d force = reading.specific_force_m_s2 - force_offset_;
+  ++count_;
+  rate_sum_ += rate;
+  rate_square_sum_ += rate.cwiseProduct(rate);
+  force_sum_ += force;
+  force_square_sum_ += force.cwiseProduct(force);
+  stamp_sum_ += reading.stamp_s - *first_stamp_s_;
+  temperature_sum_ += *temperature_c;
+  rate_c_s_sum_ += temperature_.rate_at(reading.stamp_s, settings_.rate_window_s);
+  if (second_c) second_sum_ += *second_c;
+}
+
+void ThermalWindowAverager::close_window() {
+  const double n = static_cast<double>(count_);
+  ThermalWindow window;
+  window.start_s = *first_stamp_s_ + static_cast<double>(window_index_) * settings_.window_s;
+  window.mid_stamp_s = *first_stamp_s_ + stamp_sum_ / n;
+  window.sample_count = count_;
+  window.mean_angular_rate_rad_s = rate_offset_ + rate_sum_ / n;
+  window.mean_specific_force_m_s2 = force_offset_ + force_sum_ / n;
+  window.angular_rate_std_rad_s = spread(rate_sum_, rate_square_sum_, n);
+  window.specific_force_std_m_s2 = spread(force_sum_, force_square_sum_, n);
+  window.temperature_c = temperature_sum_ / n;
+  window.rate_c_s = rate_c_s_sum_ / n;
+  if (second_temperature_) window.second_temperature_c = second_sum_ / n;
+  const double expected = sample_interval_s_ > 0.0 ? settings_.window_s / sample_interval_s_
+                                                   : std::numeric_limits<double>::infinity();
+  window.is_static = n >= settings_.min_fill_fraction * expected &&
+                     window.angular_rate_std_rad_s.maxCoeff() < settings_.static_angular_rate_std_rad_s &&
+                     window.specific_force_std_m_s2.maxCoeff() < settings_.static_specific_force_std_m_s2;
+  windows_.push_back(window);
+}
+
+std::vector<ThermalWindow> ThermalWindowAverager::finish() {
+  if (count_ > 0) close_window();
+  count_ = 0;
+  return std::move(windows_);
+}
+
+}  // namespace thermal
+}  // namespace imu_lab
