@@ -5,6 +5,7 @@
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
 #include <sensor_msgs/Imu.h>
+#include <sensor_msgs/Temperature.h>
 
 #include <map>
 
@@ -165,6 +166,14 @@ std::size_t for_each_truth(const std::string& bag_path, const std::string& topic
     record.velocity_enu_m_s = to_eigen(message.velocity_enu_m_s);
     on_record(record);
   });
+}
+
+std::size_t for_each_temperature(const std::string& bag_path, const std::string& topic,
+                                 const std::function<void(const TemperatureRecord&)>& on_record) {
+  return for_each_message<sensor_msgs::Temperature>(
+      bag_path, topic, "sensor_msgs/Temperature", [&](const sensor_msgs::Temperature& message) {
+        on_record({message.header.stamp.toSec(), message.temperature});
+      });
 }
 
 }  // namespace ros_io

@@ -44,6 +44,12 @@ struct TruthRecord {
   Eigen::Vector3d velocity_enu_m_s = Eigen::Vector3d::Zero();
 };
 
+// sensor_msgs/Temperature: one thermosensor reading at its header stamp.
+struct TemperatureRecord {
+  double stamp_s = 0.0;
+  double temperature_c = 0.0;
+};
+
 struct TopicInfo {
   std::string name;
   std::string datatype;
@@ -72,6 +78,8 @@ std::size_t for_each_increment(const std::string& bag_path, const std::string& t
                                const std::function<void(const IncrementRecord&)>& on_record);
 std::size_t for_each_truth(const std::string& bag_path, const std::string& topic,
                            const std::function<void(const TruthRecord&)>& on_record);
+std::size_t for_each_temperature(const std::string& bag_path, const std::string& topic,
+                                 const std::function<void(const TemperatureRecord&)>& on_record);
 
 }  // namespace ros_io
 }  // namespace imu_lab
