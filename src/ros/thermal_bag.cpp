@@ -1,0 +1,51 @@
+#include "imu_lab/ros/thermal_bag.h"
+
+#include "imu_lab/common/config_error.h"
+#include "imu_lab/ros/imu_bag_reader.h"
+
+namespace imu_lab {
+namespace ros_io {
+namespace {
+
+// Every reading of a sensor_msgs/Temperature topic into a history; the topic must exist.
+std::size_t read_temperatures(const std::string& bag_path, const std::string& topic, const char* role,
+                              thermal::TemperatureHistory* history) {
+  try {
+    choose_topic(bag_path, topic, "sensor_msgs/Temperature");
+  } catch (const InputError& error) {
+    throw InputError(std::string(error.what()) + "\nA thermal fit needs the " + role +
+                     " (sensor_msgs/Temperature, stamped like the IMU): record it with the IMU, or name its topic "
+                     "with the temperature-topic option");
+  }
+  std::size_t refused = 0;
+  const std::size_t count = for_each_temperature(bag_path, topic, [&](const TemperatureRecord& record) {
+    if (!history->add(record.stamp_s, record.temperature_c)) ++refused;
+  });
+  if (count == 0) throw InputError("bag " + bag_path + ": topic " + topic + " has no messages; the " + role + " was not recorded");
+  if (refused > 0) {
+    throw InputError("bag " + bag_path + ": " + std::to_string(refused) + " of " + std::to_string(count) + " readings on " +
+                     topic + " are not finite or not in increasing header-stamp order; fix the recording");
+  }
+  return count;
+}
+
+}  // namespace
+
+ThermalBagWindows read_thermal_windows(const std::string& bag_path, const ThermalBagTopics& topics,
+                                       const thermal::WindowSettings& settings) {
+  ThermalBagWindows out;
+  out.imu_topic = choose_imu_topic(bag_path, topics.imu);
+  thermal::TemperatureHistory temperature, second_temperature;
+  out.temperature_messages = read_temperatures(bag_path, topics.temperature, "thermosensor", &temperature);
+  const bool with_second = !topics.second_temperature.empty();
+  if (with_second) read_temperatures(bag_path, topics.second_temperature, "second thermosensor", &second_temperature);
+  thermal::ThermalWindowAverager averager(settings, temperature, with_second ? &second_temperature : nullptr);
+  out.imu_messages = for_each_imu(bag_path, out.imu_topic, [&](const ImuRecord& record) {
+    averager.add({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2});
+  });
+  out.windows = averager.finish();
+  return out;
+}
+
+}  // namespace ros_io
+}  // namespace imu_lab
