@@ -69,6 +69,19 @@ void StreamingAllan::push(std::int64_t stamp_ns, const double* values, std::size
                      std::to_string(value_count) + " values; the engine was configured for " +
                      std::to_string(options_.channel_count) + " channels");
   }
+  take(stamp_ns, values);
+  flush_channels();
+}
+
+void StreamingAllan::push_block(const std::int64_t* stamps_ns, const double* values_row_major,
+                                std::size_t sample_count) {
+  const std::size_t channel_count = options_.channel_count;
+  // An InputError (kStop) leaves the engine unusable anyway; the flush is for the normal path.
+  for (std::size_t k = 0; k < sample_count; ++k) take(stamps_ns[k], values_row_major + k * channel_count);
+  flush_channels();
+}
+
+void StreamingAllan::take(std::int64_t stamp_ns, const double* values) {
   const std::int64_t sample_index = input_sample_count_;
   if (warmed_up_) {
     accept(stamp_ns, values, sample_index);
@@ -78,6 +91,10 @@ void StreamingAllan::push(std::int64_t stamp_ns, const double* values, std::size
   }
   ++input_sample_count_;
   last_stamp_ns_ = stamp_ns;
+}
+
+void StreamingAllan::flush_channels() {
+  for (ChannelAccumulator& channel : channels_) channel.flush();
 }
 
 void StreamingAllan::finish_warm_up() {
@@ -100,6 +117,7 @@ void StreamingAllan::finish_warm_up() {
   for (std::size_t sample = 0; sample < warm_up_.sample_count(); ++sample) {
     accept(warm_up_.stamp_ns(sample), warm_up_.values(sample), static_cast<std::int64_t>(sample));
   }
+  flush_channels();
   warm_up_.release();
 }
 

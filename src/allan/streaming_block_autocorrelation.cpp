@@ -18,6 +18,43 @@ void BlockMeanAutocorrelation::SeriesMoments::add(double value) {
   ++count;
 }
 
+void BlockMeanAutocorrelation::add_block_mean(double mean, Chain& chain) {
+  double value = mean;
+  for (int d = 0; d <= kMaxBlockDifferences; ++d) {
+    const bool had_previous = chain[d].count > 0;
+    const double previous = chain[d].last;
+    chain[d].add(value);
+    if (!had_previous) break;
+    value -= previous;  // the next difference
+  }
+}
+
+IMU_LAB_ALLAN_BLOCK_LOOP
+void BlockMeanAutocorrelation::add_steady_block_means(const double* first_end, std::int64_t block_count, int m,
+                                                      Chain& chain) {
+  // The same operations in the same order as add_block_mean, so the same bits.
+  LaneVector previous = {chain[0].last, chain[1].last, chain[2].last, chain[3].last};
+  ChainPartials partial;
+  for (std::int64_t b = 0; b < block_count; ++b) {
+    const double* end = first_end + b * m;
+    const double mean = (end[0] - end[-m]) / m;
+    const double once = mean - previous[0];
+    const double twice = once - previous[1];
+    const LaneVector values = {mean, once, twice, twice - previous[2]};
+    partial.lag1_products += previous * values;
+    partial.sum += values;
+    partial.squares += values * values;
+    previous = values;
+  }
+  for (int d = 0; d <= kMaxBlockDifferences; ++d) {
+    chain[d].sum.add(partial.sum[d]);
+    chain[d].squares.add(partial.squares[d]);
+    chain[d].lag1_products.add(partial.lag1_products[d]);
+    chain[d].last = previous[d];
+    chain[d].count += block_count;
+  }
+}
+
 double BlockMeanAutocorrelation::SeriesMoments::centred_lag1() const {
   if (count < 2) return 0.0;
   const double mean = sum.value() / count;
@@ -61,18 +98,18 @@ void BlockMeanAutocorrelation::start_segment() {
 void BlockMeanAutocorrelation::update(const PhaseRing& ring) {
   const std::int64_t newest = ring.newest();
   for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {
-    if (newest != next_block_end_[i]) continue;
+    std::int64_t& block_end = next_block_end_[i];
+    if (block_end > newest) continue;
     const int m = averaging_factors_[i];
-    next_block_end_[i] += m;
     Chain& chain = open_[i];
-    double value = (ring.at(newest) - ring.at(newest - m)) / m;
-    for (int d = 0; d <= kMaxBlockDifferences; ++d) {
-      const bool had_previous = chain[d].count > 0;
-      const double previous = chain[d].last;
-      chain[d].add(value);
-      if (!had_previous) break;
-      value -= previous;  // the next difference
+    const std::int64_t block_count = (newest - block_end) / m + 1;
+    // Few block means (push() of one sample), or a segment's first ones: term by term.
+    if (block_count < BlockSums::kLanes || chain[kMaxBlockDifferences].count == 0) {
+      for (; block_end <= newest; block_end += m) add_block_mean((ring.at(block_end) - ring.at(block_end - m)) / m, chain);
+      continue;
     }
+    add_steady_block_means(ring.point(block_end), block_count, m, chain);
+    block_end += block_count * m;
   }
 }
 

@@ -20,9 +20,15 @@ void ChannelAccumulator::push(double value) {
   for (ResolutionLevel& level : levels_) {
     const std::int64_t block_mask = (std::int64_t{1} << level.level()) - 1;
     // Sub-sampling the phase every 2^L samples is averaging the rate over blocks of 2^L;
-    // dividing by 2^L (exact) expresses it in samples of that level.
-    if ((segment_sample_count_ & block_mask) == 0) level.push_phase(std::ldexp(phase, -level.level()));
+    // dividing by 2^L (exact, and no libm call per sample) expresses it in samples of that
+    // level. Levels ascend, so the first that skips this sample has every higher one skip it too.
+    if ((segment_sample_count_ & block_mask) != 0) break;
+    level.append_phase(phase * level.phase_scale());
   }
+}
+
+void ChannelAccumulator::flush() {
+  for (ResolutionLevel& level : levels_) level.process_appended();
 }
 
 void ChannelAccumulator::break_segment() {

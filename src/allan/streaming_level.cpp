@@ -1,5 +1,6 @@
 #include "imu_lab/allan/streaming_level.h"
 
+#include <cmath>
 #include <utility>
 
 #include "imu_lab/allan/streaming_total_ends.h"
@@ -17,6 +18,7 @@ int largest(const std::vector<int>& ascending) { return ascending.empty() ? 1 : 
 
 ResolutionLevel::ResolutionLevel(int level, std::vector<int> averaging_factors)
     : level_(level),
+      phase_scale_(std::ldexp(1.0, -level)),
       averaging_factors_(std::move(averaging_factors)),
       head_capacity_(2 * static_cast<std::size_t>(largest(averaging_factors_))),
       // Hadamard and modified Allan reach back 3m points.
@@ -27,19 +29,32 @@ ResolutionLevel::ResolutionLevel(int level, std::vector<int> averaging_factors)
       block_autocorrelation_(averaging_factors_),
       closed_total_end_terms_(averaging_factors_.size()) {
   head_.reserve(head_capacity_);
-  push_phase(0.0);
+  append_phase(0.0);
 }
 
-void ResolutionLevel::push_phase(double phase) {
+void ResolutionLevel::append_phase(double phase) {
+  if (ring_.full()) process_appended();
   ring_.push(phase);
   if (head_.size() < head_capacity_) head_.push_back(phase);
-  allan_.update(ring_);
-  hadamard_.update(ring_);
-  modified_.update(ring_);
+}
+
+void ResolutionLevel::process_appended() {
+  if (processed_count_ == ring_.count()) return;
+  if (processed_count_ == ring_.newest()) {
+    allan_.add_newest_point(ring_);
+    hadamard_.add_newest_point(ring_);
+    modified_.add_newest_point(ring_);
+  } else {
+    allan_.update(ring_, processed_count_);
+    hadamard_.update(ring_, processed_count_);
+    modified_.update(ring_, processed_count_);
+  }
   block_autocorrelation_.update(ring_);
+  processed_count_ = ring_.count();
 }
 
 void ResolutionLevel::restart_segment() {
+  process_appended();
   if (open_segment_has_data()) {
     for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {
       const int m = averaging_factors_[i];
@@ -50,12 +65,13 @@ void ResolutionLevel::restart_segment() {
     ++closed_segment_phase_counts_[ring_.count()];
   }
   ring_.clear();
+  processed_count_ = 0;
   head_.clear();
   allan_.start_segment();
   hadamard_.start_segment();
   modified_.start_segment();
   block_autocorrelation_.start_segment();
-  push_phase(0.0);
+  append_phase(0.0);
 }
 
 double ResolutionLevel::total_end_terms_sum(std::size_t tau_index) const {
@@ -102,6 +118,7 @@ void ResolutionLevel::load(BinaryReader& in) {
   in.expect_u64(static_cast<std::uint64_t>(level_), "pyramid level");
   in.expect_u64(averaging_factors_.size(), "number of averaging factors");
   ring_.load(in);
+  processed_count_ = ring_.count();  // saved only after processing (ChannelAccumulator::save)
   head_ = in.get_f64s();
   if (head_.size() > head_capacity_) in.fail("head buffer longer than its capacity");
   head_.reserve(head_capacity_);

@@ -12,7 +12,10 @@ PhaseHistory::PhaseHistory(std::size_t capacity) : capacity_(capacity) {
 
 void PhaseHistory::append(Segment& segment, double level0_phase) const {
   const std::int64_t block_mask = (std::int64_t{1} << segment.level) - 1;
-  if ((segment.level0_count & block_mask) == 0) segment.phase.push_back(std::ldexp(level0_phase, -segment.level));
+  if ((segment.level0_count & block_mask) == 0) {
+    // Times 2^-level, exact: ldexp's result without its libm call on every sample.
+    segment.phase.push_back(level0_phase / static_cast<double>(std::int64_t{1} << segment.level));
+  }
   ++segment.level0_count;
   if (segment.phase.size() <= capacity_) return;
   // Too long for B1 at this level: keep the next level (every other point, halved).

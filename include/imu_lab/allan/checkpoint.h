@@ -10,7 +10,8 @@ namespace imu_lab {
 namespace allan {
 
 // Bump whenever the payload layout changes: older files are then refused, never misread.
-constexpr std::uint64_t kStreamingCheckpointVersion = 1;
+// 2: phase rings store only their addressable history (the linear block window).
+constexpr std::uint64_t kStreamingCheckpointVersion = 2;
 
 void write_checkpoint_file(const std::string& path, const std::string& payload);
 std::string read_checkpoint_file(const std::string& path);

@@ -1,5 +1,7 @@
 // One input channel: removes its offset, integrates the rate into phase (compensated, so 1e8
-// samples keep full precision), and feeds every pyramid level its sub-sampled phase.
+// samples keep full precision), and feeds every pyramid level its sub-sampled phase. The levels
+// run their statistics over what they received at flush() (or when their ring fills), so a block
+// of samples costs one tight loop per averaging factor instead of one pass over them per sample.
 #pragma once
 
 #include <cstdint>
@@ -20,14 +22,15 @@ class ChannelAccumulator {
   ChannelAccumulator(const TauPlan& plan, double offset, std::size_t history_capacity);
 
   void push(double value);  // a finite value; the caller screens NaN/Inf
-  void break_segment();     // a gap: the next value starts a new segment
+  void flush();             // brings every statistic up to the last pushed value
+  void break_segment();     // a gap: the next value starts a new segment (flushes)
 
   double offset() const { return offset_; }
   const std::vector<ResolutionLevel>& levels() const { return levels_; }
   const PhaseHistory& history() const { return history_; }
 
   std::size_t heap_bytes() const;
-  void save(BinaryWriter& out) const;
+  void save(BinaryWriter& out) const;  // after flush()
   void load(BinaryReader& in);
 
  private:

@@ -1,5 +1,6 @@
 // Allan-type (order 2) or Hadamard-type (order 3) phase differences at a set of averaging
-// factors, accumulated one phase point at a time: fully overlapping (every start index) and
+// factors, accumulated over a block of new phase points at a time (one tight loop per factor,
+// plain partial sums folded once per block, streaming_block_sums.h): fully overlapping (every start index) and
 // non-overlapping (start indices that are multiples of m). Sums persist across segments, which
 // pools them; only the per-segment position is reset. For Krobka's dispersion the spread about
 // the mean difference is taken within each segment (a gap may hide a bias jump) and pooled.
@@ -20,7 +21,11 @@ class DifferenceAccumulator {
   DifferenceAccumulator(int order, std::vector<int> averaging_factors);
 
   void start_segment();  // folds the open segment's spread into the pooled one
-  void update(const PhaseRing& ring);  // after the ring received a new phase point
+  // Every phase point from first_index to ring.newest() (those the ring received since the last
+  // update); the ring must still hold order * max(m) points before first_index.
+  void update(const PhaseRing& ring, std::int64_t first_index);
+  // The same for the newest point alone (push() of one sample), without a block's set-up.
+  void add_newest_point(const PhaseRing& ring);
 
   int order() const { return order_; }
   DifferenceSums overlapping(std::size_t tau_index) const;  // pooled: closed segments and the open one

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 
+#include "imu_lab/allan/streaming_block_sums.h"
 #include "imu_lab/allan/streaming_compensated_sum.h"
 
 namespace imu_lab {
@@ -18,6 +19,11 @@ struct DifferenceSums {
     squares.add(difference * difference);
     values.add(difference);
     ++count;
+  }
+  void add_block(const BlockSums& block) {
+    squares.add(block.squares_total());
+    values.add(block.values_total());
+    count += block.count;
   }
   void merge(const DifferenceSums& other) {
     squares.add(other.squares.value());

@@ -24,11 +24,15 @@ class ResolutionLevel {
 
   // Phase points are in units of the input value times samples of this level
   // (x / tau0_level); the first point of each segment is 0 and is pushed here.
-  void push_phase(double phase);
+  // append_phase only stores the point; the statistics see it at the next process_appended()
+  // (or when the ring must make room), which runs them over all stored points in one block.
+  void append_phase(double phase);
+  void process_appended();
   // Folds the segment's total-deviation end terms and length into the pooled sums, opens a new one.
   void restart_segment();
 
   int level() const { return level_; }
+  double phase_scale() const { return phase_scale_; }  // 2^-level: level-0 phase to this level's units
   const std::vector<int>& averaging_factors() const { return averaging_factors_; }
   const DifferenceAccumulator& allan() const { return allan_; }
   const DifferenceAccumulator& hadamard() const { return hadamard_; }
@@ -47,9 +51,11 @@ class ResolutionLevel {
   bool open_segment_has_data() const { return ring_.count() >= 2; }
 
   int level_;
+  double phase_scale_;
   std::vector<int> averaging_factors_;
   std::size_t head_capacity_;
   PhaseRing ring_;
+  std::int64_t processed_count_ = 0;  // ring points the statistics have seen
   std::vector<double> head_;  // first points of the open segment
   DifferenceAccumulator allan_;
   DifferenceAccumulator hadamard_;

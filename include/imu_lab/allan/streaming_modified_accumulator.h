@@ -1,7 +1,8 @@
-// Modified Allan terms, one phase point at a time: the term starting at j is the sum of the m
-// second differences x[i+2m] - 2 x[i+m] + x[i], i = j .. j+m-1. A moving window sum per factor
-// adds the newest second difference and drops the oldest; it is recomputed exactly from the
-// ring every few windows so rounding cannot drift over 1e8 updates.
+// Modified Allan terms over a block of new phase points at a time: the term starting at j is the
+// sum of the m second differences x[i+2m] - 2 x[i+m] + x[i], i = j .. j+m-1. A moving window sum
+// per factor adds the newest second difference and drops the oldest, which is adding the third
+// difference x[n] - 3 x[n-m] + 3 x[n-2m] - x[n-3m]; it is recomputed exactly from the ring every
+// few windows so rounding cannot drift over 1e8 updates.
 #pragma once
 
 #include <cstdint>
@@ -19,7 +20,11 @@ class ModifiedAccumulator {
   explicit ModifiedAccumulator(std::vector<int> averaging_factors);
 
   void start_segment();
-  void update(const PhaseRing& ring);
+  // Every phase point from first_index to ring.newest(); the ring must still hold 3 max(m)
+  // points before first_index.
+  void update(const PhaseRing& ring, std::int64_t first_index);
+  // The same for the newest point alone (push() of one sample), without a block's set-up.
+  void add_newest_point(const PhaseRing& ring);
 
   // squares: sum of squared window sums; count: number of terms (N - 3m + 1 per segment).
   const DifferenceSums& terms(std::size_t tau_index) const { return terms_[tau_index]; }
@@ -29,7 +34,8 @@ class ModifiedAccumulator {
   void load(BinaryReader& in);
 
  private:
-  double exact_window_sum(const PhaseRing& ring, int m) const;
+  // The window of the m second differences ending at phase index `end`.
+  static double exact_window_sum(const PhaseRing& ring, std::int64_t end, int m);
 
   std::vector<int> averaging_factors_;
   std::vector<DifferenceSums> terms_;

@@ -1,9 +1,12 @@
 // The most recent phase points of one segment at one pyramid level, addressed by their index in
-// the segment (0 = the segment's first point). Capacity is a power of two so indexing is a mask.
+// the segment (0 = the segment's first point). Stored linearly, not wrapped, so that the
+// accumulators can run over a block of new points with plain pointer offsets (x[n], x[n - m],
+// ...) that the compiler vectorises; when the storage is full the last `history` points move to
+// the front (one copy of `history` doubles every kPhaseBlockPoints pushes).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
-#include <utility>
 #include <vector>
 
 #include "imu_lab/allan/checkpoint_codec.h"
@@ -11,39 +14,65 @@
 namespace imu_lab {
 namespace allan {
 
+// Room for new points beyond the kept history: the most a level appends before its accumulators
+// must run (ResolutionLevel), which also bounds the terms of one plain partial sum (block_sums.h).
+constexpr std::size_t kPhaseBlockPoints = 4096;
+
 class PhaseRing {
  public:
-  explicit PhaseRing(std::size_t min_capacity) {
-    std::size_t capacity = 1;
-    while (capacity < min_capacity) capacity *= 2;
-    values_.assign(capacity, 0.0);
-    mask_ = capacity - 1;
+  // history: how many of the newest points stay addressable (the largest reach back plus one).
+  explicit PhaseRing(std::size_t history) : history_(std::max<std::size_t>(history, 1)) {
+    values_.assign(history_ + kPhaseBlockPoints, 0.0);
   }
 
-  void clear() { count_ = 0; }
-  void push(double phase) { values_[static_cast<std::size_t>(count_) & mask_] = phase; ++count_; }
+  void clear() {
+    count_ = 0;
+    first_index_ = 0;
+  }
+  void push(double phase) {
+    if (stored() == values_.size()) compact();
+    values_[static_cast<std::size_t>(count_ - first_index_)] = phase;
+    ++count_;
+  }
+  // True when the next push moves the history: points not yet read by the accumulators would
+  // lose the history they reach back to, so they must be processed first.
+  bool full() const { return stored() == values_.size(); }
 
-  // Valid for count() - capacity() <= index < count().
-  double at(std::int64_t index) const { return values_[static_cast<std::size_t>(index) & mask_]; }
+  // Valid for count() - history() <= index < count().
+  double at(std::int64_t index) const { return values_[static_cast<std::size_t>(index - first_index_)]; }
+  // Contiguous from `index` on: point(n)[-j] is point n - j (within the valid range).
+  const double* point(std::int64_t index) const { return values_.data() + (index - first_index_); }
   std::int64_t count() const { return count_; }  // phase points pushed since clear()
   std::int64_t newest() const { return count_ - 1; }
-  std::size_t capacity() const { return values_.size(); }
+  std::size_t history() const { return history_; }
   std::size_t heap_bytes() const { return values_.capacity() * sizeof(double); }
 
+  // Only the addressable history is state: the storage beyond it is scratch.
   void save(BinaryWriter& out) const {
     out.put_i64(count_);
-    out.put_f64s(values_);
+    const std::size_t kept = kept_count();
+    out.put_f64s(std::vector<double>(values_.begin() + (stored() - kept), values_.begin() + stored()));
   }
   void load(BinaryReader& in) {
     count_ = in.get_i64();
-    std::vector<double> values = in.get_f64s();
-    if (values.size() != values_.size() || count_ < 0) in.fail("phase ring of another capacity");
-    values_ = std::move(values);
+    if (count_ < 0) in.fail("negative phase point count");
+    const std::vector<double> kept = in.get_f64s();
+    if (kept.size() != kept_count()) in.fail("phase history of another length");
+    std::copy(kept.begin(), kept.end(), values_.begin());
+    first_index_ = count_ - static_cast<std::int64_t>(kept.size());
   }
 
  private:
+  std::size_t stored() const { return static_cast<std::size_t>(count_ - first_index_); }
+  std::size_t kept_count() const { return std::min<std::size_t>(static_cast<std::size_t>(count_), history_); }
+  void compact() {
+    std::copy(values_.end() - static_cast<std::ptrdiff_t>(history_), values_.end(), values_.begin());
+    first_index_ = count_ - static_cast<std::int64_t>(history_);
+  }
+
+  std::size_t history_;
   std::vector<double> values_;
-  std::size_t mask_ = 0;
+  std::int64_t first_index_ = 0;  // index of values_[0]
   std::int64_t count_ = 0;
 };
 
