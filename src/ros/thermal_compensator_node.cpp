@@ -1,0 +1,147 @@
+#include "imu_lab/ros/thermal_compensator_node.h"
+
+#include <cmath>
+
+#include "imu_lab/common/config_error.h"
+#include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/thermal/thermal_model_yaml.h"
+
+namespace imu_lab {
+namespace ros_io {
+namespace {
+
+constexpr double kLogThrottle_s = 5.0;
+using Status = thermal::CompensatedSample::Status;
+
+geometry_msgs::Vector3 message_of(const Eigen::Vector3d& v) {
+  geometry_msgs::Vector3 m;
+  m.x = v.x();
+  m.y = v.y();
+  m.z = v.z();
+  return m;
+}
+
+}  // namespace
+
+ThermalCompensatorNode::ThermalCompensatorNode(ros::NodeHandle& node, ros::NodeHandle& private_node) {
+  if (!private_node.getParam("model_file", model_file_) || model_file_.empty()) {
+    throw ConfigError(private_node.resolveName("model_file"), "model_file", "required: the YAML written by fit_thermal");
+  }
+  const double max_age_s = private_node.param("max_temperature_age_s", 1.0);
+  if (!(max_age_s > 0.0) || !std::isfinite(max_age_s)) {
+    throw ConfigError(private_node.resolveName("max_temperature_age_s"), "max_temperature_age_s",
+                      "must be a positive number of seconds");
+  }
+  const int queue_size = private_node.param("queue_size", 1000);
+  if (queue_size <= 0) throw ConfigError(private_node.resolveName("queue_size"), "queue_size", "must be positive");
+  compensator_ = std::make_unique<thermal::ThermalCompensator>(thermal::load_thermal_model(model_file_), max_age_s);
+
+  publisher_ = node.advertise<sensor_msgs::Imu>("imu/thermal", queue_size);
+  imu_subscriber_ = node.subscribe("imu/raw", queue_size, &ThermalCompensatorNode::on_imu, this);
+  temperature_subscriber_ = node.subscribe("imu/temperature", queue_size, &ThermalCompensatorNode::on_temperature, this);
+  if (compensator_->model().uses_second_sensor) {
+    second_temperature_subscriber_ =
+        node.subscribe("imu/temperature2", queue_size, &ThermalCompensatorNode::on_second_temperature, this);
+  }
+  diagnostics_.setHardwareID("thermal_compensator");
+  diagnostics_.add("thermal compensation", this, &ThermalCompensatorNode::report);
+  diagnostics_timer_ = node.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    diagnostics_.update();
+  });
+  const auto& box = compensator_->model().validity;
+  ROS_INFO("thermal_compensator: %s + %s -> %s with %s (valid %.2f .. %.2f degC)", imu_subscriber_.getTopic().c_str(),
+           temperature_subscriber_.getTopic().c_str(), publisher_.getTopic().c_str(), model_file_.c_str(),
+           box.temperature_min_c, box.temperature_max_c);
+}
+
+void ThermalCompensatorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++window_samples_;
+  const ImuRecord record = to_imu_record(*message);
+  std::vector<thermal::CompensatedSample> ready;
+  if (!compensator_->add_imu({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2}, &ready)) {
+    ++dropped_;
+    ROS_WARN_THROTTLE(kLogThrottle_s, "thermal_compensator: dropped an IMU sample at %.9f (NaN/Inf, or its stamp is "
+                      "not after the previous one; counted in diagnostics)", record.stamp_s);
+    return;
+  }
+  waiting_messages_.push_back(message);
+  publish(ready);
+}
+
+void ThermalCompensatorNode::on_temperature(const sensor_msgs::Temperature::ConstPtr& message) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<thermal::CompensatedSample> ready;
+  if (!compensator_->add_temperature(message->header.stamp.toSec(), message->temperature, &ready)) {
+    ++dropped_;
+    ROS_WARN_THROTTLE(kLogThrottle_s, "thermal_compensator: dropped a temperature reading at %.9f (NaN or stamp "
+                      "not after the previous one)", message->header.stamp.toSec());
+  }
+  last_temperature_c_ = message->temperature;
+  publish(ready);
+}
+
+void ThermalCompensatorNode::on_second_temperature(const sensor_msgs::Temperature::ConstPtr& message) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<thermal::CompensatedSample> ready;
+  if (!compensator_->add_second_temperature(message->header.stamp.toSec(), message->temperature, &ready)) ++dropped_;
+  publish(ready);
+}
+
+void ThermalCompensatorNode::publish(const std::vector<thermal::CompensatedSample>& ready) {
+  for (const thermal::CompensatedSample& sample : ready) {
+    const sensor_msgs::Imu::ConstPtr input = waiting_messages_.front();
+    waiting_messages_.pop_front();
+    if (sample.status == Status::kStale) {
+      ++stale_;
+      ROS_WARN_THROTTLE(kLogThrottle_s, "thermal_compensator: no temperature within the maximum age of the IMU stamp "
+                        "%.9f; sample not published (is %s being published?)", sample.corrected.stamp_s,
+                        temperature_subscriber_.getTopic().c_str());
+      continue;
+    }
+    if (sample.status == Status::kClamped) {
+      ++clamped_;
+      ROS_WARN_THROTTLE(kLogThrottle_s, "thermal_compensator: %.2f degC (rate %.4f degC/s) is outside the model's "
+                        "validity range; corrected at its edge", sample.input.temperature_c, sample.input.rate_c_s);
+    }
+    // Covariances stay: (1 + delta_scale)^2 changes them by parts per thousand at most.
+    sensor_msgs::Imu output = *input;
+    output.angular_velocity = message_of(sample.corrected.angular_rate_rad_s);
+    output.linear_acceleration = message_of(sample.corrected.specific_force_m_s2);
+    publisher_.publish(output);
+    ++published_;
+  }
+}
+
+void ThermalCompensatorNode::report(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  if (stale_ > stale_reported_) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::ERROR,
+                   std::to_string(stale_ - stale_reported_) + " samples without a fresh temperature since the last report");
+  } else if (window_samples_ == 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "no IMU input since the last report");
+  } else if (clamped_ > clamped_reported_) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   std::to_string(clamped_ - clamped_reported_) + " samples outside the model's validity range");
+  } else if (dropped_ > dropped_reported_) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "input dropped (NaN/Inf or unordered stamps)");
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "compensating");
+  }
+  const auto& box = compensator_->model().validity;
+  status.add("model file", model_file_);
+  status.add("validity range degC", std::to_string(box.temperature_min_c) + " .. " + std::to_string(box.temperature_max_c));
+  status.add("last temperature degC", last_temperature_c_);
+  status.add("samples published", published_);
+  status.add("samples clamped (outside range)", clamped_);
+  status.add("samples not published (stale temperature)", stale_);
+  status.add("input dropped", dropped_);
+  status.add("samples waiting for temperature", compensator_->waiting());
+  window_samples_ = 0;
+  clamped_reported_ = clamped_;
+  stale_reported_ = stale_;
+  dropped_reported_ = dropped_;
+}
+
+}  // namespace ros_io
+}  // namespace imu_lab
