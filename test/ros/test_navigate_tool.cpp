@@ -85,7 +85,7 @@ class NavigateTool : public ::testing::Test {
     directory_ = new std::string(scratch_directory());
     const auto made = run_tool("emulate", "--profile " + std::string(IMU_LAB_CONFIG_DIR) +
                                               "/sensors/rlg_navigation.yaml --scenario " + IMU_LAB_CONFIG_DIR +
-                                              "/scenarios/static.yaml --duration-s " +
+                                              "/scenarios/static_latitude_50.yaml --duration-s " +
                                               std::to_string(kAlignmentS + kNavigationS) +
                                               " --rate-hz 100 --seed 11 --out " + bag());
     ASSERT_EQ(made.exit_code, 0) << made.output;
