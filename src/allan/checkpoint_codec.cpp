@@ -32,6 +32,7 @@ void BinaryReader::fail(const std::string& problem) const {
 }
 
 void BinaryReader::get_raw(void* data, std::size_t size) {
+  if (size == 0) return;  // an empty vector's data() may be null, which memcpy must not see
   if (bytes_.size() - position_ < size) fail("truncated checkpoint payload");
   std::memcpy(data, bytes_.data() + position_, size);
   position_ += size;
