@@ -1,6 +1,8 @@
 #!/usr/bin/python3
 """Plots the stability CSV written by imu_lab's `allan` tool: log-log deviation against tau,
-gyro and accelerometer panels, chi-squared confidence bands, and slope guides.
+gyro and accelerometer panels, chi-squared confidence bands, and slope guides. Where the noise
+identification wrote noise_partial_<channel>.csv, the fitted total (solid) and each term's
+partial curve (dashed, labelled by term) are drawn over the measured points (seed 003 Fig. 5.1).
 
 usage: plot_allan.py REPORT_DIR [--statistic oadev] [--out REPORT_DIR/allan.png]
 """
@@ -37,6 +39,35 @@ def read_curves(path):
     return curves
 
 
+def read_partial_curves(report_dir, channel):
+    """{"tau": [...], "total": [...], "terms": {term: [...]}} from noise_partial_<channel>.csv, or None."""
+    path = os.path.join(report_dir, f"noise_partial_{channel}.csv")
+    if not os.path.exists(path):
+        return None
+    with open(path, newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    if not rows:
+        return None
+    columns = list(rows[0])
+    total_column = next(name for name in columns if name.startswith("fit_total_dev_"))
+    unit = total_column[len("fit_total_dev_"):]
+    term_columns = [name for name in columns[3:] if name.endswith("_dev_" + unit)]
+    return {
+        "tau": [float(row["tau_s"]) for row in rows],
+        "total": [float(row[total_column]) for row in rows],
+        "terms": {name[: -len("_dev_" + unit)]: [float(row[name]) for row in rows] for name in term_columns},
+    }
+
+
+def draw_fit(axis, fit, color, labelled_terms):
+    """The fitted total (solid) and the terms' partial curves (dashed), in the channel's colour."""
+    axis.loglog(fit["tau"], fit["total"], color=color, linewidth=1.2)
+    for style, (term, devs) in zip(("--", "-.", ":", (0, (5, 2, 1, 2)), (0, (1, 1))), fit["terms"].items()):
+        label = f"{term} (partial)" if term not in labelled_terms else None
+        labelled_terms.add(term)
+        axis.loglog(fit["tau"], devs, color=color, linewidth=0.8, linestyle=style, label=label)
+
+
 def slope_guides(axis, taus, devs):
     """Dashed lines of slope -1, -1/2, 0, +1/2, +1 through the curve's middle point."""
     if len(taus) < 3:
@@ -58,17 +89,23 @@ def plot(report_dir, statistic, out_path):
     for axis, sensor in zip(axes[0], sensors):
         members = [c for c in curves if sensor == "all" or c.startswith(sensor)]
         unit = curves[members[0]][0].replace("_", "/").replace("s2", "s^2")
+        labelled_terms = set()
         for channel in members:
             _, taus, dev, lo, hi = curves[channel]
-            line, = axis.loglog(taus, dev, marker=".", label=channel)
+            fit = read_partial_curves(report_dir, channel)
+            # With a fit, the measurement is points and the fitted total the solid line.
+            line, = axis.loglog(taus, dev, marker=".", linestyle="none" if fit else "-",
+                                label=channel + (" measured, fit solid" if fit else ""))
             axis.fill_between(taus, lo, hi, color=line.get_color(), alpha=0.2, linewidth=0)
+            if fit:
+                draw_fit(axis, fit, line.get_color(), labelled_terms)
         _, taus, dev, _, _ = curves[members[0]]
         slope_guides(axis, taus, dev)
         axis.set_xlabel("tau [s]")
         axis.set_ylabel(f"{statistic.upper()} [{unit}]")
         axis.set_title(f"{sensor}: {statistic} with 68.3 % chi-squared bounds")
         axis.grid(True, which="both", alpha=0.3)
-        axis.legend()
+        axis.legend(fontsize=7)
     figure.tight_layout()
     figure.savefig(out_path + ".tmp.png", dpi=110)
     os.replace(out_path + ".tmp.png", out_path)  # atomic: a reader never sees half a picture
