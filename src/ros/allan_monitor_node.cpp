@@ -6,6 +6,7 @@
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/ros/allan_messages.h"
 #include "imu_lab/ros/allan_report.h"
+#include "imu_lab/ros/noise_messages.h"
 
 namespace imu_lab {
 namespace ros_io {
@@ -56,6 +57,7 @@ AllanMonitorNode::AllanMonitorNode(ros::NodeHandle& node, ros::NodeHandle& priva
 
   gyro_publisher_ = node.advertise<imu_lab::AllanDeviation>("allan/gyro", 10);
   accel_publisher_ = node.advertise<imu_lab::AllanDeviation>("allan/accel", 10);
+  noise_publisher_ = node.advertise<imu_lab::NoiseParameters>("allan/noise", 1, /*latch=*/true);
   if (settings_.input == AllanInput::kRate) {
     input_subscriber_ = node.subscribe("imu/raw", settings_.queue_size, &AllanMonitorNode::on_imu, this);
   } else {
@@ -147,10 +149,14 @@ std::string AllanMonitorNode::write_report() {
   run.input = settings_.input;
   run.engine = engine_->options();
   run.skipped_before_checkpoint = skipped_before_checkpoint_;
-  const AllanReportFiles files = write_allan_report(settings_.report_dir, run, engine_->snapshot(), settings_.plot);
+  const allan::StreamingSnapshot snapshot = engine_->snapshot();
+  const AllanReportFiles files =
+      write_allan_report(settings_.report_dir, run, snapshot, settings_.plot, settings_.identify);
+  if (settings_.identify.enabled) noise_publisher_.publish(to_noise_parameters(files.noise, snapshot, last_header_));
   std::string text = "wrote " + std::to_string(files.written.size()) + " files to " + settings_.report_dir + " (" +
                      std::to_string(engine_->input_sample_count()) + " samples)";
   if (!files.plot_problem.empty()) text += "; no plot: " + files.plot_problem;
+  for (const std::string& problem : files.noise.problems) text += "; identification: " + problem;
   return text;
 }
 

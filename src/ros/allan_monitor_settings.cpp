@@ -60,6 +60,12 @@ AllanMonitorSettings load_allan_monitor_settings(const ros::NodeHandle& private_
     throw ConfigError(private_node.resolveName("resume"), "resume", "is true but checkpoint_path is not set");
   }
   settings.queue_size = positive_parameter(private_node, "queue_size", settings.queue_size);
+  settings.identify.enabled = private_node.param("identify", settings.identify.enabled);
+  settings.identify.bootstrap_replicas = private_node.param("bootstrap_replicas", settings.identify.bootstrap_replicas);
+  const std::string replicas_problem = bootstrap_replicas_problem(settings.identify.bootstrap_replicas);
+  if (!replicas_problem.empty()) {
+    throw ConfigError(private_node.resolveName("bootstrap_replicas"), "bootstrap_replicas", replicas_problem);
+  }
 
   allan::StreamingOptions& engine = settings.engine;
   engine.channel_count = kAllanChannelCount;

@@ -49,7 +49,8 @@ std::vector<io::ChannelCurve> channel_curves(const allan::StreamingSnapshot& sna
 }
 
 AllanReportFiles write_allan_report(const std::string& directory, const AllanRunDescription& run,
-                                    const allan::StreamingSnapshot& snapshot, bool plot) {
+                                    const allan::StreamingSnapshot& snapshot, bool plot,
+                                    const AllanIdentifyOptions& identify) {
   std::error_code error;
   std::filesystem::create_directories(directory, error);
   if (error) throw std::runtime_error("cannot create the report directory " + directory + ": " + error.message());
@@ -59,8 +60,12 @@ AllanReportFiles write_allan_report(const std::string& directory, const AllanRun
     io::write_stability_csv(path, channel_curves(snapshot, statistic));
     files.written.push_back(path);
   }
+  // After the curves (a failed fit keeps them) and before the plot (it draws the partial curves).
+  files.noise = write_allan_noise_report(directory, run, snapshot, identify);
+  files.written.insert(files.written.end(), files.noise.written.begin(), files.noise.written.end());
   const std::string summary_path = directory + "/allan_summary.yaml";
-  write_file_atomically(summary_path, format_allan_summary(run, snapshot));
+  write_file_atomically(summary_path,
+                        format_allan_summary(run, snapshot) + format_identification_summary(identify, files.noise));
   files.written.push_back(summary_path);
   if (plot) {
     files.plot_problem = plot_oadev(directory);

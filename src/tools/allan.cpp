@@ -1,16 +1,19 @@
 // allan: bag -> the nine Allan-family stability curves (CSV per statistic), a YAML summary of the
-// stamps and channels, and a plot, in one streaming pass (see include/imu_lab/ros/allan_bag_pass.h
-// and allan_report.h). Nothing is written unless the whole pass succeeds.
+// stamps and channels, the identified noise model (noise.yaml, kalibr_imu.yaml, partial curves)
+// and a plot, in one streaming pass (see include/imu_lab/ros/allan_bag_pass.h, allan_report.h and
+// allan_noise_report.h). Nothing is written unless the whole pass succeeds.
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/ros/allan_bag_pass.h"
 #include "imu_lab/ros/allan_report.h"
+#include "imu_lab/ros/noise_table.h"
 
 namespace {
 
@@ -53,6 +56,11 @@ void print_summary(const imu_lab::ros_io::AllanBagPassResult& result, const imu_
   }
   for (const auto& path : files.written) std::printf("allan: wrote %s\n", path.c_str());
   if (!files.plot_problem.empty()) std::fprintf(stderr, "allan: warning: %s\n", files.plot_problem.c_str());
+  for (const auto& problem : files.noise.problems) std::fprintf(stderr, "allan: identification: %s\n", problem.c_str());
+  if (!files.noise.triads.empty()) {
+    std::printf("allan: identified noise (noise.yaml has SI values, bounds and warnings):\n%s",
+                imu_lab::ros_io::format_noise_table(files.noise.triads).c_str());
+  }
 }
 
 }  // namespace
@@ -65,6 +73,8 @@ int main(int argc, char** argv) {
   std::string input = "rate";
   bool progress = false;
   bool no_plot = false;
+  bool no_identify = false;
+  imu_lab::ros_io::AllanIdentifyOptions identify;
   imu_lab::ros_io::AllanBagPassOptions options;
   auto& engine = options.engine;
   app.add_option("bag", bag_path, "bag to read")->required();
@@ -90,8 +100,16 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_flag("--progress", progress, "progress bar on stderr even when it is not a terminal");
   app.add_flag("--no-plot", no_plot, "do not write allan.png");
+  app.add_flag("--no-identify", no_identify, "do not fit the noise model (no noise.yaml, kalibr_imu.yaml)");
+  app.add_option("--bootstrap-replicas", identify.bootstrap_replicas,
+                 "sigmas from a parametric bootstrap with N replicas per axis (slow; 0 = Ceres covariance)")
+      ->capture_default_str()
+      ->check([](const std::string& text) {
+        return imu_lab::ros_io::bootstrap_replicas_problem(std::atoi(text.c_str()));
+      });
   CLI11_PARSE(app, argc, argv);
   options.input = imu_lab::ros_io::parse_allan_input("--input", input);
+  identify.enabled = !no_identify;
   engine.stamp_policy = on_gap == "stop" ? imu_lab::allan::StampPolicy::kStop : imu_lab::allan::StampPolicy::kSplitAndPool;
 
   try {
@@ -105,7 +123,7 @@ int main(int argc, char** argv) {
     run.topic = result.topic;
     run.input = result.input;
     run.engine = result.engine;
-    const auto files = imu_lab::ros_io::write_allan_report(out_directory, run, result.snapshot, !no_plot);
+    const auto files = imu_lab::ros_io::write_allan_report(out_directory, run, result.snapshot, !no_plot, identify);
     print_summary(result, files);
     return 0;
   } catch (const imu_lab::ConfigError& error) {

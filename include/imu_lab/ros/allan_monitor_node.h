@@ -6,8 +6,10 @@
 // Publishes every publish_period_s (wall clock) once warmed up: allan/gyro and allan/accel
 //   (imu_lab/AllanDeviation), one message per statistic in `statistics`; /diagnostics (input rate
 //   from stamps, tau0, jitter, gaps, NaN/Inf values, duplicate and out-of-order stamps).
+//   allan/noise (imu_lab/NoiseParameters, latched): the identified noise model, after each report.
 // Service: ~write_report (std_srvs/Trigger): the allan tool's report files (allan_report.h) in
-//   report_dir; written again on shutdown.
+//   report_dir, with the noise identification (allan_noise_report.h) unless identify is false;
+//   written again on shutdown.
 // Checkpoints: with checkpoint_path set, the engine's whole state is saved there (atomically)
 //   every checkpoint_period_s and on shutdown; with resume: true the node starts from it and
 //   skips every input stamp at or before the checkpoint's last stamp (a replay from before it).
@@ -64,6 +66,7 @@ class AllanMonitorNode {
   ros::Subscriber input_subscriber_;
   ros::Publisher gyro_publisher_;
   ros::Publisher accel_publisher_;
+  ros::Publisher noise_publisher_;
   ros::ServiceServer write_report_service_;
   ros::WallTimer publish_timer_;
   ros::WallTimer checkpoint_timer_;

@@ -2,7 +2,8 @@
 //   input_type (imu | increment; imu), statistics ([oadev]: any of oadev adev mdev ohdev hdev tdev
 //   totdev akdev hkdev), publish_period_s (1.0), report_dir ($ROS_HOME/allan_report, ROS_HOME
 //   defaulting to ~/.ros), plot (true), checkpoint_path ("" = no checkpoints),
-//   checkpoint_period_s (60), resume (false), queue_size (20000);
+//   checkpoint_period_s (60), resume (false), queue_size (20000); identify (true: fit the noise
+//   model with every report), bootstrap_replicas (0 = off; >= 2: bootstrap sigmas, slow);
 //   the engine's (streaming_options.h): points_per_decade (10), max_tau_s (1e4),
 //   exact_max_averaging_factor (1000), confidence (0.683), warm_up_sample_count (1000),
 //   gap_factor (1.5). Gaps always split and pool: a live node never stops on bad stamps.
@@ -15,6 +16,7 @@
 
 #include "imu_lab/allan/batch.h"
 #include "imu_lab/allan/streaming_options.h"
+#include "imu_lab/ros/allan_noise_report.h"
 #include "imu_lab/ros/allan_samples.h"
 
 namespace imu_lab {
@@ -30,6 +32,7 @@ struct AllanMonitorSettings {
   double checkpoint_period_s = 60.0;
   bool resume = false;
   int queue_size = 20000;
+  AllanIdentifyOptions identify;
   allan::StreamingOptions engine;
 };
 

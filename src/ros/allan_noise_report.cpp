@@ -1,0 +1,135 @@
+#include "imu_lab/ros/allan_noise_report.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <exception>
+
+#include "imu_lab/common/config_error.h"
+#include "imu_lab/identify/bootstrap.h"
+#include "imu_lab/identify/kalibr_yaml.h"
+#include "imu_lab/identify/noise_report.h"
+#include "imu_lab/identify/partial_curves.h"
+#include "imu_lab/identify/units.h"
+#include "imu_lab/ros/allan_samples.h"
+
+namespace imu_lab {
+namespace ros_io {
+namespace {
+
+using identify::SensorKind;
+
+constexpr std::array<SensorKind, 2> kSensors = {SensorKind::kGyroscope, SensorKind::kAccelerometer};
+
+std::size_t first_channel(SensorKind sensor) { return sensor == SensorKind::kGyroscope ? 0 : 3; }
+
+std::array<std::vector<allan::StabilityPoint>, 3> oadev_curves(const allan::StreamingSnapshot& snapshot,
+                                                               SensorKind sensor) {
+  std::array<std::vector<allan::StabilityPoint>, 3> curves;
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    curves[axis] = snapshot.curve(allan::Statistic::kOverlappingAllan, first_channel(sensor) + axis);
+  }
+  return curves;
+}
+
+identify::TriadFit fit_sensor(SensorKind sensor, const allan::StreamingSnapshot& snapshot,
+                              const AllanIdentifyOptions& options) {
+  identify::TriadFit triad = identify::fit_triad(sensor, oadev_curves(snapshot, sensor), snapshot.timing.tau0_s,
+                                                 record_length_s(snapshot), options.fit);
+  if (options.bootstrap_replicas <= 0) return triad;
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    identify::BootstrapOptions bootstrap;
+    bootstrap.replicas = options.bootstrap_replicas;
+    // One stream per channel: the axes' simulated records must not share their noise.
+    bootstrap.seed = options.bootstrap_seed + first_channel(sensor) + axis;
+    identify::apply_bootstrap(identify::bootstrap_uncertainty(triad.axes[axis], bootstrap), &triad.axes[axis]);
+  }
+  return triad;
+}
+
+}  // namespace
+
+std::string bootstrap_replicas_problem(int replicas) {
+  if (replicas == 0 || replicas >= 2) return "";
+  return "must be 0 (sigmas from the Ceres covariance) or at least 2 (a bootstrap), not " + std::to_string(replicas);
+}
+
+std::string partial_curves_file_name(const std::string& channel_name) {
+  return "noise_partial_" + channel_name + ".csv";
+}
+
+double record_length_s(const allan::StreamingSnapshot& snapshot) {
+  return static_cast<double>(snapshot.timing.accepted_sample_count) * snapshot.timing.tau0_s;
+}
+
+AllanNoiseReport write_allan_noise_report(const std::string& directory, const AllanRunDescription& run,
+                                          const allan::StreamingSnapshot& snapshot,
+                                          const AllanIdentifyOptions& options) {
+  AllanNoiseReport report;
+  if (!options.enabled) return report;
+  if (!snapshot.warmed_up || !(snapshot.timing.tau0_s > 0.0)) {
+    report.problems.push_back("no identification: the run has not warmed up (too few samples to fix tau0)");
+    return report;
+  }
+  for (const SensorKind sensor : kSensors) {
+    const std::string name = identify::sensor_prefix(sensor);
+    try {
+      report.triads.push_back(fit_sensor(sensor, snapshot, options));
+    } catch (const InputError& error) {
+      report.problems.push_back(name + " not identified: record too short or curve unusable (" +
+                                std::to_string(record_length_s(snapshot)) + " s of data): " + error.what());
+    } catch (const std::exception& error) {
+      report.problems.push_back(name + " not identified: the fit failed: " + error.what());
+    }
+  }
+  if (report.triads.empty()) return report;
+
+  identify::ReportMetadata metadata;
+  metadata.source = run.bag.empty() ? run.topic : run.bag;
+  metadata.update_rate_hz = 1.0 / snapshot.timing.tau0_s;
+  const std::string noise_path = directory + "/noise.yaml";
+  identify::write_noise_report(noise_path, report.triads, metadata);
+  report.written.push_back(noise_path);
+
+  if (report.triads.size() == kSensors.size()) {
+    const std::string kalibr_path = directory + "/kalibr_imu.yaml";
+    identify::write_kalibr_imu_yaml(kalibr_path, identify::kalibr_noise(report.triads[0], report.triads[1],
+                                                                        metadata.update_rate_hz, run.topic));
+    report.written.push_back(kalibr_path);
+  } else {
+    report.problems.push_back("no kalibr_imu.yaml: it needs both the gyro and the accelerometer identified");
+  }
+
+  for (const identify::TriadFit& triad : report.triads) {
+    const auto curves = oadev_curves(snapshot, triad.sensor);
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      const std::string path =
+          directory + "/" + partial_curves_file_name(identify::axis_name(triad.sensor, static_cast<int>(axis)));
+      identify::write_partial_curves_csv(path, identify::partial_curves(triad.axes[axis], curves[axis]),
+                                         identify::rate_unit_key(triad.sensor));
+      report.written.push_back(path);
+    }
+  }
+  return report;
+}
+
+std::string format_identification_summary(const AllanIdentifyOptions& options, const AllanNoiseReport& report) {
+  YAML::Emitter out;
+  out << YAML::BeginMap << YAML::Key << "identification" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "enabled" << YAML::Value << options.enabled;
+  if (options.enabled) {
+    out << YAML::Key << "sigma_source" << YAML::Value
+        << (options.bootstrap_replicas > 0 ? "bootstrap" : "ceres_covariance");
+    out << YAML::Key << "bootstrap_replicas" << YAML::Value << options.bootstrap_replicas;
+    out << YAML::Key << "identified" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+    for (const auto& triad : report.triads) out << identify::sensor_prefix(triad.sensor);
+    out << YAML::EndSeq;
+    out << YAML::Key << "problems" << YAML::Value << YAML::BeginSeq;
+    for (const auto& problem : report.problems) out << problem;
+    out << YAML::EndSeq;
+  }
+  out << YAML::EndMap << YAML::EndMap;
+  return std::string(out.c_str()) + "\n";
+}
+
+}  // namespace ros_io
+}  // namespace imu_lab

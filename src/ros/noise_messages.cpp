@@ -1,0 +1,49 @@
+#include "imu_lab/ros/noise_messages.h"
+
+#include "imu_lab/identify/units.h"
+
+namespace imu_lab {
+namespace ros_io {
+namespace {
+
+imu_lab::NoiseAxis to_noise_axis(identify::SensorKind sensor, int axis, const identify::FitResult& fit) {
+  imu_lab::NoiseAxis message;
+  message.axis = identify::axis_name(sensor, axis);
+  for (const identify::TermEstimate& term : fit.terms) {
+    const auto units = identify::amplitude_units(sensor, term.kind);
+    message.term.push_back(term.name);
+    message.symbol.push_back(identify::amplitude_symbol(term.kind));
+    message.status.push_back(identify::term_status_name(term.status));
+    message.unit.push_back(units.empty() ? "" : units.front().key);  // SI comes first
+    message.value.push_back(term.amplitude.value);
+    message.sigma.push_back(term.amplitude.sigma);
+    message.upper_bound.push_back(term.amplitude.upper_bound);
+    message.sigma_source.push_back(identify::sigma_source_name(term.sigma_source));
+  }
+  return message;
+}
+
+}  // namespace
+
+imu_lab::NoiseParameters to_noise_parameters(const AllanNoiseReport& report, const allan::StreamingSnapshot& snapshot,
+                                             const std_msgs::Header& header) {
+  imu_lab::NoiseParameters message;
+  message.header = header;
+  message.tau0_s = snapshot.timing.tau0_s;
+  message.record_length_s = record_length_s(snapshot);
+  message.problems = report.problems;
+  for (const identify::TriadFit& triad : report.triads) {
+    imu_lab::NoiseTriad triad_message;
+    triad_message.sensor = identify::sensor_prefix(triad.sensor);
+    triad_message.worst_axis = static_cast<std::uint8_t>(triad.worst_axis);
+    triad_message.worst_axis_reason = triad.worst_axis_reason;
+    for (int axis = 0; axis < 3; ++axis) {
+      triad_message.axes.push_back(to_noise_axis(triad.sensor, axis, triad.axes[axis]));
+    }
+    message.triads.push_back(triad_message);
+  }
+  return message;
+}
+
+}  // namespace ros_io
+}  // namespace imu_lab

@@ -1,0 +1,152 @@
+// The allan tool's noise identification, run as a user runs it on an emulated bag whose noise is
+// known (white rate + rate random walk, 20 min at 50 Hz): the Kalibr density agrees with the
+// profile within the fit's own 3 sigma, the partial curves add up to the fitted total, and
+// --no-identify or a refused fit leave the Allan curves alone.
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "imu_lab/identify/noise_report.h"
+#include "ros_test_support.h"
+
+namespace {
+
+using imu_lab::test_support::file_exists;
+using imu_lab::test_support::read_file;
+using imu_lab::test_support::run_tool;
+using imu_lab::test_support::scratch_directory;
+
+constexpr double kGyroWhite_rad_s_per_sqrt_hz = 1.0e-3;
+constexpr double kGyroWalk_rad_s_per_sqrt_s = 2.0e-5;  // crosses the white noise at tau ~ 90 s
+
+std::string white_and_walk_profile() {
+  std::ostringstream profile;
+  profile << "name: white_and_walk\n";
+  const char* const zero_matrix = "[[0, 0, 0], [0, 0, 0], [0, 0, 0]]";
+  profile << "gyro:\n  bias_fixed_rad_s: 0.0\n  bias_turn_on_sigma_rad_s: 0.0\n  scale_factor_error_ppm: 0.0\n"
+          << "  misalignment_rad: " << zero_matrix << "\n  noise:\n"
+          << "    white_rate: {density_rad_s_per_sqrt_hz: " << kGyroWhite_rad_s_per_sqrt_hz << "}\n"
+          << "    random_walk: {density_rad_s_per_sqrt_s: " << kGyroWalk_rad_s_per_sqrt_s << "}\n";
+  profile << "accelerometer:\n  bias_fixed_m_s2: 0.0\n  bias_turn_on_sigma_m_s2: 0.0\n  scale_factor_error_ppm: 0.0\n"
+          << "  misalignment_rad: " << zero_matrix << "\n  noise:\n"
+          << "    white_rate: {density_m_s2_per_sqrt_hz: 2.0e-3}\n"
+          << "    random_walk: {density_m_s2_per_sqrt_s: 5.0e-5}\n";
+  return profile.str();
+}
+
+std::vector<std::vector<double>> read_csv_rows(const std::string& path, std::vector<std::string>* header) {
+  std::istringstream text(read_file(path));
+  std::string line;
+  std::getline(text, line);
+  std::istringstream names(line);
+  for (std::string name; std::getline(names, name, ',');) header->push_back(name);
+  std::vector<std::vector<double>> rows;
+  while (std::getline(text, line)) {
+    if (line.empty()) continue;
+    std::istringstream cells(line);
+    std::vector<double> row;
+    for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+class AllanNoiseReport : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    directory_ = scratch_directory();
+    const std::string profile = directory_ + "/white_and_walk.yaml";
+    std::ofstream(profile) << white_and_walk_profile();
+    bag_ = directory_ + "/white_and_walk.bag";
+    const auto made = run_tool("emulate", "--profile " + profile + " --duration-s 1200 --rate-hz 50 --seed 11 "
+                                              "--no-truth --out " + bag_);
+    ASSERT_EQ(made.exit_code, 0) << made.output;
+    report_ = directory_ + "/report";
+    const auto run = run_tool("allan", bag_ + " --topic /imu/raw --no-plot --out " + report_);
+    output_ = run.output;
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+  }
+
+  static std::string directory_;
+  static std::string bag_;
+  static std::string report_;
+  static std::string output_;
+};
+
+std::string AllanNoiseReport::directory_;
+std::string AllanNoiseReport::bag_;
+std::string AllanNoiseReport::report_;
+std::string AllanNoiseReport::output_;
+
+TEST_F(AllanNoiseReport, KalibrDensityIsTheProfilesWithinThreeSigmaOfTheFit) {
+  ASSERT_TRUE(file_exists(report_ + "/noise.yaml")) << output_;
+  ASSERT_TRUE(file_exists(report_ + "/kalibr_imu.yaml")) << output_;
+  const auto values = imu_lab::identify::read_noise_report_values(read_file(report_ + "/noise.yaml"));
+  const YAML::Node kalibr = YAML::LoadFile(report_ + "/kalibr_imu.yaml");
+  const double density = kalibr["gyroscope_noise_density"].as<double>();
+  EXPECT_NEAR(kalibr["update_rate"].as<double>(), 50.0, 1e-6);
+  EXPECT_EQ(kalibr["rostopic"].as<std::string>(), "/imu/raw");
+  // Kalibr takes the largest axis (printed to 6 digits); its sigma is that axis's.
+  double sigma = 0.0;
+  for (const char* axis : {"gyro_x", "gyro_y", "gyro_z"}) {
+    const std::string key = std::string("triads.gyro.axes.") + axis + ".terms.white_rate.N_rad_s_per_sqrt_hz";
+    ASSERT_EQ(values.count(key), 1u) << key;
+    if (std::abs(values.at(key) - density) < 1e-5 * density) sigma = values.at(key + "_sigma");
+  }
+  ASSERT_GT(sigma, 0.0) << "no gyro axis has the Kalibr density";
+  EXPECT_NEAR(density, kGyroWhite_rad_s_per_sqrt_hz, 3.0 * sigma);
+  EXPECT_NE(output_.find("deg_per_sqrt_h"), std::string::npos) << output_;
+  EXPECT_NE(output_.find("worst gyro axis"), std::string::npos) << output_;
+}
+
+TEST_F(AllanNoiseReport, PartialCurvesAddUpToTheFittedTotal) {
+  for (const char* channel : {"gyro_x", "gyro_y", "gyro_z", "accel_x", "accel_y", "accel_z"}) {
+    const std::string path = report_ + "/noise_partial_" + channel + ".csv";
+    ASSERT_TRUE(file_exists(path)) << path;
+    std::vector<std::string> header;
+    const auto rows = read_csv_rows(path, &header);
+    ASSERT_GE(header.size(), 5u) << path << ": white_rate and random_walk at least";
+    ASSERT_GT(rows.size(), 10u) << path;
+    for (const auto& row : rows) {
+      ASSERT_EQ(row.size(), header.size()) << path;
+      double variance_sum = 0.0;  // the terms' variances add, not their deviations
+      for (std::size_t term = 3; term < row.size(); ++term) variance_sum += row[term] * row[term];
+      EXPECT_NEAR(std::sqrt(variance_sum), row[2], 1e-9 * row[2]) << path << " tau " << row[0];
+    }
+  }
+}
+
+TEST_F(AllanNoiseReport, SummarySaysWhatWasIdentified) {
+  const YAML::Node summary = YAML::LoadFile(report_ + "/allan_summary.yaml");
+  EXPECT_EQ(summary["identification"]["sigma_source"].as<std::string>(), "ceres_covariance");
+  EXPECT_EQ(summary["identification"]["identified"].size(), 2u);
+  EXPECT_EQ(summary["identification"]["problems"].size(), 0u);
+}
+
+TEST_F(AllanNoiseReport, NoIdentifyWritesNeitherNoiseFile) {
+  const std::string report = scratch_directory() + "/report";
+  const auto run = run_tool("allan", bag_ + " --no-plot --no-identify --out " + report);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_TRUE(file_exists(report + "/oadev.csv"));
+  EXPECT_FALSE(file_exists(report + "/noise.yaml"));
+  EXPECT_FALSE(file_exists(report + "/kalibr_imu.yaml"));
+  EXPECT_FALSE(file_exists(report + "/noise_partial_gyro_x.csv"));
+}
+
+TEST_F(AllanNoiseReport, ARefusedFitKeepsTheCurvesAndSaysTheRecordIsTooShort) {
+  // Curves that stop at 0.05 s: fewer than three octave points for the fit.
+  const std::string report = scratch_directory() + "/report";
+  const auto run = run_tool("allan", bag_ + " --no-plot --max-tau-s 0.05 --out " + report);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_TRUE(file_exists(report + "/oadev.csv"));
+  EXPECT_FALSE(file_exists(report + "/noise.yaml"));
+  EXPECT_NE(run.output.find("record too short"), std::string::npos) << run.output;
+  const YAML::Node summary = YAML::LoadFile(report + "/allan_summary.yaml");
+  EXPECT_EQ(summary["identification"]["problems"].size(), 2u);  // gyro and accel
+  EXPECT_EQ(summary["identification"]["identified"].size(), 0u);
+}
+
+}  // namespace
