@@ -99,7 +99,8 @@ int main(int argc, char** argv) {
     }
   });
   if (!time_per_sample || !time_blocked) return 0;
-  // Both paths must give the same curves (to rounding): a cheap guard against a broken block path.
+  // Both paths must give the same curves, bit for bit (the engine's blocks do not depend on how
+  // samples are handed over): a cheap guard against a broken block path.
   const imu_lab::allan::StreamingSnapshot per_sample_result = per_sample.snapshot();
   const imu_lab::allan::StreamingSnapshot blocked_result = blocked.snapshot();
   const auto& a = per_sample_result.curve(imu_lab::allan::Statistic::kModifiedAllan, 5);

@@ -70,15 +70,12 @@ void StreamingAllan::push(std::int64_t stamp_ns, const double* values, std::size
                      std::to_string(options_.channel_count) + " channels");
   }
   take(stamp_ns, values);
-  flush_channels();
 }
 
 void StreamingAllan::push_block(const std::int64_t* stamps_ns, const double* values_row_major,
                                 std::size_t sample_count) {
   const std::size_t channel_count = options_.channel_count;
-  // An InputError (kStop) leaves the engine unusable anyway; the flush is for the normal path.
   for (std::size_t k = 0; k < sample_count; ++k) take(stamps_ns[k], values_row_major + k * channel_count);
-  flush_channels();
 }
 
 void StreamingAllan::take(std::int64_t stamp_ns, const double* values) {
@@ -91,6 +88,13 @@ void StreamingAllan::take(std::int64_t stamp_ns, const double* values) {
   }
   ++input_sample_count_;
   last_stamp_ns_ = stamp_ns;
+}
+
+bool StreamingAllan::has_unprocessed_points() const {
+  for (const ChannelAccumulator& channel : channels_) {
+    if (channel.has_unprocessed_points()) return true;
+  }
+  return false;
 }
 
 void StreamingAllan::flush_channels() {
@@ -117,7 +121,6 @@ void StreamingAllan::finish_warm_up() {
   for (std::size_t sample = 0; sample < warm_up_.sample_count(); ++sample) {
     accept(warm_up_.stamp_ns(sample), warm_up_.values(sample), static_cast<std::int64_t>(sample));
   }
-  flush_channels();
   warm_up_.release();
 }
 
@@ -154,6 +157,13 @@ StreamingSnapshot StreamingAllan::snapshot() const {
     empty.timing.input_sample_count = input_sample_count_;
     empty.channels = channel_reports_;
     return empty;
+  }
+  if (has_unprocessed_points()) {
+    // Bring the statistics up to date on a copy: processing here would move the block
+    // boundaries, and results must not depend on when (or whether) snapshots were taken.
+    StreamingAllan processed = *this;
+    processed.flush_channels();
+    return processed.snapshot();
   }
   StreamingSnapshot result;
   result.warmed_up = true;

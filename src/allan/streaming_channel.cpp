@@ -31,6 +31,13 @@ void ChannelAccumulator::flush() {
   for (ResolutionLevel& level : levels_) level.process_appended();
 }
 
+bool ChannelAccumulator::has_unprocessed_points() const {
+  for (const ResolutionLevel& level : levels_) {
+    if (level.has_unprocessed_points()) return true;
+  }
+  return false;
+}
+
 void ChannelAccumulator::break_segment() {
   if (segment_sample_count_ == 0) return;
   phase_ = CompensatedSum();

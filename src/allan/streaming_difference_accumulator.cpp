@@ -98,20 +98,6 @@ void sum_non_overlapping(const double* x, std::int64_t count, std::ptrdiff_t m, 
 
 }  // namespace
 
-void DifferenceAccumulator::add_newest_point(const PhaseRing& ring) {
-  const std::int64_t newest = ring.newest();
-  for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {
-    const int m = averaging_factors_[i];
-    if (newest < static_cast<std::int64_t>(order_) * m) break;  // and for the larger factors
-    const double difference = phase_difference(ring, newest, m, order_);
-    open_segment_overlapping_[i].add(difference);
-    if (newest == next_non_overlapping_end_[i]) {
-      non_overlapping_[i].add(difference);
-      next_non_overlapping_end_[i] += m;
-    }
-  }
-}
-
 void DifferenceAccumulator::update(const PhaseRing& ring, std::int64_t first_index) {
   const std::int64_t newest = ring.newest();
   for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {

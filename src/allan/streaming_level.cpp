@@ -40,15 +40,9 @@ void ResolutionLevel::append_phase(double phase) {
 
 void ResolutionLevel::process_appended() {
   if (processed_count_ == ring_.count()) return;
-  if (processed_count_ == ring_.newest()) {
-    allan_.add_newest_point(ring_);
-    hadamard_.add_newest_point(ring_);
-    modified_.add_newest_point(ring_);
-  } else {
-    allan_.update(ring_, processed_count_);
-    hadamard_.update(ring_, processed_count_);
-    modified_.update(ring_, processed_count_);
-  }
+  allan_.update(ring_, processed_count_);
+  hadamard_.update(ring_, processed_count_);
+  modified_.update(ring_, processed_count_);
   block_autocorrelation_.update(ring_);
   processed_count_ = ring_.count();
 }
@@ -101,6 +95,7 @@ void ResolutionLevel::save(BinaryWriter& out) const {
   out.put_i64(level_);
   out.put_u64(averaging_factors_.size());
   ring_.save(out);
+  out.put_i64(processed_count_);
   out.put_f64s(head_);
   allan_.save(out);
   hadamard_.save(out);
@@ -118,7 +113,8 @@ void ResolutionLevel::load(BinaryReader& in) {
   in.expect_u64(static_cast<std::uint64_t>(level_), "pyramid level");
   in.expect_u64(averaging_factors_.size(), "number of averaging factors");
   ring_.load(in);
-  processed_count_ = ring_.count();  // saved only after processing (ChannelAccumulator::save)
+  processed_count_ = in.get_i64();
+  if (processed_count_ < 0 || processed_count_ > ring_.count()) in.fail("processed point count out of range");
   head_ = in.get_f64s();
   if (head_.size() > head_capacity_) in.fail("head buffer longer than its capacity");
   head_.reserve(head_capacity_);

@@ -75,23 +75,6 @@ double slide_window(const double* x, std::int64_t count, std::ptrdiff_t m, doubl
 
 }  // namespace
 
-void ModifiedAccumulator::add_newest_point(const PhaseRing& ring) {
-  const std::int64_t newest = ring.newest();
-  for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {
-    const int m = averaging_factors_[i];
-    if (newest < 2 * static_cast<std::int64_t>(m)) break;  // no second difference yet (nor for larger m)
-    double& window = window_sums_[i];
-    // Filling: add the second difference; full: slide by the third (see the header).
-    window += phase_difference(ring, newest, m, newest < 3 * static_cast<std::int64_t>(m) ? 2 : 3);
-    if (newest < 3 * static_cast<std::int64_t>(m) - 1) continue;  // window not yet m long
-    if (++updates_since_exact_[i] >= kWindowsBetweenExactSums * m) {
-      window = exact_window_sum(ring, newest, m);
-      updates_since_exact_[i] = 0;
-    }
-    terms_[i].add(window);
-  }
-}
-
 void ModifiedAccumulator::update(const PhaseRing& ring, std::int64_t first_index) {
   const std::int64_t newest = ring.newest();
   for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {

@@ -10,8 +10,8 @@ namespace imu_lab {
 namespace allan {
 
 // Bump whenever the payload layout changes: older files are then refused, never misread.
-// 2: phase rings store only their addressable history (the linear block window).
-constexpr std::uint64_t kStreamingCheckpointVersion = 2;
+// 3: phase rings are linear block windows; their stored points and processed count are saved.
+constexpr std::uint64_t kStreamingCheckpointVersion = 3;
 
 void write_checkpoint_file(const std::string& path, const std::string& payload);
 std::string read_checkpoint_file(const std::string& path);

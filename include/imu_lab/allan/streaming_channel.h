@@ -1,7 +1,7 @@
 // One input channel: removes its offset, integrates the rate into phase (compensated, so 1e8
 // samples keep full precision), and feeds every pyramid level its sub-sampled phase. The levels
-// run their statistics over what they received at flush() (or when their ring fills), so a block
-// of samples costs one tight loop per averaging factor instead of one pass over them per sample.
+// run their statistics when their ring fills (or at flush()), so a block of samples costs one
+// tight loop per averaging factor instead of one pass over them per sample.
 #pragma once
 
 #include <cstdint>
@@ -23,6 +23,7 @@ class ChannelAccumulator {
 
   void push(double value);  // a finite value; the caller screens NaN/Inf
   void flush();             // brings every statistic up to the last pushed value
+  bool has_unprocessed_points() const;
   void break_segment();     // a gap: the next value starts a new segment (flushes)
 
   double offset() const { return offset_; }
@@ -30,7 +31,7 @@ class ChannelAccumulator {
   const PhaseHistory& history() const { return history_; }
 
   std::size_t heap_bytes() const;
-  void save(BinaryWriter& out) const;  // after flush()
+  void save(BinaryWriter& out) const;
   void load(BinaryReader& in);
 
  private:

@@ -24,8 +24,6 @@ class DifferenceAccumulator {
   // Every phase point from first_index to ring.newest() (those the ring received since the last
   // update); the ring must still hold order * max(m) points before first_index.
   void update(const PhaseRing& ring, std::int64_t first_index);
-  // The same for the newest point alone (push() of one sample), without a block's set-up.
-  void add_newest_point(const PhaseRing& ring);
 
   int order() const { return order_; }
   DifferenceSums overlapping(std::size_t tau_index) const;  // pooled: closed segments and the open one

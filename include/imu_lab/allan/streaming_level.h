@@ -28,6 +28,7 @@ class ResolutionLevel {
   // (or when the ring must make room), which runs them over all stored points in one block.
   void append_phase(double phase);
   void process_appended();
+  bool has_unprocessed_points() const { return processed_count_ != ring_.count(); }
   // Folds the segment's total-deviation end terms and length into the pooled sums, opens a new one.
   void restart_segment();
 

@@ -23,8 +23,6 @@ class ModifiedAccumulator {
   // Every phase point from first_index to ring.newest(); the ring must still hold 3 max(m)
   // points before first_index.
   void update(const PhaseRing& ring, std::int64_t first_index);
-  // The same for the newest point alone (push() of one sample), without a block's set-up.
-  void add_newest_point(const PhaseRing& ring);
 
   // squares: sum of squared window sums; count: number of terms (N - 3m + 1 per segment).
   const DifferenceSums& terms(std::size_t tau_index) const { return terms_[tau_index]; }

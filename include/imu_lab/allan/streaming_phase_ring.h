@@ -47,24 +47,24 @@ class PhaseRing {
   std::size_t history() const { return history_; }
   std::size_t heap_bytes() const { return values_.capacity() * sizeof(double); }
 
-  // Only the addressable history is state: the storage beyond it is scratch.
+  // Every stored point: new points not yet processed still need the history before them.
   void save(BinaryWriter& out) const {
     out.put_i64(count_);
-    const std::size_t kept = kept_count();
-    out.put_f64s(std::vector<double>(values_.begin() + (stored() - kept), values_.begin() + stored()));
+    out.put_f64s(std::vector<double>(values_.begin(), values_.begin() + stored()));
   }
   void load(BinaryReader& in) {
     count_ = in.get_i64();
-    if (count_ < 0) in.fail("negative phase point count");
-    const std::vector<double> kept = in.get_f64s();
-    if (kept.size() != kept_count()) in.fail("phase history of another length");
-    std::copy(kept.begin(), kept.end(), values_.begin());
-    first_index_ = count_ - static_cast<std::int64_t>(kept.size());
+    const std::vector<double> stored_points = in.get_f64s();
+    if (count_ < 0 || stored_points.size() > values_.size() || stored_points.size() > static_cast<std::size_t>(count_) ||
+        stored_points.size() < std::min<std::size_t>(static_cast<std::size_t>(count_), history_)) {
+      in.fail("phase window of another length");
+    }
+    std::copy(stored_points.begin(), stored_points.end(), values_.begin());
+    first_index_ = count_ - static_cast<std::int64_t>(stored_points.size());
   }
 
  private:
   std::size_t stored() const { return static_cast<std::size_t>(count_ - first_index_); }
-  std::size_t kept_count() const { return std::min<std::size_t>(static_cast<std::size_t>(count_), history_); }
   void compact() {
     std::copy(values_.end() - static_cast<std::ptrdiff_t>(history_), values_.end(), values_.begin());
     first_index_ = count_ - static_cast<std::int64_t>(history_);
