@@ -13,13 +13,7 @@ namespace {
 constexpr double kLogThrottle_s = 5.0;
 using Status = thermal::CompensatedSample::Status;
 
-geometry_msgs::Vector3 message_of(const Eigen::Vector3d& v) {
-  geometry_msgs::Vector3 m;
-  m.x = v.x();
-  m.y = v.y();
-  m.z = v.z();
-  return m;
-}
+void set_vector(geometry_msgs::Vector3& message, const Eigen::Vector3d& v) { message.x = v.x(), message.y = v.y(), message.z = v.z(); }
 
 }  // namespace
 
@@ -107,8 +101,8 @@ void ThermalCompensatorNode::publish(const std::vector<thermal::CompensatedSampl
     }
     // Covariances stay: (1 + delta_scale)^2 changes them by parts per thousand at most.
     sensor_msgs::Imu output = *input;
-    output.angular_velocity = message_of(sample.corrected.angular_rate_rad_s);
-    output.linear_acceleration = message_of(sample.corrected.specific_force_m_s2);
+    set_vector(output.angular_velocity, sample.corrected.angular_rate_rad_s);
+    set_vector(output.linear_acceleration, sample.corrected.specific_force_m_s2);
     publisher_.publish(output);
     ++published_;
   }
