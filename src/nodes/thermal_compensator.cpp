@@ -2,22 +2,12 @@
 // (see include/imu_lab/ros/thermal_compensator_node.h).
 #include <ros/ros.h>
 
-#include "imu_lab/common/config_error.h"
+#include "imu_lab/ros/node_main.h"
 #include "imu_lab/ros/thermal_compensator_node.h"
 
 int main(int argc, char** argv) {
-  ros::init(argc, argv, "thermal_compensator");
-  ros::NodeHandle node;
-  ros::NodeHandle private_node("~");
-  try {
+  return imu_lab::ros_io::run_node_main(argc, argv, "thermal_compensator", [](ros::NodeHandle& node, ros::NodeHandle& private_node) {
     imu_lab::ros_io::ThermalCompensatorNode compensator(node, private_node);
     ros::spin();
-  } catch (const imu_lab::ConfigError& error) {
-    ROS_FATAL("thermal_compensator: bad configuration: %s", error.what());
-    return 2;
-  } catch (const std::exception& error) {
-    ROS_FATAL("thermal_compensator: %s", error.what());
-    return 1;
-  }
-  return 0;
+  });
 }
