@@ -11,6 +11,7 @@
 #include <iostream>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/tool_main.h"
 #include "imu_lab/ros/allan_bag_pass.h"
 #include "imu_lab/ros/allan_report.h"
 #include "imu_lab/ros/noise_table.h"
@@ -112,7 +113,7 @@ int main(int argc, char** argv) {
   identify.enabled = !no_identify;
   engine.stamp_policy = on_gap == "stop" ? imu_lab::allan::StampPolicy::kStop : imu_lab::allan::StampPolicy::kSplitAndPool;
 
-  try {
+  return imu_lab::run_tool_main("allan", [&] {
     ProgressBar bar;
     if (progress || ::isatty(STDERR_FILENO)) {
       options.on_progress = [&](std::size_t processed, std::size_t total) { bar.update(processed, total); };
@@ -126,11 +127,5 @@ int main(int argc, char** argv) {
     const auto files = imu_lab::ros_io::write_allan_report(out_directory, run, result.snapshot, !no_plot, identify);
     print_summary(result, files);
     return 0;
-  } catch (const imu_lab::ConfigError& error) {
-    std::cerr << "allan: bad configuration: " << error.what() << "\n";
-    return 2;
-  } catch (const std::exception& error) {
-    std::cerr << "\nallan: " << error.what() << "\n";
-    return 1;
-  }
+  });
 }

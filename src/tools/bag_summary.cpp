@@ -12,6 +12,7 @@
 #include "imu_lab/allan/batch.h"
 #include "imu_lab/allan/confidence.h"
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/tool_main.h"
 #include "imu_lab/emulator/analytic_profile_avar.h"
 #include "imu_lab/ros/config_paths.h"
 #include "imu_lab/ros/imu_bag_reader.h"
@@ -45,7 +46,7 @@ int main(int argc, char** argv) {
   app.add_option("--taus-s", taus_s, "averaging times [s]")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
-  try {
+  return imu_lab::run_tool_main("bag_summary", [&] {
     topic = imu_lab::ros_io::choose_imu_topic(bag_path, topic);
     std::array<std::vector<double>, 6> channels;
     double first_stamp_s = 0.0;
@@ -106,11 +107,5 @@ int main(int argc, char** argv) {
       }
     }
     return 0;
-  } catch (const imu_lab::ConfigError& error) {
-    std::cerr << "bag_summary: bad configuration: " << error.what() << "\n";
-    return 2;
-  } catch (const std::exception& error) {
-    std::cerr << "bag_summary: " << error.what() << "\n";
-    return 1;
-  }
+  });
 }

@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/tool_main.h"
 #include "imu_lab/emulator/imu_emulator.h"
 #include "imu_lab/ros/config_paths.h"
 #include "imu_lab/ros/emulated_bag.h"
@@ -41,7 +42,7 @@ int main(int argc, char** argv) {
   options.write_truth = !no_truth;
   options.write_increments = !no_increments;
 
-  try {
+  return imu_lab::run_tool_main("emulate", [&] {
     const auto profile =
         imu_lab::emulator::load_sensor_profile(imu_lab::ros_io::resolve_config("sensors", profile_name));
     const auto scenario =
@@ -60,11 +61,5 @@ int main(int argc, char** argv) {
                 scenario.type.c_str(), options.duration_s, settings.rate_hz, wall_s,
                 options.duration_s / std::max(wall_s, 1e-9));
     return 0;
-  } catch (const imu_lab::ConfigError& error) {
-    std::cerr << "emulate: bad configuration: " << error.what() << "\n";
-    return 2;
-  } catch (const std::exception& error) {
-    std::cerr << "emulate: " << error.what() << "\n";
-    return 1;
-  }
+  });
 }

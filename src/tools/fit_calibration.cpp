@@ -12,6 +12,7 @@
 #include "imu_lab/calib/kalibr_intrinsics.h"
 #include "imu_lab/common/atomic_file.h"
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/tool_main.h"
 #include "imu_lab/ros/config_paths.h"
 #include "imu_lab/ros/imu_bag_reader.h"
 
@@ -59,7 +60,7 @@ int main(int argc, char** argv) {
                  "rest threshold on the window mean rate (default: from the noise)");
   CLI11_PARSE(app, argc, argv);
 
-  try {
+  return imu_lab::run_tool_main("fit_calibration", [&] {
     if (!schedule_name.empty()) {
       options.schedule = imu_lab::calib::schedule_from_scenario(
           imu_lab::emulator::load_scenario(imu_lab::ros_io::resolve_config("scenarios", schedule_name)));
@@ -89,11 +90,5 @@ int main(int argc, char** argv) {
     std::cout << report << "\nwrote " << out_path << ", " << beside(out_path, "_kalibr_imu_chain.yaml") << ", "
               << beside(out_path, "_report.txt") << "\n";
     return 0;
-  } catch (const imu_lab::ConfigError& error) {
-    std::cerr << "fit_calibration: bad configuration: " << error.what() << "\n";
-    return 2;
-  } catch (const std::exception& error) {
-    std::cerr << "fit_calibration: " << error.what() << "\n";
-    return 1;
-  }
+  });
 }

@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/tool_main.h"
 #include "imu_lab/emulator/earth_model.h"
 #include "imu_lab/ros/thermal_bag.h"
 #include "imu_lab/thermal/thermal_fit.h"
@@ -106,7 +107,7 @@ int main(int argc, char** argv) {
                                                                      c.fit.earth.latitude_rad, c.height_m);
   if (c.csv_path.empty()) c.csv_path = default_csv_path(c.out_path);
 
-  try {
+  return imu_lab::run_tool_main("fit_thermal", [&] {
     const auto data = imu_lab::ros_io::read_thermal_windows(c.bag_path, c.topics, c.windows);
     std::printf("fit_thermal: %zu IMU samples on %s, %zu temperature readings, %zu windows of %.6g s\n",
                 data.imu_messages, data.imu_topic.c_str(), data.temperature_messages, data.windows.size(),
@@ -118,11 +119,5 @@ int main(int argc, char** argv) {
     std::printf("fit_thermal: wrote %s and %s\n", c.out_path.c_str(), c.csv_path.c_str());
     if (!c.plot_path.empty()) plot(c.csv_path, c.plot_path);
     return 0;
-  } catch (const imu_lab::ConfigError& error) {
-    std::cerr << "fit_thermal: bad configuration: " << error.what() << "\n";
-    return 2;
-  } catch (const std::exception& error) {
-    std::cerr << "fit_thermal: " << error.what() << "\n";
-    return 1;
-  }
+  });
 }

@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/tool_main.h"
 #include "imu_lab/ros/bag_navigation.h"
 #include "imu_lab/ros/navigation_csv.h"
 
@@ -146,7 +147,7 @@ int main(int argc, char** argv) {
   CommandLine c;
   add_options(app, c);
   CLI11_PARSE(app, argc, argv);
-  try {
+  return imu_lab::run_tool_main("navigate", [&] {
     fill_settings(c);
     const auto result = imu_lab::ros_io::navigate_bag(c.bag_path, c.bag, c.settings);
     const auto& n = result.counters;
@@ -168,11 +169,5 @@ int main(int argc, char** argv) {
       std::cerr << "navigate: no " << c.bag.truth_topic << " in the bag, so no error to plot\n";
     }
     return 0;
-  } catch (const imu_lab::ConfigError& error) {
-    std::cerr << "navigate: bad configuration: " << error.what() << "\n";
-    return 2;
-  } catch (const std::exception& error) {
-    std::cerr << "navigate: " << error.what() << "\n";
-    return 1;
-  }
+  });
 }
