@@ -1,22 +1,15 @@
 #include "imu_lab/io/stability_table.h"
 
-#include <cstdio>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 
 #include "imu_lab/common/atomic_file.h"
+#include "imu_lab/common/format_number.h"
 
 namespace imu_lab {
 namespace io {
 namespace {
-
-// Full double precision: the CSV is an exchange format, and tests compare runs through it.
-std::string number(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof(buffer), "%.17g", value);
-  return buffer;
-}
 
 const char* const kFields[] = {"dev", "lo", "hi", "edf", "n", "alpha"};
 
@@ -50,7 +43,7 @@ std::string format_stability_csv(const std::vector<ChannelCurve>& channels) {
   }
   out << '\n';
   for (const auto& row : tau_by_factor) {
-    out << number(row.second) << ',' << row.first;
+    out << format_number(row.second) << ',' << row.first;
     for (std::size_t c = 0; c < channels.size(); ++c) {
       const auto found = by_factor[c].find(row.first);
       if (found == by_factor[c].end()) {
@@ -58,8 +51,9 @@ std::string format_stability_csv(const std::vector<ChannelCurve>& channels) {
         continue;
       }
       const allan::StabilityPoint& p = *found->second;
-      out << ',' << number(p.deviation) << ',' << number(p.deviation_lower) << ',' << number(p.deviation_upper)
-          << ',' << number(p.edf) << ',' << p.term_count << ',' << p.alpha;
+      out << ',' << format_number(p.deviation) << ',' << format_number(p.deviation_lower) << ','
+          << format_number(p.deviation_upper) << ',' << format_number(p.edf) << ',' << p.term_count << ','
+          << p.alpha;
     }
     out << '\n';
   }

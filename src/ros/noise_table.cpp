@@ -1,31 +1,29 @@
 #include "imu_lab/ros/noise_table.h"
 
 #include <cmath>
-#include <cstdio>
+
+#include "imu_lab/common/format_number.h"
 
 namespace imu_lab {
 namespace ros_io {
 namespace {
 
-std::string format_number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.4g", value);
-  return text;
-}
+// Four significant digits: this table is read by people; the YAML keeps full precision.
+std::string format_table_number(double value) { return format_number(value, 4); }
 
 std::string format_term(const identify::TermEstimate& term, const identify::UnitScale& unit) {
   const auto& amplitude = term.amplitude;
   if (term.status == identify::TermStatus::kPresent && std::isfinite(amplitude.value)) {
-    std::string text = format_number(amplitude.value * unit.per_si);
+    std::string text = format_table_number(amplitude.value * unit.per_si);
     if (std::isfinite(amplitude.sigma)) {
-      text += " ± " + format_number(amplitude.sigma * unit.per_si) + " (" +
+      text += " ± " + format_table_number(amplitude.sigma * unit.per_si) + " (" +
               identify::sigma_source_name(term.sigma_source) + ")";
     }
     return text;
   }
   if (std::isfinite(amplitude.upper_bound)) {
-    return "< " + format_number(amplitude.upper_bound * unit.per_si) + " (" + identify::term_status_name(term.status) +
-           ")";
+    return "< " + format_table_number(amplitude.upper_bound * unit.per_si) + " (" +
+           identify::term_status_name(term.status) + ")";
   }
   return identify::term_status_name(term.status);
 }

@@ -1,0 +1,13 @@
+#include "imu_lab/common/format_number.h"
+
+#include <cstdio>
+
+namespace imu_lab {
+
+std::string format_number(double value, int significant_digits) {
+  char text[48];
+  std::snprintf(text, sizeof(text), "%.*g", significant_digits, value);
+  return text;
+}
+
+}  // namespace imu_lab
