@@ -6,7 +6,7 @@
 #include "imu_lab/emulator/static_motion.h"
 #include "imu_lab/emulator/thermal_motion.h"
 #include "scenario_blocks.h"
-#include "yaml_fields.h"
+#include "imu_lab/common/yaml_fields.h"
 
 namespace imu_lab {
 namespace emulator {

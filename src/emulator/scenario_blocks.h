@@ -2,8 +2,8 @@
 // Angles are read in degrees and stored in radians; every refusal names the dotted key.
 #pragma once
 
+#include "imu_lab/common/yaml_fields.h"
 #include "imu_lab/emulator/scenario.h"
-#include "yaml_fields.h"
 
 namespace imu_lab {
 namespace emulator {

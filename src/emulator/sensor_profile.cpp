@@ -4,9 +4,9 @@
 #include <stdexcept>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/yaml_fields.h"
 #include "imu_lab/noise/flicker_bank.h"
 #include "imu_lab/noise/zero_dc_noise.h"
-#include "yaml_fields.h"
 
 namespace imu_lab {
 namespace emulator {

@@ -4,15 +4,13 @@
 
 #include <cmath>
 
-#include "../emulator/yaml_fields.h"  // the strict field readers the sensor profiles use
 #include "imu_lab/common/atomic_file.h"
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/yaml_fields.h"
 
 namespace imu_lab {
 namespace thermal {
 namespace {
-
-using emulator::YamlFields;
 
 const char* const kFormat = "imu_lab_thermal_model";
 const char* const kAxisNames[3] = {"x", "y", "z"};
@@ -105,7 +103,7 @@ void write_fit(YAML::Emitter& out, const ThermalFitResult& fit) {
 }  // namespace
 
 ThermalModel load_thermal_model(const std::string& path) {
-  const YamlFields root(emulator::load_yaml_file(path), "", path);
+  const YamlFields root(load_yaml_file(path), "", path);
   root.allow_only({"format", "version", "reference_temperature_c", "rate_window_s", "uses_temperature_rate",
                    "uses_second_sensor", "validity", "gyro", "accelerometer", "fit"});
   if (root.text("format") != kFormat) root.fail("format", std::string("expected '") + kFormat + "'");

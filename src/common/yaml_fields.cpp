@@ -1,4 +1,4 @@
-#include "yaml_fields.h"
+#include "imu_lab/common/yaml_fields.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,6 @@
 #include "imu_lab/common/config_error.h"
 
 namespace imu_lab {
-namespace emulator {
 
 YamlFields::YamlFields(const YAML::Node& node, std::string path, std::string source)
     : node_(node), path_(std::move(path)), source_(std::move(source)) {
@@ -143,5 +142,4 @@ YAML::Node load_yaml_file(const std::string& path) {
   }
 }
 
-}  // namespace emulator
 }  // namespace imu_lab

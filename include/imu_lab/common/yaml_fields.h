@@ -1,5 +1,5 @@
-// Strict YAML field readers for profiles and scenarios: every refusal is a ConfigError naming
-// the dotted key path (private to src/emulator).
+// Strict YAML field readers for profiles, scenarios and models: every refusal is a ConfigError
+// naming the dotted key path.
 #pragma once
 
 #include <yaml-cpp/yaml.h>
@@ -10,7 +10,6 @@
 #include <vector>
 
 namespace imu_lab {
-namespace emulator {
 
 class YamlFields {
  public:
@@ -52,5 +51,4 @@ class YamlFields {
 // Loads a file; unreadable or unparsable files are ConfigErrors on key "(file)".
 YAML::Node load_yaml_file(const std::string& path);
 
-}  // namespace emulator
 }  // namespace imu_lab
