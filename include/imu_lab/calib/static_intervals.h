@@ -7,15 +7,12 @@
 #include <cstddef>
 #include <vector>
 
+#include "imu_lab/common/imu_sample.h"
+
 namespace imu_lab {
 namespace calib {
 
-// One IMU sample: rates are averages over the interval ending at the stamp.
-struct CalibrationSample {
-  double stamp_s = 0.0;
-  Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();
-  Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();
-};
+using CalibrationSample = ImuSample;
 
 struct StaticInterval {
   std::size_t begin = 0;  // first sample

@@ -9,16 +9,13 @@
 #include <optional>
 #include <vector>
 
+#include "imu_lab/common/imu_sample.h"
 #include "imu_lab/thermal/temperature_history.h"
 
 namespace imu_lab {
 namespace thermal {
 
-struct ImuReading {
-  double stamp_s = 0.0;
-  Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();
-  Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();
-};
+using ImuReading = ImuSample;
 
 struct ThermalWindow {
   double start_s = 0.0;  // window [start, start + window)
