@@ -30,17 +30,6 @@ ros::Time to_ros_time(std::int64_t stamp_ns) {
   return stamp;
 }
 
-nav_msgs::Odometry to_odometry(const NavigationSolution& solution, const NavigationFrames& frames) {
-  nav_msgs::Odometry odometry;
-  odometry.header.stamp = to_ros_time(solution.stamp_ns);
-  odometry.header.frame_id = frames.world;
-  odometry.child_frame_id = frames.body;
-  odometry.pose.pose = to_pose(solution, frames).pose;
-  odometry.twist.twist.linear = to_vector<geometry_msgs::Vector3>(solution.velocity_body_m_s);
-  odometry.twist.twist.angular = to_vector<geometry_msgs::Vector3>(solution.angular_rate_body_rad_s);
-  return odometry;
-}
-
 geometry_msgs::PoseStamped to_pose(const NavigationSolution& solution, const NavigationFrames& frames) {
   geometry_msgs::PoseStamped pose;
   pose.header.stamp = to_ros_time(solution.stamp_ns);
@@ -50,13 +39,25 @@ geometry_msgs::PoseStamped to_pose(const NavigationSolution& solution, const Nav
   return pose;
 }
 
+// Odometry and the tf are the pose with the body frame named (and, for odometry, the twist).
+nav_msgs::Odometry to_odometry(const NavigationSolution& solution, const NavigationFrames& frames) {
+  const geometry_msgs::PoseStamped pose = to_pose(solution, frames);
+  nav_msgs::Odometry odometry;
+  odometry.header = pose.header;
+  odometry.child_frame_id = frames.body;
+  odometry.pose.pose = pose.pose;
+  odometry.twist.twist.linear = to_vector<geometry_msgs::Vector3>(solution.velocity_body_m_s);
+  odometry.twist.twist.angular = to_vector<geometry_msgs::Vector3>(solution.angular_rate_body_rad_s);
+  return odometry;
+}
+
 geometry_msgs::TransformStamped to_transform(const NavigationSolution& solution, const NavigationFrames& frames) {
+  const geometry_msgs::PoseStamped pose = to_pose(solution, frames);
   geometry_msgs::TransformStamped transform;
-  transform.header.stamp = to_ros_time(solution.stamp_ns);
-  transform.header.frame_id = frames.world;
+  transform.header = pose.header;
   transform.child_frame_id = frames.body;
   transform.transform.translation = to_vector<geometry_msgs::Vector3>(solution.position_enu_m);
-  transform.transform.rotation = to_message(solution.q_body_to_enu);
+  transform.transform.rotation = pose.pose.orientation;
   return transform;
 }
 
