@@ -64,8 +64,9 @@ double worst_normalised_error(const calib::CalibrationResult& result, const cali
   return worst;
 }
 
-// Largest reported sigma of the scale factors [ppm] and of the off-diagonal terms [arcsec].
-std::pair<double, double> largest_sigmas(const calib::CalibrationResult& result) {
+// Largest reported sigma of the scale factors [ppm] and of the off-diagonal terms [arcsec],
+// printed with the fit's conditioning under `label`.
+std::pair<double, double> largest_sigmas(const calib::CalibrationResult& result, const char* label) {
   double scale_ppm = 0.0, misalignment_arcsec = 0.0;
   for (int offset : {calib::parameter_offset::kAccelerometerK, calib::parameter_offset::kGyroK}) {
     for (int element = 0; element < 9; ++element) {
@@ -77,6 +78,8 @@ std::pair<double, double> largest_sigmas(const calib::CalibrationResult& result)
       }
     }
   }
+  std::printf("[%s] largest sigma: scale factor %.2f ppm, misalignment %.2f arcsec; condition %.3g, chi2/dof %.2f\n",
+              label, scale_ppm, misalignment_arcsec, result.condition_number, result.chi2_per_degree_of_freedom);
   return {scale_ppm, misalignment_arcsec};
 }
 
@@ -86,9 +89,7 @@ TEST(CalibTactical, KnownOrientationsEstimatesWithinThreeSigmaAndSigmasOnTarget)
   EXPECT_EQ(r.known.rests.size(), 33u);
   EXPECT_EQ(r.known.moves.size(), 23u);
   EXPECT_LT(worst_normalised_error(r.known, r.run.truth, "known"), 3.0);
-  const auto [scale_ppm, misalignment_arcsec] = largest_sigmas(r.known);
-  std::printf("[known] largest sigma: scale factor %.2f ppm, misalignment %.2f arcsec; condition %.3g, chi2/dof %.2f\n",
-              scale_ppm, misalignment_arcsec, r.known.condition_number, r.known.chi2_per_degree_of_freedom);
+  const auto [scale_ppm, misalignment_arcsec] = largest_sigmas(r.known, "known");
   EXPECT_LE(scale_ppm, 20.0);
   EXPECT_LE(misalignment_arcsec, 10.0);
 }
@@ -98,9 +99,7 @@ TEST(CalibTactical, UnknownOrientationsEstimatesInTheAccelerometerFrameWithinThr
   EXPECT_FALSE(r.unknown.known_orientations);
   for (int fixed : {1, 2, 5}) EXPECT_FALSE(r.unknown.estimated[calib::parameter_offset::kAccelerometerK + fixed]);
   EXPECT_LT(worst_normalised_error(r.unknown, calib_test::in_accelerometer_frame(r.run.truth), "unknown"), 3.0);
-  const auto [scale_ppm, misalignment_arcsec] = largest_sigmas(r.unknown);
-  std::printf("[unknown] largest sigma: scale factor %.2f ppm, misalignment %.2f arcsec; condition %.3g, chi2/dof %.2f\n",
-              scale_ppm, misalignment_arcsec, r.unknown.condition_number, r.unknown.chi2_per_degree_of_freedom);
+  const auto [scale_ppm, misalignment_arcsec] = largest_sigmas(r.unknown, "unknown");
   EXPECT_LE(scale_ppm, 60.0);
   EXPECT_LE(misalignment_arcsec, 30.0);
 }
