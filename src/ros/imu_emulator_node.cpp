@@ -1,6 +1,7 @@
 #include "imu_lab/ros/imu_emulator_node.h"
 
 #include <algorithm>
+#include <boost/make_shared.hpp>
 #include <cmath>
 
 #include "imu_lab/common/config_error.h"
@@ -64,15 +65,20 @@ void ImuEmulatorNode::publish_next() {
   const emulator::ImuSample sample = emulator_->next();
   const double interval_s = emulator_->sample_interval_s();
   const ros::Time stamp = sample_stamp(emulator_->settings().start_time_s, interval_s, emulator_->samples_emitted());
-  const EmulatorMessages messages = to_messages(sample, stamp, interval_s, frame_id_);
-  raw_publisher_.publish(messages.raw);
-  temperature_publisher_.publish(messages.temperature);
-  if (messages.second_temperature) second_temperature_publisher_.publish(*messages.second_temperature);
-  if (publish_truth_) truth_publisher_.publish(messages.truth);
-  if (publish_increments_) increment_publisher_.publish(messages.increment);
+  EmulatorMessages messages = to_messages(sample, stamp, interval_s, frame_id_);
+  // Shared pointers: a nodelet in the same manager gets this very message (no serialisation, no copy).
+  raw_publisher_.publish(boost::make_shared<sensor_msgs::Imu>(std::move(messages.raw)));
+  temperature_publisher_.publish(boost::make_shared<sensor_msgs::Temperature>(std::move(messages.temperature)));
+  if (messages.second_temperature) {
+    second_temperature_publisher_.publish(boost::make_shared<sensor_msgs::Temperature>(std::move(*messages.second_temperature)));
+  }
+  if (publish_truth_) truth_publisher_.publish(boost::make_shared<imu_lab::ImuTruth>(std::move(messages.truth)));
+  if (publish_increments_) {
+    increment_publisher_.publish(boost::make_shared<imu_lab::ImuIncrement>(std::move(messages.increment)));
+  }
 }
 
-void ImuEmulatorNode::run() {
+void ImuEmulatorNode::run(const std::function<bool()>& keep_running) {
   const double interval_s = emulator_->sample_interval_s();
   const std::uint64_t last_sample =
       duration_s_ > 0.0 ? static_cast<std::uint64_t>(std::llround(duration_s_ / interval_s)) : UINT64_MAX;
@@ -83,7 +89,7 @@ void ImuEmulatorNode::run() {
     if (due > emulator_->samples_emitted() + 1) ++bursts_;
     while (emulator_->samples_emitted() < due && ros::ok()) publish_next();
     diagnostics_.update();
-    ros::spinOnce();
+    if (!keep_running()) break;
     const double next_due_wall_s = (emulator_->samples_emitted() + 1) * interval_s / realtime_factor_;
     const double wait_s = next_due_wall_s - (ros::WallTime::now() - wall_start).toSec();
     if (wait_s > 0.0) ros::WallDuration(std::min(wait_s, 0.1)).sleep();

@@ -7,12 +7,14 @@
 //   duration_s (0 = until shut down), publish_truth (true), publish_increments (true)
 // Topics: imu/raw, imu/temperature, imu/truth, imu/increment, and imu/temperature2 when the scenario
 // has a second thermosensor (relative: remap or push a namespace);
-// diagnostics on /diagnostics.
+// diagnostics on /diagnostics. Messages are published as shared pointers, so subscribers in the
+// same nodelet manager (the nodelet imu_lab/ImuEmulatorNodelet) receive them without a copy.
 #pragma once
 
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <ros/ros.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -26,9 +28,10 @@ class ImuEmulatorNode {
   // Throws ConfigError naming the parameter or profile key that is wrong.
   ImuEmulatorNode(ros::NodeHandle& node, ros::NodeHandle& private_node);
 
-  // Publishes until ROS shuts down or duration_s has been emulated. If the machine falls behind,
-  // it publishes the overdue samples in a burst: every sample keeps its exact stamp.
-  void run();
+  // Publishes until ROS shuts down, duration_s has been emulated or `keep_running` (called between
+  // bursts: the node spins there, the nodelet checks for unloading) returns false. If the machine
+  // falls behind, it publishes the overdue samples in a burst: every sample keeps its exact stamp.
+  void run(const std::function<bool()>& keep_running);
 
  private:
   void publish_next();

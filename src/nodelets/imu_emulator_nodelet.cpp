@@ -1,0 +1,44 @@
+// The emulator as a nodelet (imu_lab/ImuEmulatorNodelet): the same node class, publishing from its
+// own thread (the pacing loop must not block the manager's callback threads); the chain's nodelets
+// in the same manager receive its messages without a copy.
+#include <nodelet/nodelet.h>
+#include <class_loader/register_macro.hpp>
+
+#include <atomic>
+#include <memory>
+#include <thread>
+
+#include "imu_lab/common/config_error.h"
+#include "imu_lab/ros/imu_emulator_node.h"
+
+namespace imu_lab {
+namespace ros_io {
+
+class ImuEmulatorNodelet : public nodelet::Nodelet {
+ public:
+  ~ImuEmulatorNodelet() override {
+    unloading_ = true;
+    if (publisher_thread_.joinable()) publisher_thread_.join();
+  }
+
+ private:
+  void onInit() override {
+    try {
+      emulator_ = std::make_unique<ImuEmulatorNode>(getNodeHandle(), getPrivateNodeHandle());
+    } catch (const ConfigError& error) {
+      NODELET_FATAL("imu_emulator: bad configuration: %s", error.what());
+      throw;
+    }
+    publisher_thread_ = std::thread([this] { emulator_->run([this] { return !unloading_; }); });
+  }
+
+  std::unique_ptr<ImuEmulatorNode> emulator_;
+  std::atomic<bool> unloading_{false};
+  std::thread publisher_thread_;
+};
+
+}  // namespace ros_io
+}  // namespace imu_lab
+
+// What pluginlib's PLUGINLIB_EXPORT_CLASS expands to (see strapdown_navigator_nodelet.cpp).
+CLASS_LOADER_REGISTER_CLASS(imu_lab::ros_io::ImuEmulatorNodelet, nodelet::Nodelet)
