@@ -1,5 +1,6 @@
 #include "imu_lab/ros/thermal_compensator_node.h"
 
+#include <boost/make_shared.hpp>
 #include <cmath>
 
 #include "imu_lab/common/config_error.h"
@@ -100,9 +101,11 @@ void ThermalCompensatorNode::publish(const std::vector<thermal::CompensatedSampl
                         "validity range; corrected at its edge", sample.input.temperature_c, sample.input.rate_c_s);
     }
     // Covariances stay: (1 + delta_scale)^2 changes them by parts per thousand at most.
-    sensor_msgs::Imu output = *input;
-    set_vector(output.angular_velocity, sample.corrected.angular_rate_rad_s);
-    set_vector(output.linear_acceleration, sample.corrected.specific_force_m_s2);
+    // A new shared message (the input may be shared with other subscribers): nodelets downstream
+    // in the same manager receive this pointer, not a copy.
+    const auto output = boost::make_shared<sensor_msgs::Imu>(*input);
+    set_vector(output->angular_velocity, sample.corrected.angular_rate_rad_s);
+    set_vector(output->linear_acceleration, sample.corrected.specific_force_m_s2);
     publisher_.publish(output);
     ++published_;
   }
