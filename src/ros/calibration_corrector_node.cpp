@@ -1,6 +1,7 @@
 #include "imu_lab/ros/calibration_corrector_node.h"
 
 #include <Eigen/LU>
+#include <boost/make_shared.hpp>
 #include <cmath>
 
 #include "imu_lab/calib/calibration_file.h"
@@ -78,7 +79,8 @@ void CalibrationCorrectorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message)
                       "diagnostics)", message->header.stamp.toSec());
     return;
   }
-  publisher_.publish(corrected_message(*message, calibration_));
+  // A shared message: nodelets downstream in the same manager receive this pointer, not a copy.
+  publisher_.publish(boost::make_shared<sensor_msgs::Imu>(corrected_message(*message, calibration_)));
   ++corrected_;
 }
 
