@@ -37,12 +37,6 @@ std::unique_ptr<allan::StreamingAllan> make_engine(const AllanMonitorSettings& s
   }
 }
 
-std::int64_t irregularities(const allan::StreamingSnapshot& snapshot) {
-  std::int64_t count = snapshot.timing.gap_count + snapshot.timing.duplicate_count + snapshot.timing.out_of_order_count;
-  for (const auto& channel : snapshot.channels) count += channel.non_finite_count;
-  return count;
-}
-
 }  // namespace
 
 AllanMonitorNode::AllanMonitorNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
@@ -71,6 +65,7 @@ AllanMonitorNode::AllanMonitorNode(ros::NodeHandle& node, ros::NodeHandle& priva
     checkpoint_timer_ = node.createWallTimer(ros::WallDuration(settings_.checkpoint_period_s),
                                              [this](const ros::WallTimerEvent&) { save_checkpoint(); });
   }
+  health_.emplace(input_subscriber_.getTopic(), load_input_health_settings(private_node, settings_.engine.gap_factor));
   diagnostics_.setHardwareID("allan_monitor");
   diagnostics_.add("allan monitor", this, &AllanMonitorNode::report);
   diagnostics_timer_ = node.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) {
@@ -99,21 +94,21 @@ void AllanMonitorNode::add(const AllanSample& sample, const std_msgs::Header& he
     ++skipped_before_checkpoint_;
     return;
   }
+  const StampVerdict verdict = health_->check_stamp(sample.stamp_ns);
+  if (verdict == StampVerdict::kDuplicate || verdict == StampVerdict::kOutOfOrder) {
+    ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: stamp %.9f s not after the previous one: sample dropped "
+                      "(counted in diagnostics)", sample.stamp_ns * 1e-9);
+  }
   for (const double value : sample.values) {
     if (std::isfinite(value)) continue;
+    health_->count_non_finite();
     ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: NaN/Inf value at %.9f s excluded (counted in diagnostics)",
                       sample.stamp_ns * 1e-9);
     break;
   }
-  if (engine_->input_sample_count() > 0 && sample.stamp_ns <= previous_stamp_ns_) {
-    ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: stamp %.9f s not after %.9f s: sample dropped (counted in "
-                      "diagnostics)", sample.stamp_ns * 1e-9, previous_stamp_ns_ * 1e-9);
-  }
-  previous_stamp_ns_ = sample.stamp_ns;
+  // The engine splits at gaps and drops unordered stamps itself (streaming_options.h).
   engine_->push(sample.stamp_ns, sample.values.data(), sample.values.size());
   last_header_ = header;
-  if (window_samples_++ == 0) window_first_stamp_ns_ = sample.stamp_ns;
-  window_last_stamp_ns_ = std::max(window_last_stamp_ns_, sample.stamp_ns);
 }
 
 void AllanMonitorNode::publish_curves() {
@@ -189,34 +184,17 @@ void AllanMonitorNode::finish() {
 }
 
 void AllanMonitorNode::report(diagnostic_updater::DiagnosticStatusWrapper& status) {
-  const double span_s = (window_last_stamp_ns_ - window_first_stamp_ns_) * 1e-9;
-  const double input_rate_hz = window_samples_ > 1 && span_s > 0.0 ? (window_samples_ - 1) / span_s : 0.0;
-  if (window_samples_ == 0) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "no input since the last report");
-  } else if (!engine_->warmed_up()) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "warming up");
-  } else if (latest_snapshot_ && irregularities(*latest_snapshot_) > 0) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "irregular input (gaps, NaN/Inf or bad stamps) counted");
-  } else {
-    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "monitoring");
-  }
-  status.add("input rate from stamps [Hz]", input_rate_hz);
-  status.add("samples", engine_->input_sample_count());
+  health_->fill(status, engine_->warmed_up() ? "monitoring" : "warming up");
+  status.add("engine samples (with a resumed checkpoint's)", engine_->input_sample_count());
   status.add("skipped: at or before the checkpoint", skipped_before_checkpoint_);
   if (latest_snapshot_) {
     const allan::TimingReport& timing = latest_snapshot_->timing;
-    std::int64_t non_finite = 0;
-    for (const auto& channel : latest_snapshot_->channels) non_finite += channel.non_finite_count;
-    status.add("tau0 [s]", timing.tau0_s);
+    status.add("engine tau0 [s]", timing.tau0_s);
     status.add("interval rms deviation [s]", timing.interval_rms_deviation_s);
     status.add("interval max deviation [s]", timing.interval_max_deviation_s);
-    status.add("gaps", timing.gap_count);
-    status.add("NaN/Inf values", non_finite);
-    status.add("duplicate stamps", timing.duplicate_count);
-    status.add("out-of-order stamps", timing.out_of_order_count);
+    status.add("engine segments split at gaps", timing.gap_count);
   }
   status.add("engine state [bytes]", engine_->state_size_bytes());
-  window_samples_ = 0;
 }
 
 }  // namespace ros_io

@@ -60,6 +60,7 @@ CalibrationCorrectorNode::CalibrationCorrectorNode(ros::NodeHandle& node, ros::N
 
   publisher_ = node.advertise<sensor_msgs::Imu>("imu/corrected", queue_size);
   subscriber_ = node.subscribe("imu/thermal", queue_size, &CalibrationCorrectorNode::on_imu, this);
+  health_.emplace(subscriber_.getTopic(), load_input_health_settings(private_node, 3.0));
   diagnostics_.setHardwareID("calibration_corrector");
   diagnostics_.add("calibration correction", this, &CalibrationCorrectorNode::report);
   diagnostics_timer_ = node.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) {
@@ -72,9 +73,9 @@ CalibrationCorrectorNode::CalibrationCorrectorNode(ros::NodeHandle& node, ros::N
 
 void CalibrationCorrectorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message) {
   std::lock_guard<std::mutex> lock(mutex_);
-  ++window_samples_;
+  health_->check_stamp(static_cast<std::int64_t>(message->header.stamp.toNSec()));
   if (!finite(*message)) {
-    ++dropped_;
+    health_->count_non_finite();
     ROS_WARN_THROTTLE(kLogThrottle_s, "calibration_corrector: dropped a sample with NaN/Inf at %.9f (counted in "
                       "diagnostics)", message->header.stamp.toSec());
     return;
@@ -85,19 +86,9 @@ void CalibrationCorrectorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message)
 }
 
 void CalibrationCorrectorNode::report(diagnostic_updater::DiagnosticStatusWrapper& status) {
-  if (window_samples_ == 0) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "no input since the last report");
-  } else if (dropped_ > dropped_reported_) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
-                   std::to_string(dropped_ - dropped_reported_) + " samples with NaN/Inf dropped since the last report");
-  } else {
-    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "correcting");
-  }
+  health_->fill(status, "correcting");
   status.add("calibration file", calibration_file_);
   status.add("samples corrected", corrected_);
-  status.add("samples dropped (NaN/Inf)", dropped_);
-  window_samples_ = 0;
-  dropped_reported_ = dropped_;
 }
 
 }  // namespace ros_io

@@ -18,10 +18,6 @@ Value positive_parameter(const ros::NodeHandle& private_node, const std::string&
   return value;
 }
 
-std::uint64_t skipped(const InputCounters& counters) {
-  return counters.invalid + counters.unordered + counters.gaps;
-}
-
 }  // namespace
 
 StrapdownNavigatorNode::StrapdownNavigatorNode(ros::NodeHandle& node, ros::NodeHandle& private_node) {
@@ -53,6 +49,11 @@ StrapdownNavigatorNode::StrapdownNavigatorNode(ros::NodeHandle& node, ros::NodeH
         node.subscribe("reference_height", 10, &StrapdownNavigatorNode::on_reference_height, this);
   }
 
+  health_.emplace(input_subscriber_.getTopic(), load_input_health_settings(private_node, settings.gap_factor));
+  bad_interval_condition_ = health_->define_condition("increments skipped: interval_s not positive",
+                                                      diagnostic_msgs::DiagnosticStatus::WARN);
+  failed_alignment_condition_ = health_->define_condition("failed alignments (started again)",
+                                                          diagnostic_msgs::DiagnosticStatus::WARN);
   diagnostics_.setHardwareID("strapdown_navigator");
   diagnostics_.add("strapdown navigation", this, &StrapdownNavigatorNode::report);
   diagnostics_timer_ = node.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) {
@@ -71,8 +72,10 @@ void StrapdownNavigatorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message) {
   std::lock_guard<std::mutex> lock(mutex_);
   const auto& w = message->angular_velocity;
   const auto& f = message->linear_acceleration;
+  const Eigen::Vector3d angular_rate_rad_s(w.x, w.y, w.z), specific_force_m_s2(f.x, f.y, f.z);
+  check_input(message->header.stamp, angular_rate_rad_s.allFinite() && specific_force_m_s2.allFinite());
   const auto outcome = session_->add_rates(static_cast<std::int64_t>(message->header.stamp.toNSec()),
-                                           Eigen::Vector3d(w.x, w.y, w.z), Eigen::Vector3d(f.x, f.y, f.z));
+                                           angular_rate_rad_s, specific_force_m_s2);
   after_sample(outcome, message->header.stamp);
 }
 
@@ -84,6 +87,9 @@ void StrapdownNavigatorNode::on_increment(const imu_lab::ImuIncrement::ConstPtr&
   increment.delta_angle_rad = Eigen::Vector3d(a.x, a.y, a.z);
   increment.delta_velocity_m_s = Eigen::Vector3d(v.x, v.y, v.z);
   increment.dt_s = message->interval_s;
+  const bool values_finite = increment.delta_angle_rad.allFinite() && increment.delta_velocity_m_s.allFinite();
+  check_input(message->header.stamp, values_finite);
+  if (values_finite && !(increment.dt_s > 0.0)) health_->count(bad_interval_condition_);
   after_sample(session_->add_increment(static_cast<std::int64_t>(message->header.stamp.toNSec()), increment),
                message->header.stamp);
 }
@@ -97,14 +103,18 @@ void StrapdownNavigatorNode::on_reference_height(const std_msgs::Float64::ConstP
   }
 }
 
+void StrapdownNavigatorNode::check_input(const ros::Time& stamp, bool values_finite) {
+  health_->check_stamp(static_cast<std::int64_t>(stamp.toNSec()));
+  if (!values_finite) health_->count_non_finite();
+}
+
 void StrapdownNavigatorNode::after_sample(SampleOutcome outcome, const ros::Time& stamp) {
+  if (outcome == SampleOutcome::kAlignmentFailed) health_->count(failed_alignment_condition_);
   if (is_skipped(outcome) || outcome == SampleOutcome::kAlignmentFailed) {
     ROS_WARN_THROTTLE(kLogThrottle_s, "strapdown_navigator: sample at %.9f skipped: %s (counted in diagnostics)",
                       stamp.toSec(), session_->last_problem().c_str());
     if (is_skipped(outcome)) return;
   }
-  if (window_samples_++ == 0) window_first_stamp_ = stamp;
-  window_last_stamp_ = std::max(window_last_stamp_, stamp);
   if (session_->alignment() && !alignment_published_) {
     alignment_published_ = true;
     const AlignmentResult& alignment = *session_->alignment();
@@ -135,26 +145,12 @@ void StrapdownNavigatorNode::publish_solution() {
 
 void StrapdownNavigatorNode::report(diagnostic_updater::DiagnosticStatusWrapper& status) {
   const InputCounters& counters = session_->counters();
-  const double span_s = (window_last_stamp_ - window_first_stamp_).toSec();
-  const double input_rate_hz = window_samples_ > 1 && span_s > 0.0 ? (window_samples_ - 1) / span_s : 0.0;
-  const std::uint64_t newly_skipped = skipped(counters) - skipped(reported_counters_);
-  if (window_samples_ == 0) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "no input since the last report");
-  } else if (newly_skipped > 0) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
-                   std::to_string(newly_skipped) + " samples skipped since the last report: " +
-                       session_->last_problem());
-  } else if (!session_->navigating()) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "aligning");
-  } else {
-    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "navigating");
-  }
-  status.add("input rate from stamps [Hz]", input_rate_hz);
+  health_->fill(status, session_->navigating() ? "navigating" : "aligning");
+  if (!session_->last_problem().empty()) status.add("last problem", session_->last_problem());
   status.add("samples used", counters.used);
   status.add("skipped: NaN/Inf or bad interval", counters.invalid);
   status.add("skipped: unordered stamps", counters.unordered);
-  status.add("gaps", counters.gaps);
-  status.add("failed alignments", counters.failed_alignments);
+  status.add("skipped: rate samples after a gap", counters.gaps);
   status.add("alignment", session_->navigating() ? "done (" + session_->alignment()->method + ")"
                                                  : std::to_string(session_->alignment_progress_s()) + " of " +
                                                        std::to_string(session_->settings().alignment.duration_s) + " s");
@@ -162,8 +158,6 @@ void StrapdownNavigatorNode::report(diagnostic_updater::DiagnosticStatusWrapper&
     const Eigen::Vector3d rpy = roll_pitch_yaw_from_quaternion(session_->state().q_body_to_enu) / kDegToRad;
     status.addf("roll, pitch, yaw [deg]", "%.4f, %.4f, %.4f", rpy.x(), rpy.y(), rpy.z());
   }
-  window_samples_ = 0;
-  reported_counters_ = counters;
 }
 
 }  // namespace ros_io

@@ -2,6 +2,7 @@
 
 #include <boost/make_shared.hpp>
 #include <cmath>
+#include <cstdio>
 
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/ros/imu_bag_reader.h"
@@ -13,6 +14,14 @@ namespace {
 
 constexpr double kLogThrottle_s = 5.0;
 using Status = thermal::CompensatedSample::Status;
+
+std::string validity_range_text(const thermal::ThermalModel& model) {
+  const auto& box = model.validity;
+  char text[128];
+  std::snprintf(text, sizeof text, "%.2f .. %.2f degC, %.4f .. %.4f degC/s", box.temperature_min_c,
+                box.temperature_max_c, box.rate_min_c_s, box.rate_max_c_s);
+  return text;
+}
 
 void set_vector(geometry_msgs::Vector3& message, const Eigen::Vector3d& v) { message.x = v.x(), message.y = v.y(), message.z = v.z(); }
 
@@ -38,6 +47,15 @@ ThermalCompensatorNode::ThermalCompensatorNode(ros::NodeHandle& node, ros::NodeH
     second_temperature_subscriber_ =
         node.subscribe("imu/temperature2", queue_size, &ThermalCompensatorNode::on_second_temperature, this);
   }
+  health_.emplace(imu_subscriber_.getTopic(), load_input_health_settings(private_node, 3.0));
+  stale_condition_ = health_->define_condition(
+      "samples not published: stale temperature (no reading within max_temperature_age_s of the stamp)",
+      diagnostic_msgs::DiagnosticStatus::ERROR);
+  clamped_condition_ =
+      health_->define_condition("samples outside the model's validity range " + validity_range_text(compensator_->model()) +
+                                    " (corrected at its edge)", diagnostic_msgs::DiagnosticStatus::WARN);
+  temperature_dropped_condition_ = health_->define_condition(
+      "temperature readings dropped (NaN or not after the previous stamp)", diagnostic_msgs::DiagnosticStatus::WARN);
   diagnostics_.setHardwareID("thermal_compensator");
   diagnostics_.add("thermal compensation", this, &ThermalCompensatorNode::report);
   diagnostics_timer_ = node.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) {
@@ -52,11 +70,11 @@ ThermalCompensatorNode::ThermalCompensatorNode(ros::NodeHandle& node, ros::NodeH
 
 void ThermalCompensatorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message) {
   std::lock_guard<std::mutex> lock(mutex_);
-  ++window_samples_;
   const ImuRecord record = to_imu_record(*message);
+  health_->check_stamp(record.stamp_ns);
+  if (!record.angular_rate_rad_s.allFinite() || !record.specific_force_m_s2.allFinite()) health_->count_non_finite();
   std::vector<thermal::CompensatedSample> ready;
   if (!compensator_->add_imu({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2}, &ready)) {
-    ++dropped_;
     ROS_WARN_THROTTLE(kLogThrottle_s, "thermal_compensator: dropped an IMU sample at %.9f (NaN/Inf, or its stamp is "
                       "not after the previous one; counted in diagnostics)", record.stamp_s);
     return;
@@ -69,7 +87,7 @@ void ThermalCompensatorNode::on_temperature(const sensor_msgs::Temperature::Cons
   std::lock_guard<std::mutex> lock(mutex_);
   std::vector<thermal::CompensatedSample> ready;
   if (!compensator_->add_temperature(message->header.stamp.toSec(), message->temperature, &ready)) {
-    ++dropped_;
+    health_->count(temperature_dropped_condition_);
     ROS_WARN_THROTTLE(kLogThrottle_s, "thermal_compensator: dropped a temperature reading at %.9f (NaN or stamp "
                       "not after the previous one)", message->header.stamp.toSec());
   }
@@ -80,7 +98,9 @@ void ThermalCompensatorNode::on_temperature(const sensor_msgs::Temperature::Cons
 void ThermalCompensatorNode::on_second_temperature(const sensor_msgs::Temperature::ConstPtr& message) {
   std::lock_guard<std::mutex> lock(mutex_);
   std::vector<thermal::CompensatedSample> ready;
-  if (!compensator_->add_second_temperature(message->header.stamp.toSec(), message->temperature, &ready)) ++dropped_;
+  if (!compensator_->add_second_temperature(message->header.stamp.toSec(), message->temperature, &ready)) {
+    health_->count(temperature_dropped_condition_);
+  }
   publish(ready);
 }
 
@@ -89,14 +109,14 @@ void ThermalCompensatorNode::publish(const std::vector<thermal::CompensatedSampl
     const sensor_msgs::Imu::ConstPtr input = waiting_messages_.front();
     waiting_messages_.pop_front();
     if (sample.status == Status::kStale) {
-      ++stale_;
+      health_->count(stale_condition_);
       ROS_WARN_THROTTLE(kLogThrottle_s, "thermal_compensator: no temperature within the maximum age of the IMU stamp "
                         "%.9f; sample not published (is %s being published?)", sample.corrected.stamp_s,
                         temperature_subscriber_.getTopic().c_str());
       continue;
     }
     if (sample.status == Status::kClamped) {
-      ++clamped_;
+      health_->count(clamped_condition_);
       ROS_WARN_THROTTLE(kLogThrottle_s, "thermal_compensator: %.2f degC (rate %.4f degC/s) is outside the model's "
                         "validity range; corrected at its edge", sample.input.temperature_c, sample.input.rate_c_s);
     }
@@ -112,32 +132,12 @@ void ThermalCompensatorNode::publish(const std::vector<thermal::CompensatedSampl
 }
 
 void ThermalCompensatorNode::report(diagnostic_updater::DiagnosticStatusWrapper& status) {
-  if (stale_ > stale_reported_) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::ERROR,
-                   std::to_string(stale_ - stale_reported_) + " samples without a fresh temperature since the last report");
-  } else if (window_samples_ == 0) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "no IMU input since the last report");
-  } else if (clamped_ > clamped_reported_) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
-                   std::to_string(clamped_ - clamped_reported_) + " samples outside the model's validity range");
-  } else if (dropped_ > dropped_reported_) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "input dropped (NaN/Inf or unordered stamps)");
-  } else {
-    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "compensating");
-  }
-  const auto& box = compensator_->model().validity;
+  health_->fill(status, "compensating");
   status.add("model file", model_file_);
-  status.add("validity range degC", std::to_string(box.temperature_min_c) + " .. " + std::to_string(box.temperature_max_c));
+  status.add("validity range", validity_range_text(compensator_->model()));
   status.add("last temperature degC", last_temperature_c_);
   status.add("samples published", published_);
-  status.add("samples clamped (outside range)", clamped_);
-  status.add("samples not published (stale temperature)", stale_);
-  status.add("input dropped", dropped_);
   status.add("samples waiting for temperature", compensator_->waiting());
-  window_samples_ = 0;
-  clamped_reported_ = clamped_;
-  stale_reported_ = stale_;
-  dropped_reported_ = dropped_;
 }
 
 }  // namespace ros_io

@@ -4,8 +4,9 @@
 // Subscribes (relative names; remap them): imu/raw (sensor_msgs/Imu) with input_type: imu, or
 //   imu/increment (imu_lab/ImuIncrement) with input_type: increment.
 // Publishes every publish_period_s (wall clock) once warmed up: allan/gyro and allan/accel
-//   (imu_lab/AllanDeviation), one message per statistic in `statistics`; /diagnostics (input rate
-//   from stamps, tau0, jitter, gaps, NaN/Inf values, duplicate and out-of-order stamps).
+//   (imu_lab/AllanDeviation), one message per statistic in `statistics`; /diagnostics (input
+//   rate from stamps against expected_rate_hz, gaps, NaN/Inf samples, duplicate and out-of-order
+//   stamps: input_health.h; the engine's tau0 and jitter).
 //   allan/noise (imu_lab/NoiseParameters, latched): the identified noise model, after each report.
 // Service: ~write_report (std_srvs/Trigger): the allan tool's report files (allan_report.h) in
 //   report_dir, with the noise identification (allan_noise_report.h) unless identify is false;
@@ -29,6 +30,7 @@
 
 #include "imu_lab/allan/streaming_allan.h"
 #include "imu_lab/ros/allan_monitor_settings.h"
+#include "imu_lab/ros/input_health.h"
 
 namespace imu_lab {
 namespace ros_io {
@@ -60,7 +62,6 @@ class AllanMonitorNode {
   std::int64_t skipped_before_checkpoint_ = 0;
   std::optional<allan::StreamingSnapshot> latest_snapshot_;
   std_msgs::Header last_header_;
-  std::int64_t previous_stamp_ns_ = 0;
   bool finished_ = false;
 
   ros::Subscriber input_subscriber_;
@@ -73,10 +74,7 @@ class AllanMonitorNode {
   diagnostic_updater::Updater diagnostics_;
   ros::WallTimer diagnostics_timer_;
 
-  // Input statistics from header stamps since the last diagnostics report.
-  std::uint64_t window_samples_ = 0;
-  std::int64_t window_first_stamp_ns_ = 0;
-  std::int64_t window_last_stamp_ns_ = 0;
+  std::optional<InputHealth> health_;
 };
 
 }  // namespace ros_io

@@ -4,8 +4,10 @@
 // In the chain it follows thermal compensation (calibration is fitted on compensated data).
 // Subscribes: imu/thermal (sensor_msgs/Imu; remap to any Imu topic). Publishes: imu/corrected
 // (same header and orientation; covariances carried through K^-1 C K^-T), /diagnostics.
-// Parameters: calibration_file (required), queue_size (1000).
-// Samples with NaN/Inf are dropped, logged (throttled) and counted; the node keeps running.
+// Parameters: calibration_file (required), queue_size (1000), expected_rate_hz, gap_factor (3.0):
+// input_health.h.
+// Samples with NaN/Inf are dropped, logged (throttled) and counted; stamps are checked for rate,
+// gaps and order (reported, the samples still corrected); the node keeps running.
 #pragma once
 
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -14,9 +16,11 @@
 
 #include <cstdint>
 #include <mutex>
+#include <optional>
 #include <string>
 
 #include "imu_lab/calib/imu_calibration.h"
+#include "imu_lab/ros/input_health.h"
 
 namespace imu_lab {
 namespace ros_io {
@@ -40,10 +44,8 @@ class CalibrationCorrectorNode {
   ros::Publisher publisher_;
   diagnostic_updater::Updater diagnostics_;
   ros::WallTimer diagnostics_timer_;
+  std::optional<InputHealth> health_;
   std::uint64_t corrected_ = 0;
-  std::uint64_t dropped_ = 0;
-  std::uint64_t dropped_reported_ = 0;
-  std::uint64_t window_samples_ = 0;
 };
 
 }  // namespace ros_io

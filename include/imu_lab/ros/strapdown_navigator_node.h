@@ -16,8 +16,9 @@
 //   free-inertial position is meaningless within seconds; the attitude is unchanged).
 // World frame: local ENU (REP-103) with its origin at the initial position (latitude_deg,
 // longitude_deg, height_m); position in metres, exact on the chosen Earth model (local_enu.h).
+//   expected_rate_hz (input_health.h; gap_factor is the navigation's own).
 // Bad input (NaN, gaps, unordered stamps) is skipped, logged (throttled) and counted in the
-// diagnostics; the node keeps running.
+// diagnostics (input_health.h); the node keeps running.
 #pragma once
 
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -30,8 +31,10 @@
 
 #include <memory>
 #include <mutex>
+#include <optional>
 
 #include "imu_lab/ros/bag_navigation.h"
+#include "imu_lab/ros/input_health.h"
 #include "imu_lab/ros/local_enu.h"
 #include "imu_lab/ros/navigation_messages.h"
 #include "imu_lab/ros/navigation_session.h"
@@ -48,6 +51,8 @@ class StrapdownNavigatorNode {
   void on_imu(const sensor_msgs::Imu::ConstPtr& message);
   void on_increment(const imu_lab::ImuIncrement::ConstPtr& message);
   void on_reference_height(const std_msgs::Float64::ConstPtr& message);
+  // Counts the sample's stamp and values in the diagnostics before the session sees it.
+  void check_input(const ros::Time& stamp, bool values_finite);
   void after_sample(SampleOutcome outcome, const ros::Time& stamp);
   void publish_solution();
   void report(diagnostic_updater::DiagnosticStatusWrapper& status);
@@ -72,11 +77,8 @@ class StrapdownNavigatorNode {
   diagnostic_updater::Updater diagnostics_;
   ros::WallTimer diagnostics_timer_;
 
-  // Input statistics from header stamps since the last diagnostics report.
-  std::uint64_t window_samples_ = 0;
-  ros::Time window_first_stamp_;
-  ros::Time window_last_stamp_;
-  InputCounters reported_counters_;
+  std::optional<InputHealth> health_;
+  std::size_t bad_interval_condition_ = 0, failed_alignment_condition_ = 0;
 };
 
 }  // namespace ros_io

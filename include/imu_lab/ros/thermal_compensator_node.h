@@ -8,10 +8,12 @@
 // Publishes: imu/thermal (sensor_msgs/Imu; header, orientation and covariances copied), /diagnostics.
 // Parameters (private): model_file (required: the YAML written by fit_thermal),
 //   max_temperature_age_s (1.0): farthest a reading may be from a sample's stamp; queue_size (1000).
+//   expected_rate_hz, gap_factor (3.0): input_health.h.
 // Outside the model's validity range the inputs are clamped to its edge (the sample is published,
 // counted, diagnostics WARN). With a stale temperature the sample is not published (an
 // uncorrected sample on imu/thermal would mislead everything downstream): counted, logged
-// (throttled), diagnostics ERROR. Unordered or non-finite input is dropped and counted.
+// (throttled), diagnostics ERROR. Unordered or non-finite input is dropped and counted; rate and
+// gaps are reported (input_health.h).
 #pragma once
 
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -23,9 +25,11 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "imu_lab/ros/input_health.h"
 #include "imu_lab/thermal/thermal_compensator.h"
 
 namespace imu_lab {
@@ -51,8 +55,9 @@ class ThermalCompensatorNode {
   ros::Subscriber imu_subscriber_, temperature_subscriber_, second_temperature_subscriber_;
   diagnostic_updater::Updater diagnostics_;
   ros::WallTimer diagnostics_timer_;
-  std::uint64_t published_ = 0, clamped_ = 0, stale_ = 0, dropped_ = 0;
-  std::uint64_t clamped_reported_ = 0, stale_reported_ = 0, dropped_reported_ = 0, window_samples_ = 0;
+  std::optional<InputHealth> health_;
+  std::size_t stale_condition_ = 0, clamped_condition_ = 0, temperature_dropped_condition_ = 0;
+  std::uint64_t published_ = 0;
   double last_temperature_c_ = 0.0;
 };
 
