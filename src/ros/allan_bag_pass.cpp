@@ -1,7 +1,5 @@
 #include "imu_lab/ros/allan_bag_pass.h"
 
-#include <malloc.h>
-
 #include <algorithm>
 #include <exception>
 #include <thread>
@@ -25,8 +23,7 @@ using SampleBatch = std::vector<AllanSample>;
 // Thrown inside the reader's callback to stop the bag iteration when the consumer gave up.
 struct ReadingCancelled {};
 
-void read_batches(const std::string& bag_path, const std::string& topic, AllanInput input,
-                  BoundedQueue<SampleBatch>& queue) {
+void read_batches(OpenBag& bag, const std::string& topic, AllanInput input, BoundedQueue<SampleBatch>& queue) {
   SampleBatch batch;
   batch.reserve(kBatchSamples);
   const auto add = [&](const AllanSample& sample) {
@@ -37,18 +34,11 @@ void read_batches(const std::string& bag_path, const std::string& topic, AllanIn
     batch.reserve(kBatchSamples);
   };
   if (input == AllanInput::kRate) {
-    for_each_imu(bag_path, topic, [&](const ImuRecord& record) { add(to_allan_sample(record)); });
+    bag.for_each_imu(topic, [&](const ImuRecord& record) { add(to_allan_sample(record)); });
   } else {
-    for_each_increment(bag_path, topic, [&](const IncrementRecord& record) { add(to_allan_sample(record)); });
+    bag.for_each_increment(topic, [&](const IncrementRecord& record) { add(to_allan_sample(record)); });
   }
   if (!batch.empty()) queue.push(std::move(batch));
-}
-
-std::size_t topic_message_count(const std::string& bag_path, const std::string& topic) {
-  for (const TopicInfo& info : list_topics(bag_path)) {
-    if (info.name == topic) return info.message_count;
-  }
-  return 0;
 }
 
 }  // namespace
@@ -57,9 +47,12 @@ AllanBagPassResult run_allan_bag_pass(const std::string& bag_path, const AllanBa
   AllanBagPassResult result;
   result.bag_path = bag_path;
   result.input = options.input;
-  result.topic = choose_topic(bag_path, options.topic, allan_input_datatype(options.input));
+  // Opened once: each opening reads the bag's whole index again.
+  OpenBag bag(bag_path);
+  const TopicInfo topic = bag.choose_topic(options.topic, allan_input_datatype(options.input));
+  result.topic = topic.name;
   const std::string where = "bag " + bag_path + ", topic " + result.topic;
-  const std::size_t total = topic_message_count(bag_path, result.topic);
+  const std::size_t total = topic.message_count;
   if (total < kMinimumMessages) {
     throw InputError(where + " has " + std::to_string(total) + " messages; an Allan analysis needs at least " +
                      std::to_string(kMinimumMessages) + " (and thousands for useful curves)");
@@ -69,16 +62,12 @@ AllanBagPassResult run_allan_bag_pass(const std::string& bag_path, const AllanBa
   result.engine.input_kind = engine_input_kind(options.input);
   result.engine.warm_up_sample_count = std::min(result.engine.warm_up_sample_count, total);
   allan::StreamingAllan engine(result.engine);
-  // rosbag's index of a long bag is large (~70 bytes a message) and the reader thread reads it
-  // again into its own malloc arena: hand the copy just freed back to the system first, or the
-  // peak memory doubles.
-  ::malloc_trim(0);
 
   BoundedQueue<SampleBatch> queue(kQueuedBatches);
   std::exception_ptr reader_error;
   std::thread reader([&] {
     try {
-      read_batches(bag_path, result.topic, options.input, queue);
+      read_batches(bag, result.topic, options.input, queue);
     } catch (const ReadingCancelled&) {
     } catch (...) {
       reader_error = std::current_exception();

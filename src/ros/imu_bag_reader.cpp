@@ -40,10 +40,8 @@ Eigen::Vector3d to_eigen(const geometry_msgs::Vector3& vector) { return {vector.
 // Streams one topic's messages of type Message in bag order; every reader reports a wrong type,
 // a truncated or a corrupt bag the same way.
 template <class Message>
-std::size_t for_each_message(const std::string& bag_path, const std::string& topic, const std::string& datatype,
-                             const std::function<void(const Message&)>& on_message) {
-  rosbag::Bag bag;
-  open_for_reading(bag, bag_path);
+std::size_t for_each_message(rosbag::Bag& bag, const std::string& bag_path, const std::string& topic,
+                             const std::string& datatype, const std::function<void(const Message&)>& on_message) {
   std::size_t count = 0;
   try {
     rosbag::View view(bag, rosbag::TopicQuery(topic));
@@ -66,6 +64,14 @@ std::size_t for_each_message(const std::string& bag_path, const std::string& top
   return count;
 }
 
+template <class Message>
+std::size_t for_each_message(const std::string& bag_path, const std::string& topic, const std::string& datatype,
+                             const std::function<void(const Message&)>& on_message) {
+  rosbag::Bag bag;
+  open_for_reading(bag, bag_path);
+  return for_each_message(bag, bag_path, topic, datatype, on_message);
+}
+
 }  // namespace
 
 ImuRecord to_imu_record(const sensor_msgs::Imu& message) {
@@ -86,69 +92,88 @@ IncrementRecord to_increment_record(const imu_lab::ImuIncrement& message) {
   return record;
 }
 
-std::vector<TopicInfo> list_topics(const std::string& bag_path) {
-  rosbag::Bag bag;
-  open_for_reading(bag, bag_path);
+OpenBag::OpenBag(const std::string& bag_path) : path_(bag_path), bag_(std::make_unique<rosbag::Bag>()) {
+  open_for_reading(*bag_, bag_path);
+}
+
+OpenBag::~OpenBag() = default;
+
+std::vector<TopicInfo> OpenBag::topics() const {
   std::map<std::string, TopicInfo> by_name;
   try {
-    rosbag::View view(bag);
+    rosbag::View view(*bag_);
     for (const rosbag::ConnectionInfo* connection : view.getConnections()) {
       TopicInfo& info = by_name[connection->topic];
       info.name = connection->topic;
       info.datatype = connection->datatype;
     }
     for (auto& entry : by_name) {
-      rosbag::View topic_view(bag, rosbag::TopicQuery(entry.first));
+      rosbag::View topic_view(*bag_, rosbag::TopicQuery(entry.first));
       entry.second.message_count = topic_view.size();
     }
   } catch (const rosbag::BagException& error) {
-    throw InputError("cannot read bag " + bag_path + ": " + error.what());
+    throw InputError("cannot read bag " + path_ + ": " + error.what());
   }
   std::vector<TopicInfo> topics;
   for (auto& entry : by_name) topics.push_back(entry.second);
   return topics;
 }
 
-std::string choose_imu_topic(const std::string& bag_path, const std::string& requested) {
-  return choose_topic(bag_path, requested, kImuType);
-}
-
-std::string choose_topic(const std::string& bag_path, const std::string& requested, const std::string& datatype) {
-  const std::vector<TopicInfo> topics = list_topics(bag_path);
+TopicInfo OpenBag::choose_topic(const std::string& requested, const std::string& datatype) const {
+  const std::vector<TopicInfo> topics = this->topics();
   if (!requested.empty()) {
     for (const auto& topic : topics) {
       if (topic.name != requested) continue;
       if (topic.datatype != datatype) {
-        throw InputError("bag " + bag_path + ": topic " + requested + " carries " + topic.datatype +
+        throw InputError("bag " + path_ + ": topic " + requested + " carries " + topic.datatype +
                          ", not " + datatype + "; topics in the bag:" + describe(topics));
       }
-      return requested;
+      return topic;
     }
-    throw InputError("bag " + bag_path + " has no topic " + requested + "; topics in the bag:" + describe(topics));
+    throw InputError("bag " + path_ + " has no topic " + requested + "; topics in the bag:" + describe(topics));
   }
   std::vector<TopicInfo> candidates;
   for (const auto& topic : topics) {
     if (topic.datatype == datatype) candidates.push_back(topic);
   }
-  if (candidates.size() == 1) return candidates.front().name;
+  if (candidates.size() == 1) return candidates.front();
   if (candidates.empty()) {
-    throw InputError("bag " + bag_path + " has no " + datatype + " topic; topics in the bag:" + describe(topics));
+    throw InputError("bag " + path_ + " has no " + datatype + " topic; topics in the bag:" + describe(topics));
   }
-  throw InputError("bag " + bag_path + " has several " + datatype + " topics; choose one with --topic:" +
+  throw InputError("bag " + path_ + " has several " + datatype + " topics; choose one with --topic:" +
                    describe(candidates));
+}
+
+std::size_t OpenBag::for_each_imu(const std::string& topic, const std::function<void(const ImuRecord&)>& on_record) {
+  return for_each_message<sensor_msgs::Imu>(*bag_, path_, topic, kImuType,
+                                            [&](const sensor_msgs::Imu& message) { on_record(to_imu_record(message)); });
+}
+
+std::size_t OpenBag::for_each_increment(const std::string& topic,
+                                        const std::function<void(const IncrementRecord&)>& on_record) {
+  return for_each_message<imu_lab::ImuIncrement>(
+      *bag_, path_, topic, "imu_lab/ImuIncrement",
+      [&](const imu_lab::ImuIncrement& message) { on_record(to_increment_record(message)); });
+}
+
+std::vector<TopicInfo> list_topics(const std::string& bag_path) { return OpenBag(bag_path).topics(); }
+
+std::string choose_imu_topic(const std::string& bag_path, const std::string& requested) {
+  return choose_topic(bag_path, requested, kImuType);
+}
+
+std::string choose_topic(const std::string& bag_path, const std::string& requested, const std::string& datatype) {
+  return OpenBag(bag_path).choose_topic(requested, datatype).name;
 }
 
 std::size_t for_each_imu(const std::string& bag_path, const std::string& topic,
                          const std::function<void(const ImuRecord&)>& on_record) {
-  return for_each_message<sensor_msgs::Imu>(
-      bag_path, topic, kImuType, [&](const sensor_msgs::Imu& message) { on_record(to_imu_record(message)); });
+  return OpenBag(bag_path).for_each_imu(topic, on_record);
 }
 
 std::size_t for_each_increment(const std::string& bag_path, const std::string& topic,
                                const std::function<void(const IncrementRecord&)>& on_record) {
-  return for_each_message<imu_lab::ImuIncrement>(
-      bag_path, topic, "imu_lab/ImuIncrement",
-      [&](const imu_lab::ImuIncrement& message) { on_record(to_increment_record(message)); });
+  return OpenBag(bag_path).for_each_increment(topic, on_record);
 }
 
 std::size_t for_each_truth(const std::string& bag_path, const std::string& topic,

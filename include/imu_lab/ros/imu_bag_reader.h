@@ -11,8 +11,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
+
+namespace rosbag {
+class Bag;
+}
 
 namespace imu_lab {
 namespace ros_io {
@@ -54,6 +59,31 @@ struct TopicInfo {
   std::string name;
   std::string datatype;
   std::size_t message_count = 0;
+};
+
+// A bag opened once for several questions. Opening reads the bag's whole index (about 70 bytes of
+// memory and a good part of the read time per message), so a tool that lists the topics, counts
+// one and streams it should do all three on one OpenBag. Not thread-safe: one thread at a time.
+class OpenBag {
+ public:
+  // Throws InputError if the bag cannot be read.
+  explicit OpenBag(const std::string& bag_path);
+  ~OpenBag();
+  OpenBag(const OpenBag&) = delete;
+  OpenBag& operator=(const OpenBag&) = delete;
+
+  const std::string& path() const { return path_; }
+  std::vector<TopicInfo> topics() const;
+  // As the free choose_topic below, with the topic's type and message count.
+  TopicInfo choose_topic(const std::string& requested, const std::string& datatype) const;
+  // As the free for_each_* below.
+  std::size_t for_each_imu(const std::string& topic, const std::function<void(const ImuRecord&)>& on_record);
+  std::size_t for_each_increment(const std::string& topic,
+                                 const std::function<void(const IncrementRecord&)>& on_record);
+
+ private:
+  std::string path_;
+  std::unique_ptr<rosbag::Bag> bag_;
 };
 
 // The records of one message, as the readers below give them; live nodes use the same conversion.
