@@ -1,20 +1,29 @@
-// The allan tool's cost against merely reading the bag: for one hour of 400 Hz emulated data
-// (made with the emulate tool if absent), the wall time of a loop that only reads and
-// deserialises the messages with the rosbag API, then of the allan pass plus its report files
-// (no plot), then the read loop again; the ratio is to the faster read. Also the peak resident
-// set (getrusage). Not a test: run by hand.
+// The allan tool's cost against merely reading the bag, all measured in one run: for one hour of
+// 400 Hz emulated data (made with the emulate tool if absent)
+//   1. a loop that only reads and deserialises the messages with the rosbag API;
+//   2. the Allan pass (run_allan_bag_pass: bag reader thread, streaming engine, final snapshot)
+//      plus its report files (nine CSVs and the YAML summary), without identification or plot:
+//      the figure;
+//   3. the noise identification (Ceres fits of both triads and their files) on that snapshot;
+//   4. the allan tool itself as a user runs it (a child process: pass, files, identification and
+//      the matplotlib plot), with its peak resident set;
+//   5. the read loop again; ratios are to the faster read.
+// Wall time and CPU time (every thread) are both printed: on a shared machine the wall time also
+// measures the neighbours' load. Not a test: run by hand.
 // The engine's exact range sets most of its per-sample cost, so it can be given.
 //   bench/allan_vs_read [bag=/tmp/imu_lab_bench_400hz_1h.bag] [exact_max_averaging_factor=1000]
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
 #include <sensor_msgs/Imu.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
@@ -25,13 +34,10 @@ namespace {
 
 constexpr double kRate_hz = 400.0;
 constexpr double kDuration_s = 3600.0;
+const char* const kReportDirectory = "/tmp/imu_lab_bench_allan_report";
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// The emulate tool, as a user makes a bag (its temperature topic rides along; both loops below
-// read /imu/raw only).
+// The emulate tool, as a user makes a bag (its temperature topic rides along; every step below
+// reads /imu/raw only).
 void make_bag(const std::string& path) {
   const std::string command = "rosrun imu_lab emulate --profile tactical_mems --scenario static --duration-s " +
                               std::to_string(kDuration_s) + " --rate-hz " + std::to_string(kRate_hz) +
@@ -39,23 +45,39 @@ void make_bag(const std::string& path) {
   if (std::system(command.c_str()) != 0) throw std::runtime_error("cannot make " + path + " with: " + command);
 }
 
-// What any consumer of the bag pays: iterate and deserialise every message.
-// CPU time of the whole process (every thread): on a shared machine the wall time also measures
-// the neighbours' load, so both are printed.
 double process_cpu_s() {
   timespec now{};
   ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
   return now.tv_sec + now.tv_nsec * 1e-9;
 }
 
-double peak_resident_mb() {
+double children_cpu_s() {
   rusage usage{};
-  ::getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0;
+  ::getrusage(RUSAGE_CHILDREN, &usage);
+  return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
 }
 
-double read_only_s(const std::string& path, std::size_t* count) {
-  const auto started = std::chrono::steady_clock::now();
+// Wall and CPU time of one step.
+struct Cost {
+  double wall_s = 0.0;
+  double cpu_s = 0.0;
+};
+
+class Stopwatch {
+ public:
+  Cost elapsed() const {
+    return {std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count(),
+            process_cpu_s() + children_cpu_s() - cpu_start_s_};
+  }
+
+ private:
+  std::chrono::steady_clock::time_point wall_start_ = std::chrono::steady_clock::now();
+  double cpu_start_s_ = process_cpu_s() + children_cpu_s();
+};
+
+// What any consumer of the bag pays: iterate and deserialise every message.
+Cost read_only(const std::string& path, std::size_t* count) {
+  const Stopwatch watch;
   rosbag::Bag bag(path, rosbag::bagmode::Read);
   rosbag::View view(bag, rosbag::TopicQuery("/imu/raw"));
   double checksum = 0.0;
@@ -65,48 +87,75 @@ double read_only_s(const std::string& path, std::size_t* count) {
     checksum += message->angular_velocity.x;
     ++*count;
   }
-  const double elapsed = seconds_since(started);
+  const Cost cost = watch.elapsed();
   if (checksum == 12345.678) std::printf(" ");  // keeps the loop from being optimised away
-  return elapsed;
+  return cost;
 }
+
+// The allan executable next to this one (both live in devel/lib/imu_lab).
+std::string allan_tool_path() {
+  return (std::filesystem::read_symlink("/proc/self/exe").parent_path() / "allan").string();
+}
+
+void print_step(const char* name, const Cost& cost, const Cost& read) {
+  std::printf("%-58s %6.2f s wall %6.2f s CPU   ratio %5.2f wall %5.2f CPU\n", name, cost.wall_s, cost.cpu_s,
+              cost.wall_s / read.wall_s, cost.cpu_s / read.cpu_s);
+}
+
+Cost operator+(const Cost& a, const Cost& b) { return {a.wall_s + b.wall_s, a.cpu_s + b.cpu_s}; }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::string bag = argc > 1 ? argv[1] : "/tmp/imu_lab_bench_400hz_1h.bag";
   if (!std::ifstream(bag).good()) make_bag(bag);
+  const int exact_max_averaging_factor = argc > 2 ? std::atoi(argv[2]) : 1000;
 
   std::size_t count = 0;
-  double cpu_mark_s = process_cpu_s();
-  const double first_read_s = read_only_s(bag, &count);
-  const double read_cpu_s = process_cpu_s() - cpu_mark_s;
-  const double read_peak_mb = peak_resident_mb();
-  cpu_mark_s = process_cpu_s();
-  const auto started = std::chrono::steady_clock::now();
+  const Cost first_read = read_only(bag, &count);
+
   imu_lab::ros_io::AllanBagPassOptions options;
   options.topic = "/imu/raw";
-  if (argc > 2) options.engine.exact_max_averaging_factor = std::atoi(argv[2]);
+  options.engine.exact_max_averaging_factor = exact_max_averaging_factor;
+  Stopwatch watch;
   const auto result = imu_lab::ros_io::run_allan_bag_pass(bag, options);
-  const double pass_s = seconds_since(started);
+  const Cost pass = watch.elapsed();
   imu_lab::ros_io::AllanRunDescription run;
   run.bag = bag;
   run.topic = result.topic;
   run.engine = result.engine;
-  imu_lab::ros_io::write_allan_report("/tmp/imu_lab_bench_allan_report", run, result.snapshot, false);
-  const double allan_s = seconds_since(started);
-  const double allan_cpu_s = process_cpu_s() - cpu_mark_s;
-  const double second_read_s = read_only_s(bag, &count);
-  const double read_s = std::min(first_read_s, second_read_s);
+  imu_lab::ros_io::AllanIdentifyOptions no_identify;
+  no_identify.enabled = false;
+  watch = Stopwatch();
+  imu_lab::ros_io::write_allan_report(kReportDirectory, run, result.snapshot, false, no_identify);
+  const Cost files = watch.elapsed();
+  watch = Stopwatch();
+  imu_lab::ros_io::write_allan_noise_report(kReportDirectory, run, result.snapshot,
+                                            imu_lab::ros_io::AllanIdentifyOptions());
+  const Cost identification = watch.elapsed();
 
-  rusage usage{};
-  ::getrusage(RUSAGE_SELF, &usage);
-  std::printf("%zu messages (%.0f s at %.0f Hz)\n", count, kDuration_s, kRate_hz);
-  std::printf("read and deserialise only: %.2f s and %.2f s\n", first_read_s, second_read_s);
-  std::printf("allan pass (exact up to m = %d): %.2f s; with the report files: %.2f s\n",
-              options.engine.exact_max_averaging_factor, pass_s, allan_s);
-  std::printf("ratio allan / read-only: %.2f in wall time (target < 1.5), %.2f in CPU time (%.2f s / %.2f s)\n",
-              allan_s / read_s, allan_cpu_s / read_cpu_s, allan_cpu_s, read_cpu_s);
-  std::printf("peak resident set: %.1f MB after the read-only loop (rosbag's index), %.1f MB at the end\n",
-              read_peak_mb, usage.ru_maxrss / 1024.0);
+  const std::string tool_command = allan_tool_path() + " " + bag + " --topic /imu/raw --exact-m " +
+                                   std::to_string(exact_max_averaging_factor) + " --out " + kReportDirectory +
+                                   " > /dev/null 2>&1";
+  watch = Stopwatch();
+  if (std::system(tool_command.c_str()) != 0) throw std::runtime_error("failed: " + tool_command);
+  const Cost tool = watch.elapsed();
+  rusage children{};
+  ::getrusage(RUSAGE_CHILDREN, &children);
+
+  const Cost second_read = read_only(bag, &count);
+  const Cost read{std::min(first_read.wall_s, second_read.wall_s), std::min(first_read.cpu_s, second_read.cpu_s)};
+  std::printf("%zu messages (%.0f s at %.0f Hz), engine exact up to m = %d\n", count, kDuration_s, kRate_hz,
+              exact_max_averaging_factor);
+  std::printf("read and deserialise only: %.2f s and %.2f s wall, %.2f s and %.2f s CPU\n", first_read.wall_s,
+              second_read.wall_s, first_read.cpu_s, second_read.cpu_s);
+  print_step("allan pass (reader thread, engine, snapshot)", pass, read);
+  print_step("allan pass + CSV and summary files (target < 1.5)", pass + files, read);
+  print_step("noise identification and its files", identification, read);
+  print_step("allan tool (child: files, identification, plot)", tool, read);
+  rusage self{};
+  ::getrusage(RUSAGE_SELF, &self);
+  std::printf("peak resident set: allan tool %.1f MB; this process (read loop, pass) %.1f MB\n",
+              children.ru_maxrss / 1024.0, self.ru_maxrss / 1024.0);
   return 0;
 }
