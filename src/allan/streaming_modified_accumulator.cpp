@@ -58,9 +58,12 @@ double slide_window(const double* x, std::int64_t count, std::ptrdiff_t m, doubl
     const double* p = x + k;
     const LaneVector steps =
         load_lanes(p) - 3.0 * load_lanes(p - m) + 3.0 * load_lanes(p - 2 * m) - load_lanes(p - 3 * m);
-    const LaneVector windows = broadcast_lane(window) + running_sums(steps);
-    terms.add(windows);
-    window = windows[BlockSums::kLanes - 1];
+    const LaneVector sums = running_sums(steps);
+    terms.add(broadcast_lane(window) + sums);
+    // The last lane's addition again, as a scalar: the same rounding, so the same bits, but the
+    // serial chain from one window to the next is one scalar addition instead of a vector
+    // addition, a lane extraction and a broadcast.
+    window += sums[BlockSums::kLanes - 1];
   }
   for (; k < count; ++k) {
     const double* p = x + k;
