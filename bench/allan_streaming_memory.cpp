@@ -3,7 +3,7 @@
 // the end, plus the process's peak resident set, and checks the accuracy of the running sums after
 // the whole run against an independent long-double OAVAR of the accelerometer z channel (offset
 // 9.81) at a few m. Not a test: run by hand.
-//   bench/allan_streaming_memory [hours=24] [rate_hz=1000]
+//   bench/allan_streaming_memory [hours=24] [rate_hz=1000] [exact_max_averaging_factor=1000]
 #include <sys/resource.h>
 
 #include <array>
@@ -73,6 +73,7 @@ int main(int argc, char** argv) {
   const double hours = argc > 1 ? std::atof(argv[1]) : 24.0;
   const double rate_hz = argc > 2 ? std::atof(argv[2]) : 1000.0;
   imu_lab::allan::StreamingOptions options;  // 6 channels, m_exact 1000, 10 points/decade, tau <= 1e4 s
+  if (argc > 3) options.exact_max_averaging_factor = std::atoi(argv[3]);
   StreamingAllan engine(options);
   ImuSignal signal(2024);
   LongDoubleAllan reference;

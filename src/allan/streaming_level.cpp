@@ -22,7 +22,7 @@ ResolutionLevel::ResolutionLevel(int level, std::vector<int> averaging_factors)
       averaging_factors_(std::move(averaging_factors)),
       head_capacity_(2 * static_cast<std::size_t>(largest(averaging_factors_))),
       // Hadamard and modified Allan reach back 3m points.
-      ring_(3 * static_cast<std::size_t>(largest(averaging_factors_)) + 1),
+      ring_(3 * static_cast<std::size_t>(largest(averaging_factors_)) + 1, phase_block_points(level)),
       allan_(kAllanOrder, averaging_factors_),
       hadamard_(kHadamardOrder, averaging_factors_),
       modified_(averaging_factors_),

@@ -11,7 +11,8 @@ namespace allan {
 
 // Bump whenever the payload layout changes: older files are then refused, never misread.
 // 3: phase rings are linear block windows; their stored points and processed count are saved.
-constexpr std::uint64_t kStreamingCheckpointVersion = 3;
+// 4: coarser levels have smaller rings (phase_block_points), so their blocks end elsewhere.
+constexpr std::uint64_t kStreamingCheckpointVersion = 4;
 
 void write_checkpoint_file(const std::string& path, const std::string& payload);
 std::string read_checkpoint_file(const std::string& path);

@@ -12,8 +12,9 @@
 // - Noise type: Stable32's rule for frequency data (evaluate_frequency), also for increments, so
 //   the two input kinds give identical points.
 //
-// Memory per channel: per pyramid level a phase window of 3 m_max + 1 points plus room for a
-// block of kPhaseBlockPoints (4096) new ones, and a head of 2 m_max doubles plus a few sums per tau; one history of at most
+// Memory per channel: per pyramid level L a phase window of 3 m_max + 1 points plus room for a
+// block of 4096 / 2^L (at least 64) new ones (phase_block_points), and a head of 2 m_max doubles
+// plus a few sums per tau; one history of at most
 // 30 m_exact + 1 points twice (the B1 noise-type fallback, streaming_phase_history.h); one map
 // entry per distinct segment length (a gap-free run holds one). About 1.3 MB per channel with the
 // defaults (m_exact 1000, 10 taus per decade, tau up to 1e4 s at 1 kHz).

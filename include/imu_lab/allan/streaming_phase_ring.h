@@ -14,15 +14,28 @@
 namespace imu_lab {
 namespace allan {
 
-// Room for new points beyond the kept history: the most a level appends before its accumulators
-// must run (ResolutionLevel), which also bounds the terms of one plain partial sum (block_sums.h).
+// Room for new points beyond the kept history at level 0: the most a level appends before its
+// accumulators must run (ResolutionLevel), which also bounds the terms of one plain partial sum
+// (block_sums.h).
 constexpr std::size_t kPhaseBlockPoints = 4096;
+// The least room of any level: a few vector iterations per block.
+constexpr std::size_t kMinimumPhaseBlockPoints = 64;
+
+// Level L receives a point every 2^L samples, so room for kPhaseBlockPoints / 2^L points has every
+// level run its block loops once per kPhaseBlockPoints input samples: the same per-sample
+// overhead as level 0, while the room of the many coarse levels a small exact range needs
+// (m_exact 64: 16 levels at 400 Hz up to 1e4 s) no longer costs 32 kB each.
+inline std::size_t phase_block_points(int level) {
+  return std::max(kMinimumPhaseBlockPoints, kPhaseBlockPoints >> std::min(level, 62));
+}
 
 class PhaseRing {
  public:
-  // history: how many of the newest points stay addressable (the largest reach back plus one).
-  explicit PhaseRing(std::size_t history) : history_(std::max<std::size_t>(history, 1)) {
-    values_.assign(history_ + kPhaseBlockPoints, 0.0);
+  // history: how many of the newest points stay addressable (the largest reach back plus one);
+  // block_points: room for new points beyond it (phase_block_points).
+  explicit PhaseRing(std::size_t history, std::size_t block_points = kPhaseBlockPoints)
+      : history_(std::max<std::size_t>(history, 1)) {
+    values_.assign(history_ + std::max<std::size_t>(block_points, 1), 0.0);
   }
 
   void clear() {
