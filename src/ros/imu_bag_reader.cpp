@@ -10,6 +10,7 @@
 #include <map>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_wire_fields.h"
 
 namespace imu_lab {
 namespace ros_io {
@@ -37,6 +38,16 @@ std::string describe(const std::vector<TopicInfo>& topics) {
 
 Eigen::Vector3d to_eigen(const geometry_msgs::Vector3& vector) { return {vector.x, vector.y, vector.z}; }
 
+ImuRecord make_imu_record(const ros::Time& stamp, const geometry_msgs::Vector3& angular_velocity,
+                          const geometry_msgs::Vector3& linear_acceleration) {
+  ImuRecord record;
+  record.stamp_s = stamp.toSec();
+  record.stamp_ns = static_cast<std::int64_t>(stamp.toNSec());
+  record.angular_rate_rad_s = to_eigen(angular_velocity);
+  record.specific_force_m_s2 = to_eigen(linear_acceleration);
+  return record;
+}
+
 // Streams one topic's messages of type Message in bag order; every reader reports a wrong type,
 // a truncated or a corrupt bag the same way.
 template <class Message>
@@ -46,7 +57,7 @@ std::size_t for_each_message(rosbag::Bag& bag, const std::string& bag_path, cons
   try {
     rosbag::View view(bag, rosbag::TopicQuery(topic));
     for (const rosbag::MessageInstance& instance : view) {
-      const typename Message::ConstPtr message = instance.template instantiate<Message>();
+      const boost::shared_ptr<const Message> message = instance.template instantiate<Message>();
       if (!message) {
         throw InputError("bag " + bag_path + ": topic " + topic + " carries " + instance.getDataType() + ", not " +
                          datatype);
@@ -75,12 +86,7 @@ std::size_t for_each_message(const std::string& bag_path, const std::string& top
 }  // namespace
 
 ImuRecord to_imu_record(const sensor_msgs::Imu& message) {
-  ImuRecord record;
-  record.stamp_s = message.header.stamp.toSec();
-  record.stamp_ns = static_cast<std::int64_t>(message.header.stamp.toNSec());
-  record.angular_rate_rad_s = to_eigen(message.angular_velocity);
-  record.specific_force_m_s2 = to_eigen(message.linear_acceleration);
-  return record;
+  return make_imu_record(message.header.stamp, message.angular_velocity, message.linear_acceleration);
 }
 
 IncrementRecord to_increment_record(const imu_lab::ImuIncrement& message) {
@@ -145,8 +151,9 @@ TopicInfo OpenBag::choose_topic(const std::string& requested, const std::string&
 }
 
 std::size_t OpenBag::for_each_imu(const std::string& topic, const std::function<void(const ImuRecord&)>& on_record) {
-  return for_each_message<sensor_msgs::Imu>(*bag_, path_, topic, kImuType,
-                                            [&](const sensor_msgs::Imu& message) { on_record(to_imu_record(message)); });
+  return for_each_message<ImuWireFields>(*bag_, path_, topic, kImuType, [&](const ImuWireFields& message) {
+    on_record(make_imu_record(message.stamp, message.angular_velocity, message.linear_acceleration));
+  });
 }
 
 std::size_t OpenBag::for_each_increment(const std::string& topic,
