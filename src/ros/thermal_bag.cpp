@@ -2,6 +2,7 @@
 
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/ros/strict_imu_reading.h"
 
 namespace imu_lab {
 namespace ros_io {
@@ -40,7 +41,7 @@ ThermalBagWindows read_thermal_windows(const std::string& bag_path, const Therma
   const bool with_second = !topics.second_temperature.empty();
   if (with_second) read_temperatures(bag_path, topics.second_temperature, "second thermosensor", &second_temperature);
   thermal::ThermalWindowAverager averager(settings, temperature, with_second ? &second_temperature : nullptr);
-  out.imu_messages = for_each_imu(bag_path, out.imu_topic, [&](const ImuRecord& record) {
+  out.imu_messages = for_each_imu_strictly(bag_path, out.imu_topic, [&](const ImuRecord& record) {
     averager.add({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2});
   });
   out.windows = averager.finish();

@@ -3,6 +3,7 @@
 // values of a sensor profile when one is given (e.g. the profile the bag was emulated with).
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -16,6 +17,7 @@
 #include "imu_lab/emulator/analytic_profile_avar.h"
 #include "imu_lab/ros/config_paths.h"
 #include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/ros/strict_imu_reading.h"
 
 namespace {
 
@@ -30,6 +32,33 @@ double standard_deviation(const std::vector<double>& values, double mean) {
   double sum = 0.0;
   for (double v : values) sum += (v - mean) * (v - mean);
   return std::sqrt(sum / (values.size() - 1));
+}
+
+// The median interval is the sample period even where samples are missing; an interval over
+// kIrregularFactor periods (a gap, a slower rate) or under 1/kIrregularFactor (a faster rate) is
+// irregular, which the batch Allan deviation cannot see.
+constexpr double kIrregularFactor = 1.5;
+
+struct SampleTiming {
+  double tau0_s = 0.0;
+  std::size_t irregular_count = 0;
+  double shortest_interval_s = 0.0, longest_interval_s = 0.0;
+};
+
+SampleTiming timing_of(const std::vector<std::int64_t>& stamps_ns) {
+  std::vector<double> intervals_s;
+  for (std::size_t k = 1; k < stamps_ns.size(); ++k) intervals_s.push_back((stamps_ns[k] - stamps_ns[k - 1]) * 1e-9);
+  SampleTiming timing;
+  const auto [shortest, longest] = std::minmax_element(intervals_s.begin(), intervals_s.end());
+  timing.shortest_interval_s = *shortest;
+  timing.longest_interval_s = *longest;
+  auto middle = intervals_s.begin() + intervals_s.size() / 2;
+  std::nth_element(intervals_s.begin(), middle, intervals_s.end());
+  timing.tau0_s = *middle;
+  timing.irregular_count = std::count_if(intervals_s.begin(), intervals_s.end(), [&](double interval_s) {
+    return interval_s > kIrregularFactor * timing.tau0_s || interval_s * kIrregularFactor < timing.tau0_s;
+  });
+  return timing;
 }
 
 }  // namespace
@@ -49,11 +78,9 @@ int main(int argc, char** argv) {
   return imu_lab::run_tool_main("bag_summary", [&] {
     topic = imu_lab::ros_io::choose_imu_topic(bag_path, topic);
     std::array<std::vector<double>, 6> channels;
-    double first_stamp_s = 0.0;
-    double last_stamp_s = 0.0;
-    imu_lab::ros_io::for_each_imu(bag_path, topic, [&](const imu_lab::ros_io::ImuRecord& record) {
-      if (channels[0].empty()) first_stamp_s = record.stamp_s;
-      last_stamp_s = record.stamp_s;
+    std::vector<std::int64_t> stamps_ns;
+    imu_lab::ros_io::for_each_imu_strictly(bag_path, topic, [&](const imu_lab::ros_io::ImuRecord& record) {
+      stamps_ns.push_back(record.stamp_ns);
       for (int axis = 0; axis < 3; ++axis) {
         channels[axis].push_back(record.angular_rate_rad_s[axis]);
         channels[axis + 3].push_back(record.specific_force_m_s2[axis]);
@@ -61,9 +88,16 @@ int main(int argc, char** argv) {
     });
     const std::size_t count = channels[0].size();
     if (count < 3) throw imu_lab::InputError("bag " + bag_path + ": topic " + topic + " has too few messages");
-    const double tau0_s = (last_stamp_s - first_stamp_s) / (count - 1);
-    std::printf("%s, topic %s: %zu samples over %.3f s, rate %.4f Hz\n", bag_path.c_str(), topic.c_str(), count,
-                last_stamp_s - first_stamp_s, 1.0 / tau0_s);
+    const SampleTiming timing = timing_of(stamps_ns);
+    const double tau0_s = timing.tau0_s;
+    std::printf("%s, topic %s: %zu samples over %.3f s, rate %.4f Hz (median interval)\n", bag_path.c_str(),
+                topic.c_str(), count, (stamps_ns.back() - stamps_ns.front()) * 1e-9, 1.0 / tau0_s);
+    if (timing.irregular_count > 0) {
+      std::fprintf(stderr, "bag_summary: warning: bag %s, topic %s: %zu intervals off the sample period by over a "
+                   "factor %.1f (%.6g .. %.6g s): gaps or a rate change; the Allan deviation below assumes evenly "
+                   "spaced samples (the allan tool splits the record at gaps)\n", bag_path.c_str(), topic.c_str(),
+                   timing.irregular_count, kIrregularFactor, timing.shortest_interval_s, timing.longest_interval_s);
+    }
 
     std::optional<imu_lab::emulator::SensorProfile> profile;
     if (!profile_name.empty()) {

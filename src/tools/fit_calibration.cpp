@@ -15,6 +15,7 @@
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/ros/config_paths.h"
 #include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/ros/strict_imu_reading.h"
 
 namespace {
 
@@ -71,7 +72,7 @@ int main(int argc, char** argv) {
     }
     topic = imu_lab::ros_io::choose_imu_topic(bag_path, topic);
     std::vector<imu_lab::calib::CalibrationSample> samples;
-    imu_lab::ros_io::for_each_imu(bag_path, topic, [&](const imu_lab::ros_io::ImuRecord& record) {
+    imu_lab::ros_io::for_each_imu_strictly(bag_path, topic, [&](const imu_lab::ros_io::ImuRecord& record) {
       samples.push_back({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2});
     });
     if (samples.size() < 2) throw imu_lab::InputError("bag " + bag_path + ": topic " + topic + " has too few messages");

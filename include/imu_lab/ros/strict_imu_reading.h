@@ -1,0 +1,21 @@
+// for_each_imu for tools that use every sample (bag_summary's statistics, the thermal and
+// calibration fits): one NaN/Inf value or unordered stamp would silently spoil the result, so the
+// whole topic is checked first and such a bag is refused with InputError naming the bag, the
+// topic, the counts and the first bad stamp, before anything is computed or written.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "imu_lab/ros/imu_bag_reader.h"
+
+namespace imu_lab {
+namespace ros_io {
+
+// Reads the topic twice: the check, then `on_record` for every message in bag order. Returns
+// the number of messages.
+std::size_t for_each_imu_strictly(const std::string& bag_path, const std::string& topic,
+                                  const std::function<void(const ImuRecord&)>& on_record);
+
+}  // namespace ros_io
+}  // namespace imu_lab
