@@ -2,6 +2,7 @@
 
 #include <rosbag/bag.h>
 #include <sensor_msgs/Imu.h>
+#include <sensor_msgs/Temperature.h>
 
 #include <algorithm>
 #include <random>
@@ -23,9 +24,16 @@ std::vector<ros_io::AllanSample> white_noise_samples(std::size_t count, std::int
 }
 
 void write_imu_bag(const std::string& path, const std::vector<ros_io::AllanSample>& samples, const std::string& topic) {
+  ImuBagLayout layout;
+  layout.imu_topics = {topic};
+  write_imu_bag(path, samples, layout);
+}
+
+void write_imu_bag(const std::string& path, const std::vector<ros_io::AllanSample>& samples, const ImuBagLayout& layout) {
   rosbag::Bag bag(path, rosbag::bagmode::Write);
   std::int64_t record_ns = 0;
-  for (const auto& sample : samples) {
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const auto& sample = samples[i];
     sensor_msgs::Imu imu;
     imu.header.stamp.fromNSec(static_cast<std::uint64_t>(sample.stamp_ns));
     imu.header.frame_id = "imu_link";
@@ -40,7 +48,13 @@ void write_imu_bag(const std::string& path, const std::vector<ros_io::AllanSampl
     record_ns = std::max(record_ns + 1, sample.stamp_ns);
     ros::Time record_time;
     record_time.fromNSec(static_cast<std::uint64_t>(record_ns));
-    bag.write(topic, record_time, imu);
+    for (const std::string& topic : layout.imu_topics) bag.write(topic, record_time, imu);
+    if (layout.with_temperature && i % 10 == 0) {
+      sensor_msgs::Temperature temperature;
+      temperature.header.stamp = imu.header.stamp;
+      temperature.temperature = 25.0;
+      bag.write("/imu/temperature", record_time, temperature);
+    }
   }
 }
 

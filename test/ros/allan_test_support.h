@@ -21,6 +21,12 @@ std::vector<ros_io::AllanSample> white_noise_samples(std::size_t count, std::int
 void write_imu_bag(const std::string& path, const std::vector<ros_io::AllanSample>& samples,
                    const std::string& topic = "/imu/raw");
 
+struct ImuBagLayout {
+  std::vector<std::string> imu_topics = {"/imu/raw"};  // every sample on each of them
+  bool with_temperature = false;  // sensor_msgs/Temperature at 25 degC on /imu/temperature, every tenth stamp
+};
+void write_imu_bag(const std::string& path, const std::vector<ros_io::AllanSample>& samples, const ImuBagLayout& layout);
+
 YAML::Node read_allan_summary(const std::string& report_directory);
 
 }  // namespace test_support

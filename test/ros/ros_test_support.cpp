@@ -46,6 +46,12 @@ std::string read_file(const std::string& path) {
   return buffer.str();
 }
 
+std::string write_truncated_copy(const std::string& source, const std::string& destination, double fraction) {
+  const std::string bytes = read_file(source);
+  std::ofstream(destination, std::ios::binary) << bytes.substr(0, static_cast<std::size_t>(bytes.size() * fraction));
+  return destination;
+}
+
 bool file_exists(const std::string& path) {
   struct stat status {};
   return ::stat(path.c_str(), &status) == 0;

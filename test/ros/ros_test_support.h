@@ -19,6 +19,9 @@ struct CommandResult {
 CommandResult run_tool(const std::string& tool, const std::string& arguments);
 
 std::string read_file(const std::string& path);
+// Writes the first `fraction` of source's bytes to destination (a recording cut short by a crash);
+// returns destination.
+std::string write_truncated_copy(const std::string& source, const std::string& destination, double fraction);
 bool file_exists(const std::string& path);
 // Sorted names of the entries of a directory (without . and ..).
 std::vector<std::string> list_directory(const std::string& path);
