@@ -1,0 +1,52 @@
+// export_csv: a bag's sensor_msgs/Imu topic (with the temperature readings at the same stamps)
+// -> CSV with a header naming each column's unit, SI by default; --gyro-unit deg_s and
+// --accel-unit g for people who think in those. Written atomically. import_csv reads it back.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+
+#include "imu_lab/common/tool_main.h"
+#include "imu_lab/ros/imu_csv_bag.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"Export a bag's IMU topic to CSV (header with units; SI unless asked otherwise)."};
+  constexpr const char* kTool = "export_csv";
+  constexpr const char* kCommandLine = "command line";
+  std::string bag_path, out_path, delimiter = ",", gyro_unit = "rad_s", accel_unit = "m_s2", temperature_topic;
+  bool no_temperature = false;
+  imu_lab::ros_io::CsvExportRequest request;
+  app.add_option("bag", bag_path, "bag to read")->required();
+  app.add_option("-o,--out", out_path, "CSV file to write")->required();
+  app.add_option("--topic", request.imu_topic, "sensor_msgs/Imu topic (default: the bag's only one)");
+  auto* temperature_option = app.add_option(
+      "--temperature-topic", temperature_topic,
+      "sensor_msgs/Temperature topic for a temperature_c column (default: /imu/temperature if the bag has it)");
+  app.add_flag("--no-temperature", no_temperature, "no temperature column")->excludes(temperature_option);
+  app.add_option("--gyro-unit", gyro_unit, "rad_s or deg_s")->capture_default_str();
+  app.add_option("--accel-unit", accel_unit, "m_s2 or g (9.80665 m/s^2)")->capture_default_str();
+  app.add_option("--delimiter", delimiter, "',' ';' or tab")->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+
+  return imu_lab::run_tool_main(kTool, [&] {
+    using namespace imu_lab::io;
+    request.format.delimiter = parse_delimiter(delimiter, kCommandLine, "--delimiter");
+    request.format.gyro_unit = parse_angular_rate_unit(gyro_unit, kCommandLine, "--gyro-unit");
+    request.format.accel_unit = parse_specific_force_unit(accel_unit, kCommandLine, "--accel-unit");
+    if (!temperature_topic.empty()) {
+      request.temperature_topic = temperature_topic;
+      request.temperature_required = true;
+    }
+    if (no_temperature) request.temperature_topic.clear();
+    const auto report = imu_lab::ros_io::export_bag_to_csv(bag_path, request, out_path);
+    std::printf("%s: wrote %s: %zu rows of %s (gyro %s, accel %s)", kTool, out_path.c_str(), report.rows,
+                report.imu_topic.c_str(), gyro_unit.c_str(), accel_unit.c_str());
+    if (!report.temperature_topic.empty()) {
+      std::printf(", temperature_c from %s in %zu rows", report.temperature_topic.c_str(), report.rows_with_temperature);
+      if (report.unmatched_temperatures > 0) {
+        std::printf(" (%zu readings at stamps without an IMU sample left out)", report.unmatched_temperatures);
+      }
+    }
+    std::printf("\n");
+    return 0;
+  });
+}
