@@ -1,0 +1,225 @@
+#!/usr/bin/python3
+"""Write REPORT/index.md: the demo's figures and key numbers on one page.
+
+    scripts/report_index.py REPORT [--profile NAME]
+
+Reads what scripts/demo left in REPORT: noise/ (allan: noise.yaml, kalibr_imu.yaml, allan.png),
+thermal/ (fit_thermal: thermal.yaml, thermal.png), calibration/ (fit_calibration:
+calibration.yaml, calibration_report.txt), navigation/ (navigate: trajectory_errors.csv,
+errors.png), rviz.png or rviz_skipped.txt. A missing part is named in the index, not skipped
+silently. Written beside the target and renamed into place.
+"""
+import argparse
+import csv
+import math
+import os
+import sys
+
+import yaml
+
+ARCSEC_PER_RAD = 180.0 / math.pi * 3600.0
+DEG_H_PER_RAD_S = 180.0 / math.pi * 3600.0
+MICRO_G_PER_M_S2 = 1e6 / 9.80665
+
+# Noise terms shown per triad: (term, symbol, field unit key, unit as printed).
+NOISE_TERMS = {
+    "gyro": [("white_rate", "N", "deg_per_sqrt_h", "deg/√h"), ("bias_instability", "B", "deg_h", "deg/h"),
+             ("random_walk", "K", "deg_h_per_sqrt_h", "deg/h/√h")],
+    "accel": [("white_rate", "N", "m_s_per_sqrt_h", "m/s/√h"), ("bias_instability", "B", "micro_g", "µg"),
+              ("random_walk", "K", "m_s_per_h_per_sqrt_h", "m/s/h/√h")],
+}
+
+
+def load_yaml(path):
+    with open(path) as handle:
+        return yaml.safe_load(handle)
+
+
+def missing(what, path):
+    return [f"*Not produced: {what} (`{os.path.basename(path)}` missing; see the demo's output above it).*", ""]
+
+
+def figure(report, relative_path, alt, caption):
+    if os.path.exists(os.path.join(report, relative_path)):
+        return [caption, "", f"![{alt}]({relative_path})", ""]
+    return [f"*No figure: `{relative_path}` missing.*", ""]
+
+
+def profile_description(profile):
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "config", "sensors", profile + ".yaml")
+    if not os.path.exists(path):
+        return None
+    return load_yaml(path).get("description")
+
+
+def term_cell(terms, term, symbol, unit_key):
+    values = terms.get(term)
+    if values is None:
+        return "–"
+    key = f"{symbol}_{unit_key}"
+    if values.get("status") == "present" and key in values:
+        sigma = values.get(key + "_sigma")
+        return f"{values[key]:.3g} ± {sigma:.2g}" if sigma is not None else f"{values[key]:.3g}"
+    bound = next((v for k, v in values.items() if k.startswith(key + "_upper_")), None)
+    return f"< {bound:.3g}" if bound is not None else "–"
+
+
+def noise_section(report, profile):
+    folder = os.path.join(report, "noise")
+    lines = ["## Noise: Allan deviation and the identified noise model", ""]
+    lines += figure(report, "noise/allan.png", "Allan deviation",
+                    "One hour at rest, 200 Hz. Overlapping Allan deviation with 68 % bounds, the fitted total "
+                    "(solid) and each identified term (dashed).")
+    noise_path = os.path.join(folder, "noise.yaml")
+    if not os.path.exists(noise_path):
+        return lines + missing("noise identification", noise_path)
+    noise = load_yaml(noise_path)
+    for triad, terms in NOISE_TERMS.items():
+        axes = noise.get("triads", {}).get(triad, {}).get("axes", {})
+        if not axes:
+            lines += [f"*No {triad} identification in noise.yaml.*", ""]
+            continue
+        header = "| axis | " + " | ".join(f"{symbol} [{unit}]" for _, symbol, _, unit in terms) + " |"
+        lines += [header, "|---" * (len(terms) + 1) + "|"]
+        for axis, fit in axes.items():
+            cells = [term_cell(fit.get("terms", {}), term, symbol, key) for term, symbol, key, _ in terms]
+            lines.append(f"| {axis} | " + " | ".join(cells) + " |")
+        lines.append("")
+    lines += ["Value ± 1 sigma where the fit finds the term; `< x`: absent, 95 % upper bound. Every term "
+              "(a Markov term can take part of the white noise), SI values and warnings: "
+              "[noise/noise.yaml](noise/noise.yaml).", ""]
+    truth = profile_description(profile)
+    if truth:
+        lines += [f"The emulated profile's own figures, for comparison: {truth}.", ""]
+    kalibr_path = os.path.join(folder, "kalibr_imu.yaml")
+    if os.path.exists(kalibr_path):
+        kalibr = load_yaml(kalibr_path)
+        lines += ["Kalibr ([noise/kalibr_imu.yaml](noise/kalibr_imu.yaml), continuous time):", ""]
+        for key, unit in [("gyroscope_noise_density", "rad/s/√Hz"), ("gyroscope_random_walk", "rad/s²/√Hz"),
+                          ("accelerometer_noise_density", "m/s²/√Hz"), ("accelerometer_random_walk", "m/s³/√Hz")]:
+            if key in kalibr:
+                bound = " (upper bound)" if kalibr.get(key + "_is_upper_bound") else ""
+                lines.append(f"- `{key}`: {kalibr[key]:.3g} {unit}{bound}")
+        lines.append("")
+    return lines
+
+
+def thermal_section(report):
+    folder = os.path.join(report, "thermal")
+    path = os.path.join(folder, "thermal.yaml")
+    lines = ["## Temperature: thermal model", ""]
+    lines += figure(report, "thermal/thermal.png", "Thermal fit",
+                    "Six positions through −20, +20 and +60 °C soaks. Bias against temperature per axis "
+                    "(window means), the fitted curve and the residuals.")
+    if not os.path.exists(path):
+        return lines + missing("thermal model", path)
+    model = load_yaml(path)
+    validity = model.get("validity", {})
+    lines += [f"Reference {model.get('reference_temperature_c')} °C; valid over "
+              f"{validity.get('temperature_min_c', float('nan')):.1f} … {validity.get('temperature_max_c', float('nan')):.1f} °C; "
+              f"rate term: {model.get('uses_temperature_rate')}.", "",
+              "| axis | bias order | bias polynomial (per °C, °C², …) | fitted bias change peak to peak | residual RMS |",
+              "|---|---|---|---|---|"]
+    for axis in model.get("fit", {}).get("axes", []):
+        triad, name = axis.get("triad"), axis.get("axis")
+        unit = "rad_s" if triad == "gyro" else "m_s2"
+        terms = model.get(triad, {}).get(name, {})
+        polynomial = terms.get(f"bias_polynomial_{unit}", [])
+        scale, shown_unit = (DEG_H_PER_RAD_S, "deg/h") if triad == "gyro" else (MICRO_G_PER_M_S2, "µg")
+        coefficients = ", ".join(f"{c * scale:.3g}" for c in polynomial)
+        lines.append(f"| {triad} {name} | {axis.get('bias_order')} | {coefficients} {shown_unit} | "
+                     f"{axis.get('fitted_delta_bias_peak_to_peak', float('nan')) * scale:.3g} {shown_unit} | "
+                     f"{axis.get('residual_rms', float('nan')) * scale:.3g} {shown_unit} |")
+    lines += ["", "Model file (for the `thermal_compensator` node): [thermal/thermal.yaml](thermal/thermal.yaml).", ""]
+    return lines
+
+
+def calibration_section(report):
+    folder = os.path.join(report, "calibration")
+    path = os.path.join(folder, "calibration.yaml")
+    lines = ["## Calibration: the thesis's 12-position scheme", ""]
+    if not os.path.exists(path):
+        return lines + missing("calibration", path)
+    calibration = load_yaml(path)
+    lines += ["| triad | bias | scale-factor error [ppm] | misalignment [arcsec] |", "|---|---|---|---|"]
+    for triad in ("accelerometer", "gyro"):
+        values = calibration.get(triad, {})
+        unit_si = "rad_s" if triad == "gyro" else "m_s2"
+        scale, unit = (DEG_H_PER_RAD_S, "deg/h") if triad == "gyro" else (MICRO_G_PER_M_S2, "µg")
+        bias = values.get(f"bias_{unit_si}", [])
+        sigma = values.get(f"bias_sigma_{unit_si}", [float("nan")] * len(bias))
+        bias_text = ", ".join(f"{b * scale:.4g} ± {s * scale:.2g}" for b, s in zip(bias, sigma)) + f" {unit}"
+        ppm = ", ".join(f"{v:.1f}" for v in values.get("scale_factor_error_ppm", []))
+        # K's off-diagonal terms: row = sensor axis, column = input axis.
+        matrix = values.get("misalignment_arcsec", [])
+        misalignment = ", ".join(f"{'xyz'[i]}{'xyz'[j]} {v:.1f}" for i, row in enumerate(matrix)
+                                 for j, v in enumerate(row) if i != j)
+        lines.append(f"| {triad} | {bias_text} | {ppm} | {misalignment} |")
+    lines += ["", "Each parameter's sigma, the residuals per rest and move, Kalibr's form: "
+              "[calibration/calibration.yaml](calibration/calibration.yaml), "
+              "[calibration/calibration_report.txt](calibration/calibration_report.txt), "
+              "[calibration/calibration_kalibr_imu_chain.yaml](calibration/calibration_kalibr_imu_chain.yaml).", ""]
+    return lines
+
+
+def navigation_section(report):
+    folder = os.path.join(report, "navigation")
+    path = os.path.join(folder, "trajectory_errors.csv")
+    lines = ["## Navigation: free inertial over a 10-minute drive", ""]
+    lines += figure(report, "navigation/errors.png", "Navigation error",
+                    "From the true initial attitude, raw (uncorrected) rates and specific forces, height held. "
+                    "Error against the emulator's truth.")
+    if not os.path.exists(path):
+        return lines + missing("navigation errors", path)
+    with open(path, newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    if not rows:
+        return lines + ["*The error CSV is empty.*", ""]
+    last = rows[-1]
+    horizontal = [float(r["horizontal_position_error_m"]) for r in rows]
+    attitude_keys = [k for k in last if k.startswith("attitude_error")]
+    lines += [f"After {float(last['time_since_alignment_s']):.0f} s: horizontal position error "
+              f"{horizontal[-1]:.1f} m (max {max(horizontal):.1f} m)"]
+    if attitude_keys:
+        parts = ", ".join(f"{k.replace('attitude_error_', '').replace('_rad', '')} "
+                          f"{float(last[k]) * ARCSEC_PER_RAD:.0f}" for k in attitude_keys)
+        lines[-1] += f"; attitude error {parts} arcsec"
+    lines[-1] += ". Trajectory: [navigation/trajectory.csv](navigation/trajectory.csv)."
+    lines.append("")
+    return lines
+
+
+def rviz_section(report):
+    lines = ["## rviz", ""]
+    if os.path.exists(os.path.join(report, "rviz.png")):
+        return lines + figure(report, "rviz.png", "rviz",
+                              "The navigator live in rviz (emulated navigation-grade IMU at rest, aligned for "
+                              "60 s: body axes, odometry arrow along body x, path).")
+    reason_path = os.path.join(report, "rviz_skipped.txt")
+    reason = open(reason_path).read().strip() if os.path.exists(reason_path) else "no rviz.png"
+    return lines + [f"*Screenshot skipped: {reason}.*", ""]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("report")
+    parser.add_argument("--profile", default="tactical_mems")
+    args = parser.parse_args()
+    if not os.path.isdir(args.report):
+        sys.exit(f"report_index: {args.report} is not a folder")
+    lines = [f"# imu_lab report: emulated `{args.profile}`", "",
+             "Made by `scripts/demo`: each section is one tool on its own emulated test; the numbers are "
+             "read from the files beside this page.", ""]
+    lines += noise_section(args.report, args.profile)
+    for section in (thermal_section, calibration_section, navigation_section, rviz_section):
+        lines += section(args.report)
+    target = os.path.join(args.report, "index.md")
+    temporary = target + ".tmp"
+    with open(temporary, "w") as handle:
+        handle.write("\n".join(lines))
+    os.replace(temporary, target)
+    print(f"report_index: wrote {target}")
+
+
+if __name__ == "__main__":
+    main()
