@@ -161,10 +161,14 @@ TEST(FullChain, CorrectedNavigationIsTenTimesBetterAndItsNoiseIsTheProfiles) {
               thermal_model + log);
   run_or_fail("rosrun imu_lab fit_calibration " + calibration_bag + " " +
               private_string("fit_calibration_arguments") + " --out " + calibration + log);
-  // replace_calibration: a calibration file the chain uses instead, to check that the test fails.
-  const std::string used_calibration = ros::param::param<std::string>("~replace_calibration", "").empty()
-                                           ? calibration
-                                           : ros::param::param<std::string>("~replace_calibration", "");
+  // replace_thermal_model, replace_calibration: files the chain uses instead of the fitted ones,
+  // to check that the test fails (full_chain.test's arguments of the same names).
+  const auto replaced = [](const std::string& name, const std::string& fitted) {
+    const std::string replacement = ros::param::param<std::string>("~" + name, "");
+    return replacement.empty() ? fitted : replacement;
+  };
+  const std::string used_thermal_model = replaced("replace_thermal_model", thermal_model);
+  const std::string used_calibration = replaced("replace_calibration", calibration);
 
   std::vector<imu_lab::ros_io::ImuRecord> raw;
   imu_lab::ros_io::for_each_imu(navigation_bag, "/imu/raw", [&](const imu_lab::ros_io::ImuRecord& r) { raw.push_back(r); });
@@ -195,7 +199,7 @@ TEST(FullChain, CorrectedNavigationIsTenTimesBetterAndItsNoiseIsTheProfiles) {
   const std::string site = private_string("site_arguments");
   RunningLaunch launch;
   launch.pid = start_launch("roslaunch imu_lab full_chain.launch rviz:=false bag:=" + navigation_bag +
-                                    " thermal_model:=" + thermal_model + " calibration:=" + used_calibration + " " +
+                                    " thermal_model:=" + used_thermal_model + " calibration:=" + used_calibration + " " +
                                     site + " " + private_string("launch_arguments") +
                                     " play_args:='--pause --keep-alive' > " + directory + "/launch.log 2>&1");
   ASSERT_GT(launch.pid, 0);
