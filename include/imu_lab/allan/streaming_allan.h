@@ -16,7 +16,7 @@
 // block of 4096 / 2^L (at least 64) new ones (phase_block_points), and a head of 2 m_max doubles
 // plus a few sums per tau; one history of at most
 // 30 m_exact + 1 points twice (the B1 noise-type fallback, streaming_phase_history.h); one map
-// entry per distinct segment length (a gap-free run holds one). About 1.3 MB per channel with the
+// entry per distinct segment length (a gap-free run holds one). About 0.95 MB per channel with the
 // defaults (m_exact 1000, 10 taus per decade, tau up to 1e4 s at 1 kHz).
 //
 // Irregular input (see StreamingOptions): stamps are nanoseconds (the message header stamp).
