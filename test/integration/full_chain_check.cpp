@@ -201,7 +201,7 @@ TEST(FullChain, CorrectedNavigationIsTenTimesBetterAndItsNoiseIsTheProfiles) {
   launch.pid = start_launch("roslaunch imu_lab full_chain.launch rviz:=false bag:=" + navigation_bag +
                                     " thermal_model:=" + used_thermal_model + " calibration:=" + used_calibration + " " +
                                     site + " " + private_string("launch_arguments") +
-                                    " play_args:='--pause --keep-alive' > " + directory + "/launch.log 2>&1");
+                                    " allan_report_dir:=" + directory + "/allan_report play_args:='--pause --keep-alive' > " + directory + "/launch.log 2>&1");
   ASSERT_GT(launch.pid, 0);
 
   // Start the playback once every stage has registered and the checker is connected: a sample
