@@ -44,11 +44,11 @@ std::vector<double> PhaseHistory::phase_at_level(int level) const {
   const std::size_t stride = std::size_t{1} << (level - segment.level);
   // Points up to the last complete block of this level only, as the level itself holds them.
   const std::size_t level_points = static_cast<std::size_t>((segment.level0_count - 1) >> level) + 1;
-  std::vector<double> phase;
-  phase.reserve(level_points);
-  for (std::size_t j = 0; j < level_points; ++j) {
-    phase.push_back(std::ldexp(segment.phase[j * stride], segment.level - level));
-  }
+  // Times 2^(segment.level - level), exact: the same bits as ldexp without a libm call per point
+  // (a power of two in range times a double is rounded once, as ldexp rounds).
+  const double scale = std::ldexp(1.0, segment.level - level);
+  std::vector<double> phase(level_points);
+  for (std::size_t j = 0; j < level_points; ++j) phase[j] = segment.phase[j * stride] * scale;
   return phase;
 }
 

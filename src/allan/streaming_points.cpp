@@ -93,6 +93,7 @@ std::vector<StabilityPoint> streaming_points(Statistic statistic, const ChannelA
   std::vector<StabilityPoint> points;
   for (const ResolutionLevel& level : channel.levels()) {
     const int block = 1 << level.level();
+    LevelHistoryPhase history_phase(channel.history(), level.level());
     for (std::size_t i = 0; i < level.averaging_factors().size(); ++i) {
       const int level_m = level.averaging_factors()[i];
       StabilityPoint point;
@@ -102,8 +103,8 @@ std::vector<StabilityPoint> streaming_points(Statistic statistic, const ChannelA
       if (variance.term_count <= 0) continue;
       point.term_count = variance.term_count;
       point.deviation = std::sqrt(variance.variance) * units.value_scale;
-      point.alpha = streaming_noise_alpha(statistic, level.block_autocorrelation().summary(i), channel.history(),
-                                          level.level(), level_m, units.tau0_s);
+      point.alpha = streaming_noise_alpha(statistic, level.block_autocorrelation().summary(i), history_phase, level_m,
+                                          units.tau0_s);
       point.edf = pooled_edf(statistic, level, level_m, point.alpha);
       if (point.edf > 0.0) {
         const DeviationBounds bounds = chi_squared_bounds(point.deviation, point.edf, units.confidence);
