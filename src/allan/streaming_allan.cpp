@@ -27,18 +27,33 @@ void save_options(const StreamingOptions& options, BinaryWriter& out) {
   out.put_f64(options.confidence);
 }
 
+// Each channel's report alone takes this much of the payload (serialise()).
+constexpr std::size_t kChannelReportBytes = 5 * sizeof(std::int64_t);
+
+// An enumerator stored as its number; anything past `last` is corruption.
+template <class Enum>
+Enum load_enum(BinaryReader& in, Enum last, const char* what) {
+  const std::int64_t value = in.get_i64();
+  if (value < 0 || value > static_cast<std::int64_t>(last)) in.fail(std::string("unknown ") + what);
+  return static_cast<Enum>(value);
+}
+
 StreamingOptions load_options(BinaryReader& in) {
   StreamingOptions options;
   options.channel_count = in.get_u64();
-  options.input_kind = static_cast<InputKind>(in.get_i64());
-  options.tau_spacing = static_cast<TauSpacing>(in.get_i64());
+  options.input_kind = load_enum(in, InputKind::kIncrement, "input_kind");
+  options.tau_spacing = load_enum(in, TauSpacing::kEveryM, "tau_spacing");
   options.points_per_decade = in.get_f64();
   options.max_tau_s = in.get_f64();
   options.exact_max_averaging_factor = static_cast<int>(in.get_i64());
   options.warm_up_sample_count = in.get_u64();
   options.gap_factor = in.get_f64();
-  options.stamp_policy = static_cast<StampPolicy>(in.get_i64());
+  options.stamp_policy = load_enum(in, StampPolicy::kStop, "stamp_policy");
   options.confidence = in.get_f64();
+  // Refused before the engine allocates for that many channels.
+  if (options.channel_count > in.remaining_bytes() / kChannelReportBytes) {
+    in.fail("channel_count " + std::to_string(options.channel_count) + " is more than the payload holds");
+  }
   try {
     options.validate();
   } catch (const ConfigError& error) {

@@ -66,7 +66,12 @@ void PhaseHistory::load_segment(Segment& segment, BinaryReader& in) const {
   segment.level = static_cast<int>(in.get_i64());
   segment.level0_count = in.get_i64();
   std::vector<double> phase = in.get_f64s();
-  if (phase.size() > capacity_ || segment.level < 0 || segment.level > 62) in.fail("phase history out of shape");
+  if (phase.size() > capacity_ || segment.level < 0 || segment.level > 62 || segment.level0_count < 0) {
+    in.fail("phase history out of shape");
+  }
+  // append() keeps level-0 points 0, 2^level, 2 * 2^level, ...: phase_at_level relies on the count.
+  const std::int64_t kept_points = segment.level0_count == 0 ? 0 : ((segment.level0_count - 1) >> segment.level) + 1;
+  if (static_cast<std::int64_t>(phase.size()) != kept_points) in.fail("phase history length does not match its count");
   segment.phase.assign(phase.begin(), phase.end());
 }
 

@@ -36,7 +36,10 @@ Eigen::Vector3d read_vector(const YAML::Node& node, const std::string& path, con
   if (!node || !node.IsSequence() || node.size() != 3) throw ConfigError(path, key, "must be a list of 3 numbers");
   Eigen::Vector3d v;
   for (int k = 0; k < 3; ++k) {
-    v[k] = node[k].as<double>();
+    const YAML::Node element = node[k];
+    if (!element.IsScalar() || !YAML::convert<double>::decode(element, v[k])) {
+      throw ConfigError(path, key + "[" + std::to_string(k) + "]", "must be a number");
+    }
     if (!std::isfinite(v[k])) throw ConfigError(path, key, "must be finite");
   }
   return v;
@@ -128,7 +131,10 @@ ImuCalibration load_calibration(const std::string& path) {
   } catch (const YAML::Exception& error) {
     throw ConfigError(path, "(file)", std::string("cannot be read as YAML: ") + error.what());
   }
-  if (!root["format"] || root["format"].as<std::string>() != kFormat) {
+  // A scalar or a list at the top (a truncated or wrong file) has no keys to look up.
+  if (!root.IsMap()) throw ConfigError(path, "(file)", "must be a YAML map of keys (write the file with fit_calibration)");
+  const YAML::Node format = root["format"];
+  if (!format.IsScalar() || format.Scalar() != kFormat) {
     throw ConfigError(path, "format", std::string("must be ") + kFormat + " (write the file with fit_calibration)");
   }
   try {

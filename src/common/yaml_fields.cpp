@@ -25,7 +25,9 @@ void YamlFields::fail(const std::string& key, const std::string& problem) const 
 
 void YamlFields::allow_only(std::initializer_list<const char*> keys) const {
   for (const auto& entry : node_) {
-    const std::string key = entry.first.as<std::string>();
+    // YAML allows a list or a map as a key ("? [a, b]: 1"); no key of ours is one.
+    if (!entry.first.IsScalar()) fail("(key)", "a key must be a plain name, not a list or a map");
+    const std::string key = entry.first.Scalar();
     if (std::none_of(keys.begin(), keys.end(), [&](const char* k) { return key == k; })) {
       std::string known;
       for (const char* k : keys) known += std::string(known.empty() ? "" : ", ") + k;

@@ -17,7 +17,11 @@ void check_keys(const YAML::Node& node, const std::string& source, const std::st
                 const std::set<std::string>& allowed) {
   if (!node.IsMap()) throw ConfigError(source, path.empty() ? "(document)" : path, "must be a mapping");
   for (const auto& entry : node) {
-    const std::string key = entry.first.as<std::string>();
+    // YAML allows a list or a map as a key ("? [a, b]: 1"); no key of ours is one.
+    if (!entry.first.IsScalar()) {
+      throw ConfigError(source, path.empty() ? "(document)" : path, "a key must be a plain name, not a list or a map");
+    }
+    const std::string key = entry.first.Scalar();
     if (allowed.count(key) == 0) {
       std::string names;
       for (const auto& name : allowed) names += (names.empty() ? "" : ", ") + name;

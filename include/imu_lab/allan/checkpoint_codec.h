@@ -36,6 +36,7 @@ class BinaryReader {
   // Reads a count and checks it against what the caller expects (a shape the options fix).
   void expect_u64(std::uint64_t expected, const char* what);
   bool at_end() const { return position_ == bytes_.size(); }
+  std::size_t remaining_bytes() const { return bytes_.size() - position_; }
   [[noreturn]] void fail(const std::string& problem) const;
 
  private:
