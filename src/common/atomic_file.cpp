@@ -50,11 +50,15 @@ void write_file_atomically(const std::string& path, const std::function<void(std
       throw std::runtime_error("cannot write " + path + ": write to " + temporary + " failed");
     }
   }
+  move_into_place(temporary, path, "cannot write " + path);
+}
+
+void move_into_place(const std::string& temporary, const std::string& path, const std::string& what_is_written) {
   sync_path(temporary, O_RDONLY);
   if (std::rename(temporary.c_str(), path.c_str()) != 0) {
     const std::string reason = std::strerror(errno);
     std::remove(temporary.c_str());
-    throw std::runtime_error("cannot write " + path + ": rename failed: " + reason);
+    throw std::runtime_error(what_is_written + ": rename failed: " + reason);
   }
   sync_path(directory_of(path), O_RDONLY | O_DIRECTORY);
 }

@@ -2,10 +2,10 @@
 
 #include <unistd.h>
 
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <stdexcept>
+
+#include "imu_lab/common/atomic_file.h"
 
 namespace imu_lab {
 namespace ros_io {
@@ -30,9 +30,9 @@ AtomicBag::~AtomicBag() {
 
 void AtomicBag::commit() {
   bag_.close();
-  if (std::rename(temporary_path_.c_str(), path_.c_str()) != 0) {
-    throw std::runtime_error("cannot write bag " + path_ + ": rename failed: " + std::strerror(errno));
-  }
+  // Flushed before the rename like every other kept file, so a power cut cannot leave the new
+  // name on an empty bag.
+  move_into_place(temporary_path_, path_, "cannot write bag " + path_);
   committed_ = true;
 }
 

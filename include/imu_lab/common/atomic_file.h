@@ -16,4 +16,9 @@ void write_file_atomically(const std::string& path, const std::function<void(std
 // Same for content that is already in memory.
 void write_file_atomically(const std::string& path, const std::string& content);
 
+// The last step of both (and of ros_io::AtomicBag): flushes the finished `temporary` to disk,
+// renames it over `path` and flushes the directory entry. On failure removes `temporary` and
+// throws std::runtime_error starting with `what_is_written` (e.g. "cannot write bag x.bag").
+void move_into_place(const std::string& temporary, const std::string& path, const std::string& what_is_written);
+
 }  // namespace imu_lab
