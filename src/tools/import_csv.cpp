@@ -108,7 +108,11 @@ int main(int argc, char** argv) {
       std::printf(", %zu temperatures on %s (%zu rows without one)", report.temperature_messages,
                   c.topics.temperature.c_str(), summary.rows_without_temperature);
     }
-    std::printf("; %zu bad rows skipped\n", summary.rejected_row_count);
+    if (summary.rejected_row_count > 0) {
+      std::printf("; %zu bad rows skipped\n", summary.rejected_row_count);
+    } else {
+      std::printf("; no bad rows\n");
+    }
     return 0;
   });
 }
