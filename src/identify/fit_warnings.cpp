@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "imu_lab/identify/white_equivalent.h"
+
 namespace imu_lab {
 namespace identify {
 
@@ -79,12 +81,14 @@ void warn_white_rate(const FitResult& fit, std::vector<std::string>* warnings) {
   }
   for (size_t i = 0; i < fit.model.terms.size(); ++i) {
     const Term& term = fit.model.terms[i];
-    if (term.kind == TermKind::kMarkov && term.shape < 2.0 * fit.points.front().tau_s &&
+    if (term.kind == TermKind::kMarkov &&
+        markov_acts_as_low_passed_white(term.shape, fit.points.front().tau_s) &&
         fit.model.white_rate_corner_hz <= 0.0) {
       warnings->push_back(fit.terms[i].name + " has T_c = " + format_number(term.shape) +
                           " s, below twice the shortest tau: it behaves like low-passed white "
                           "noise of density q_c T_c = " + format_number(term.amplitude) +
-                          " (an anti-alias filter pulling the leftmost points down?)");
+                          " (an anti-alias filter pulling the leftmost points down?); kalibr_imu.yaml's noise density "
+                          "adds it to N in power");
     }
   }
 }

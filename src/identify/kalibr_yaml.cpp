@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "imu_lab/common/atomic_file.h"
+#include "imu_lab/identify/white_equivalent.h"
 
 namespace imu_lab {
 namespace identify {
@@ -43,9 +44,13 @@ KalibrValue kalibr_value(const TriadFit& triad, TermKind kind) {
   result.value = -1.0;
   for (int axis = 0; axis < 3; ++axis) {
     const TermEstimate* term = triad.axes[axis].find(term_kind_name(kind));
-    if (term == nullptr) continue;
-    const bool bound = term->status != TermStatus::kPresent;
-    const double value = bound ? term->amplitude.upper_bound : term->amplitude.value;
+    const double white_equivalent =
+        kind == TermKind::kWhiteRate ? white_equivalent_density(triad.axes[axis]) : std::nan("");
+    if (term == nullptr && !std::isfinite(white_equivalent)) continue;
+    const bool bound = !std::isfinite(white_equivalent) && term->status != TermStatus::kPresent;
+    const double value = std::isfinite(white_equivalent) ? white_equivalent
+                         : bound                         ? term->amplitude.upper_bound
+                                                         : term->amplitude.value;
     if (std::isfinite(value) && value > result.value) {
       result.value = value;
       result.is_upper_bound = bound;
@@ -76,7 +81,9 @@ std::string format_kalibr_imu_yaml(const KalibrImuNoise& noise) {
   out.precision(17);
   out << "# IMU noise model for Kalibr, identified by imu_lab (Allan-variance fit).\n"
          "# Continuous-time densities (Kalibr's convention); *_discrete are the per-sample values\n"
-         "# at update_rate. One value per sensor: the largest over its axes.\n";
+         "# at update_rate. One value per sensor: the largest over its axes. The noise density\n"
+         "# is the white-equivalent one: N plus, in power, any Markov term whose T_c is below\n"
+         "# twice tau0 (white noise behind the sensor's low-pass; see noise.yaml's warnings).\n";
   write_pair(out, "accelerometer", "m/s^2", noise.accelerometer_noise_density,
              noise.accelerometer_random_walk, noise.update_rate_hz);
   write_pair(out, "gyroscope", "rad/s", noise.gyroscope_noise_density,

@@ -15,6 +15,7 @@
 #include "imu_lab/identify/noise_report.h"
 #include "imu_lab/identify/partial_curves.h"
 #include "imu_lab/identify/triad_fit.h"
+#include "imu_lab/identify/white_equivalent.h"
 
 namespace imu_lab {
 namespace identify {
@@ -123,6 +124,40 @@ TEST(IdentifyKalibr, KeysAndConversionsForAKnownModel) {
   EXPECT_EQ(yaml["rostopic"].as<std::string>(), "/imu/raw");
   EXPECT_DOUBLE_EQ(yaml["update_rate"].as<double>(), 400.0);
   EXPECT_EQ(noise.gyroscope_noise_density.axis, 1);
+}
+
+// An anti-alias filter makes part of the white noise a Markov term with T_c below twice tau0:
+// Kalibr's density adds it back in power; a slow Markov term (a real hump) stays out.
+TEST(IdentifyKalibr, NoiseDensityAddsMarkovTermsFasterThanTau0InPower) {
+  TriadFit gyro = hand_triad(SensorKind::kGyroscope, {2e-5, 2e-5, 2e-5}, {1e-7, 1e-7, 1e-7}, true);
+  const double tau0_s = 0.005;
+  const std::array<double, 3> correlation_time_s = {0.0018, 0.0099, 1.0};
+  for (int axis = 0; axis < 3; ++axis) {
+    TermEstimate markov;
+    markov.name = "markov_1";
+    markov.kind = TermKind::kMarkov;
+    markov.status = TermStatus::kPresent;
+    markov.amplitude.value = 3.8e-5;
+    markov.shape.value = correlation_time_s[axis];
+    gyro.axes[axis].terms.push_back(markov);
+    gyro.axes[axis].points = {FitPoint{tau0_s, 1.0, 100.0}};
+  }
+  const double merged = std::sqrt(2e-5 * 2e-5 + 3.8e-5 * 3.8e-5);
+  EXPECT_DOUBLE_EQ(white_equivalent_density(gyro.axes[0]), merged);
+  EXPECT_DOUBLE_EQ(white_equivalent_density(gyro.axes[1]), merged);  // 9.9 ms < 2 tau0
+  EXPECT_DOUBLE_EQ(white_equivalent_density(gyro.axes[2]), 2e-5);
+  const KalibrImuNoise noise = kalibr_noise(gyro, gyro, 200.0, "/imu/raw");
+  EXPECT_DOUBLE_EQ(noise.gyroscope_noise_density.value, merged);
+  EXPECT_FALSE(noise.gyroscope_noise_density.is_upper_bound);
+
+  // N absent (the fit gave all of it to the fast Markov term): the density is still a value.
+  for (int axis = 0; axis < 3; ++axis) {
+    gyro.axes[axis].terms[0].status = TermStatus::kAbsent;
+    gyro.axes[axis].terms[0].amplitude.upper_bound = 1e-5;
+  }
+  const KalibrValue alone = kalibr_value(gyro, TermKind::kWhiteRate);
+  EXPECT_DOUBLE_EQ(alone.value, 3.8e-5);
+  EXPECT_FALSE(alone.is_upper_bound);
 }
 
 TEST(IdentifyPartialCurves, EachTermsCurveAndTheTotal) {

@@ -1,5 +1,6 @@
 // kalibr_imu.yaml from the identified triads. Kalibr's convention (Kalibr wiki, "IMU Noise
-// Model"): continuous-time densities, noise_density = N [u/sqrt(Hz)] and random_walk = K
+// Model"): continuous-time densities, noise_density = N [u/sqrt(Hz)] (white-equivalent, see
+// white_equivalent.h) and random_walk = K
 // [u/s/sqrt(Hz)]; their discrete-time forms for a filter running at the update rate are
 // N * sqrt(rate) [u] and K / sqrt(rate) [u/s... per step], written beside them under their own
 // names. One number per sensor: the largest over its axes (conservative). A term the fit did not
