@@ -64,6 +64,26 @@ def term_cell(terms, term, symbol, unit_key):
     return f"< {bound:.3g}" if bound is not None else "–"
 
 
+def white_equivalent_cell(fit, unit_key):
+    """N plus, in power, each Markov term with T_c below twice tau0: white noise behind the
+    sensor's low-pass, which the fit cannot tell from white noise (kalibr_imu.yaml's density)."""
+    tau0_s = fit.get("tau0_s")
+    power, found = 0.0, False
+    for name, values in fit.get("terms", {}).items():
+        if values.get("status") != "present":
+            continue
+        if name == "white_rate":
+            amplitude = values.get(f"N_{unit_key}")
+        elif name.startswith("markov") and tau0_s and values.get("T_c_s", float("inf")) < 2.0 * tau0_s:
+            amplitude = values.get(f"q_c_T_c_{unit_key}")
+        else:
+            continue
+        if amplitude is not None:
+            power += amplitude * amplitude
+            found = True
+    return f"{math.sqrt(power):.3g}" if found else "–"
+
+
 def noise_section(report, profile):
     folder = os.path.join(report, "noise")
     lines = ["## Noise: Allan deviation and the identified noise model", ""]
@@ -79,14 +99,18 @@ def noise_section(report, profile):
         if not axes:
             lines += [f"*No {triad} identification in noise.yaml.*", ""]
             continue
-        header = "| axis | " + " | ".join(f"{symbol} [{unit}]" for _, symbol, _, unit in terms) + " |"
-        lines += [header, "|---" * (len(terms) + 1) + "|"]
+        white_unit_key, white_unit = terms[0][2], terms[0][3]
+        header = "| axis | " + " | ".join(f"{symbol} [{unit}]" for _, symbol, _, unit in terms)
+        header += f" | white-equivalent N [{white_unit}] |"
+        lines += [header, "|---" * (len(terms) + 2) + "|"]
         for axis, fit in axes.items():
             cells = [term_cell(fit.get("terms", {}), term, symbol, key) for term, symbol, key, _ in terms]
+            cells.append(white_equivalent_cell(fit, white_unit_key))
             lines.append(f"| {axis} | " + " | ".join(cells) + " |")
         lines.append("")
     lines += ["Value ± 1 sigma where the fit finds the term; `< x`: absent, 95 % upper bound. Every term "
-              "(a Markov term can take part of the white noise), SI values and warnings: "
+              "(a Markov term can take part of the white noise: the white-equivalent N adds back, in power, "
+              "each Markov term with T_c below twice tau0, as kalibr_imu.yaml does), SI values and warnings: "
               "[noise/noise.yaml](noise/noise.yaml).", ""]
     truth = profile_description(profile)
     if truth:
