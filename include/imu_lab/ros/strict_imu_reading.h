@@ -1,7 +1,8 @@
 // for_each_imu for tools that use every sample (bag_summary's statistics, the thermal and
-// calibration fits): one NaN/Inf value or unordered stamp would silently spoil the result, so the
-// whole topic is checked first and such a bag is refused with InputError naming the bag, the
-// topic, the counts and the first bad stamp, before anything is computed or written.
+// calibration fits): one NaN/Inf value or unordered stamp would silently spoil the result, so such
+// a bag is refused with InputError naming the bag, the topic, the counts and the first bad stamp.
+// One pass: the callers only gather in on_record and compute and write after it returns, so the
+// refusal at the end of the pass still comes before anything is computed or written.
 #pragma once
 
 #include <functional>
@@ -12,8 +13,8 @@
 namespace imu_lab {
 namespace ros_io {
 
-// Reads the topic twice: the check, then `on_record` for every message in bag order. Returns
-// the number of messages.
+// Calls `on_record` in bag order for each message before the first bad one (so for every message
+// of a good bag), then throws if there was any. Returns the number of messages.
 std::size_t for_each_imu_strictly(const std::string& bag_path, const std::string& topic,
                                   const std::function<void(const ImuRecord&)>& on_record);
 
