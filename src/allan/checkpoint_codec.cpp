@@ -1,5 +1,6 @@
 #include "imu_lab/allan/checkpoint_codec.h"
 
+#include <cmath>
 #include <cstring>
 #include <utility>
 
@@ -68,6 +69,30 @@ std::vector<std::int64_t> BinaryReader::get_i64s() {
   std::vector<std::int64_t> values(get_length(sizeof(std::int64_t)));
   get_raw(values.data(), values.size() * sizeof(std::int64_t));
   return values;
+}
+double BinaryReader::get_finite_f64() {
+  const double value = get_f64();
+  if (!std::isfinite(value)) fail("non-finite value in the accumulator state");
+  return value;
+}
+std::vector<double> BinaryReader::get_finite_f64s() {
+  std::vector<double> values = get_f64s();
+  for (const double value : values) {
+    if (!std::isfinite(value)) fail("non-finite value in the accumulator state");
+  }
+  return values;
+}
+std::int64_t BinaryReader::get_count() {
+  const std::int64_t count = get_i64();
+  if (count < 0) fail("negative count in the accumulator state");
+  return count;
+}
+std::vector<std::int64_t> BinaryReader::get_counts() {
+  std::vector<std::int64_t> counts = get_i64s();
+  for (const std::int64_t count : counts) {
+    if (count < 0) fail("negative count in the accumulator state");
+  }
+  return counts;
 }
 void BinaryReader::expect_u64(std::uint64_t expected, const char* what) {
   const std::uint64_t found = get_u64();

@@ -30,25 +30,17 @@ void save_options(const StreamingOptions& options, BinaryWriter& out) {
 // Each channel's report alone takes this much of the payload (serialise()).
 constexpr std::size_t kChannelReportBytes = 5 * sizeof(std::int64_t);
 
-// An enumerator stored as its number; anything past `last` is corruption.
-template <class Enum>
-Enum load_enum(BinaryReader& in, Enum last, const char* what) {
-  const std::int64_t value = in.get_i64();
-  if (value < 0 || value > static_cast<std::int64_t>(last)) in.fail(std::string("unknown ") + what);
-  return static_cast<Enum>(value);
-}
-
 StreamingOptions load_options(BinaryReader& in) {
   StreamingOptions options;
   options.channel_count = in.get_u64();
-  options.input_kind = load_enum(in, InputKind::kIncrement, "input_kind");
-  options.tau_spacing = load_enum(in, TauSpacing::kEveryM, "tau_spacing");
+  options.input_kind = in.get_enum(InputKind::kIncrement, "input_kind");
+  options.tau_spacing = in.get_enum(TauSpacing::kEveryM, "tau_spacing");
   options.points_per_decade = in.get_f64();
   options.max_tau_s = in.get_f64();
   options.exact_max_averaging_factor = static_cast<int>(in.get_i64());
   options.warm_up_sample_count = in.get_u64();
   options.gap_factor = in.get_f64();
-  options.stamp_policy = load_enum(in, StampPolicy::kStop, "stamp_policy");
+  options.stamp_policy = in.get_enum(StampPolicy::kStop, "stamp_policy");
   options.confidence = in.get_f64();
   // Refused before the engine allocates for that many channels.
   if (options.channel_count > in.remaining_bytes() / kChannelReportBytes) {
@@ -233,13 +225,13 @@ std::string StreamingAllan::serialise() const {
 
 void StreamingAllan::deserialise_state(BinaryReader& in) {
   warmed_up_ = in.get_i64() != 0;
-  input_sample_count_ = in.get_i64();
+  input_sample_count_ = in.get_count();
   last_stamp_ns_ = in.get_i64();
   warm_up_.load(in);
   for (ChannelReport& report : channel_reports_) {
-    report.offset = in.get_f64();
-    report.finite_sample_count = in.get_i64();
-    report.non_finite_count = in.get_i64();
+    report.offset = in.get_finite_f64();
+    report.finite_sample_count = in.get_count();
+    report.non_finite_count = in.get_count();
     report.first_non_finite_sample_index = in.get_i64();
     report.last_non_finite_sample_index = in.get_i64();
   }
@@ -249,6 +241,7 @@ void StreamingAllan::deserialise_state(BinaryReader& in) {
     // The plan is a pure function of the options and tau0, so rebuilding it gives the same shape.
     const TauPlan plan = plan_taus(options_, static_cast<double>(tau0_ns) * 1e-9);
     stamps_.load(in);
+    if (stamps_.tau0_ns() != tau0_ns) in.fail("stamp tracker of another tau0");
     channels_.clear();
     for (std::size_t c = 0; c < options_.channel_count; ++c) {
       channels_.emplace_back(plan, 0.0, history_capacity());

@@ -146,27 +146,32 @@ void BlockMeanAutocorrelation::save(BinaryWriter& out) const {
   out.put_i64s(next_block_end_);
 }
 
-void BlockMeanAutocorrelation::load(BinaryReader& in) {
+void BlockMeanAutocorrelation::load(BinaryReader& in, std::int64_t processed_count) {
   in.expect_u64(averaging_factors_.size(), "number of averaging factors");
   for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {
     for (SeriesMoments& moments : open_[i]) {
       moments.sum.load(in);
       moments.squares.load(in);
       moments.lag1_products.load(in);
-      moments.first = in.get_f64();
-      moments.last = in.get_f64();
-      moments.count = in.get_i64();
+      moments.first = in.get_finite_f64();
+      moments.last = in.get_finite_f64();
+      moments.count = in.get_count();
     }
     BlockSeriesSummary& pooled = closed_[i];
     for (int d = 0; d <= kMaxBlockDifferences; ++d) {
-      pooled.lag1_numerator[d] = in.get_f64();
-      pooled.centred_squares[d] = in.get_f64();
-      pooled.raw_squares[d] = in.get_f64();
-      pooled.count[d] = in.get_i64();
+      pooled.lag1_numerator[d] = in.get_finite_f64();
+      pooled.centred_squares[d] = in.get_finite_f64();
+      pooled.raw_squares[d] = in.get_finite_f64();
+      pooled.count[d] = in.get_count();
     }
   }
   next_block_end_ = in.get_i64s();
   if (next_block_end_.size() != averaging_factors_.size()) in.fail("block autocorrelation factor count");
+  for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {
+    if (!is_next_block_end(next_block_end_[i], 1, averaging_factors_[i], processed_count)) {
+      in.fail("next block mean out of step with the processed points");
+    }
+  }
 }
 
 }  // namespace allan

@@ -1,6 +1,7 @@
 #include "imu_lab/allan/streaming_channel.h"
 
 #include <cmath>
+#include <string>
 
 namespace imu_lab {
 namespace allan {
@@ -63,12 +64,21 @@ void ChannelAccumulator::save(BinaryWriter& out) const {
 }
 
 void ChannelAccumulator::load(BinaryReader& in) {
-  offset_ = in.get_f64();
+  offset_ = in.get_finite_f64();
   phase_.load(in);
-  segment_sample_count_ = in.get_i64();
+  segment_sample_count_ = in.get_count();
   in.expect_u64(levels_.size(), "number of pyramid levels");
-  for (ResolutionLevel& level : levels_) level.load(in);
+  for (ResolutionLevel& level : levels_) {
+    level.load(in);
+    // push(): level L holds the segment's point 0 and one point per 2^L samples.
+    if (level.phase_count() != (segment_sample_count_ >> level.level()) + 1) {
+      in.fail("pyramid level " + std::to_string(level.level()) + " out of step with the segment's sample count");
+    }
+  }
   history_.load(in);
+  if (history_.open_segment_count() != segment_sample_count_ + 1) {
+    in.fail("phase history out of step with the segment's sample count");
+  }
 }
 
 }  // namespace allan

@@ -147,7 +147,7 @@ void DifferenceAccumulator::save(BinaryWriter& out) const {
   out.put_i64s(next_non_overlapping_end_);
 }
 
-void DifferenceAccumulator::load(BinaryReader& in) {
+void DifferenceAccumulator::load(BinaryReader& in, std::int64_t processed_count) {
   in.expect_u64(averaging_factors_.size(), "number of averaging factors");
   for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {
     closed_overlapping_[i].load(in);
@@ -157,6 +157,11 @@ void DifferenceAccumulator::load(BinaryReader& in) {
   }
   next_non_overlapping_end_ = in.get_i64s();
   if (next_non_overlapping_end_.size() != averaging_factors_.size()) in.fail("averaging factor count");
+  for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {
+    if (!is_next_block_end(next_non_overlapping_end_[i], order_, averaging_factors_[i], processed_count)) {
+      in.fail("next non-overlapping difference out of step with the processed points");
+    }
+  }
 }
 
 }  // namespace allan

@@ -1,5 +1,6 @@
 #include "imu_lab/allan/streaming_level.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -11,6 +12,8 @@ namespace {
 
 constexpr int kAllanOrder = 2;
 constexpr int kHadamardOrder = 3;
+
+constexpr std::int64_t kMaxRunPhasePoints = std::int64_t{1} << 53;
 
 int largest(const std::vector<int>& ascending) { return ascending.empty() ? 1 : ascending.back(); }
 
@@ -113,21 +116,40 @@ void ResolutionLevel::load(BinaryReader& in) {
   in.expect_u64(static_cast<std::uint64_t>(level_), "pyramid level");
   in.expect_u64(averaging_factors_.size(), "number of averaging factors");
   ring_.load(in);
+  // A segment starts with its phase point 0 (restart_segment), so the ring is never empty.
+  if (ring_.count() < 1) in.fail("empty phase window");
   processed_count_ = in.get_i64();
   if (processed_count_ < 0 || processed_count_ > ring_.count()) in.fail("processed point count out of range");
-  head_ = in.get_f64s();
-  if (head_.size() > head_capacity_) in.fail("head buffer longer than its capacity");
+  // The accumulators reach back up to history() - 1 points before the first unprocessed point.
+  if (ring_.oldest_stored() > 0 &&
+      processed_count_ - static_cast<std::int64_t>(ring_.history()) + 1 < ring_.oldest_stored()) {
+    in.fail("unprocessed phase points without the history before them");
+  }
+  head_ = in.get_finite_f64s();
+  if (head_.size() != std::min(static_cast<std::size_t>(ring_.count()), head_capacity_)) {
+    in.fail("segment head of another length than the segment");
+  }
   head_.reserve(head_capacity_);
-  allan_.load(in);
-  hadamard_.load(in);
+  allan_.load(in, processed_count_);
+  hadamard_.load(in, processed_count_);
   modified_.load(in);
-  block_autocorrelation_.load(in);
+  block_autocorrelation_.load(in, processed_count_);
   for (CompensatedSum& sum : closed_total_end_terms_) sum.load(in);
   closed_segment_phase_counts_.clear();
   const std::uint64_t entries = in.get_u64();
+  std::int64_t closed_phase_points = 0;
   for (std::uint64_t i = 0; i < entries; ++i) {
     const std::int64_t phase_count = in.get_i64();
-    closed_segment_phase_counts_[phase_count] = in.get_i64();
+    const std::int64_t segment_count = in.get_i64();
+    // Only segments with data (two phase points or more) are closed into the map, and no run
+    // reaches 2^53 points (285 years at 1 MHz): the statistics' normalisers stay exact integers.
+    std::int64_t points = 0;
+    if (phase_count < 2 || segment_count < 1 || __builtin_mul_overflow(phase_count, segment_count, &points) ||
+        __builtin_add_overflow(closed_phase_points, points, &closed_phase_points) ||
+        closed_phase_points > kMaxRunPhasePoints) {
+      in.fail("closed segment length or count out of range");
+    }
+    closed_segment_phase_counts_[phase_count] = segment_count;
   }
 }
 

@@ -134,10 +134,16 @@ void ModifiedAccumulator::save(BinaryWriter& out) const {
 void ModifiedAccumulator::load(BinaryReader& in) {
   in.expect_u64(averaging_factors_.size(), "number of averaging factors");
   for (DifferenceSums& sums : terms_) sums.load(in);
-  window_sums_ = in.get_f64s();
-  updates_since_exact_ = in.get_i64s();
+  window_sums_ = in.get_finite_f64s();
+  updates_since_exact_ = in.get_counts();
   if (window_sums_.size() != averaging_factors_.size() || updates_since_exact_.size() != averaging_factors_.size()) {
     in.fail("modified Allan window count");
+  }
+  for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {
+    // update() slides at most exact_every - 1 windows before it recomputes the sum exactly.
+    if (updates_since_exact_[i] >= kWindowsBetweenExactSums * averaging_factors_[i]) {
+      in.fail("modified Allan window slid past its exact recomputation");
+    }
   }
 }
 

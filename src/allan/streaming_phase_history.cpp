@@ -65,7 +65,7 @@ void PhaseHistory::save_segment(const Segment& segment, BinaryWriter& out) {
 void PhaseHistory::load_segment(Segment& segment, BinaryReader& in) const {
   segment.level = static_cast<int>(in.get_i64());
   segment.level0_count = in.get_i64();
-  std::vector<double> phase = in.get_f64s();
+  std::vector<double> phase = in.get_finite_f64s();
   if (phase.size() > capacity_ || segment.level < 0 || segment.level > 62 || segment.level0_count < 0) {
     in.fail("phase history out of shape");
   }

@@ -103,10 +103,12 @@ std::vector<StabilityPoint> streaming_points(Statistic statistic, const ChannelA
       if (variance.term_count <= 0) continue;
       point.term_count = variance.term_count;
       point.deviation = std::sqrt(variance.variance) * units.value_scale;
+      // Sums that overflowed (samples beyond ~1e150) estimate nothing.
+      if (!std::isfinite(point.deviation)) continue;
       point.alpha = streaming_noise_alpha(statistic, level.block_autocorrelation().summary(i), history_phase, level_m,
                                           units.tau0_s);
       point.edf = pooled_edf(statistic, level, level_m, point.alpha);
-      if (point.edf > 0.0) {
+      if (point.edf > 0.0 && std::isfinite(point.edf)) {
         const DeviationBounds bounds = chi_squared_bounds(point.deviation, point.edf, units.confidence);
         point.deviation_lower = bounds.lower;
         point.deviation_upper = bounds.upper;

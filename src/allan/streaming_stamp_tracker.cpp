@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "imu_lab/common/config_error.h"
@@ -41,7 +42,11 @@ StampVerdict StampTracker::classify(std::int64_t stamp_ns, std::int64_t sample_i
     ++accepted_count_;
     return StampVerdict::kFirst;
   }
-  const std::int64_t interval_ns = stamp_ns - last_stamp_ns_;
+  std::int64_t interval_ns;
+  if (__builtin_sub_overflow(stamp_ns, last_stamp_ns_, &interval_ns)) {
+    // Stamps over 292 years apart (a corrupt input): backwards, or the longest gap there is.
+    interval_ns = stamp_ns < last_stamp_ns_ ? -1 : std::numeric_limits<std::int64_t>::max();
+  }
   StampVerdict verdict = StampVerdict::kNext;
   if (interval_ns == 0) {
     record(StampEventKind::kDuplicate, sample_index, stamp_ns);
@@ -107,23 +112,24 @@ void StampTracker::save(BinaryWriter& out) const {
 
 void StampTracker::load(BinaryReader& in) {
   tau0_ns_ = in.get_i64();
-  gap_threshold_ns_ = in.get_f64();
-  policy_ = static_cast<StampPolicy>(in.get_i64());
+  gap_threshold_ns_ = in.get_finite_f64();
+  if (tau0_ns_ <= 0 || !(gap_threshold_ns_ > static_cast<double>(tau0_ns_))) in.fail("stamp tracker's tau0 or gap threshold");
+  policy_ = in.get_enum(StampPolicy::kStop, "stamp policy");
   has_last_ = in.get_i64() != 0;
   last_stamp_ns_ = in.get_i64();
-  accepted_count_ = in.get_i64();
-  regular_interval_count_ = in.get_i64();
+  accepted_count_ = in.get_count();
+  regular_interval_count_ = in.get_count();
   squared_deviation_s2_.load(in);
-  max_deviation_s_ = in.get_f64();
-  gap_count_ = in.get_i64();
+  max_deviation_s_ = in.get_finite_f64();
+  gap_count_ = in.get_count();
   gap_time_s_.load(in);
-  duplicate_count_ = in.get_i64();
-  out_of_order_count_ = in.get_i64();
+  duplicate_count_ = in.get_count();
+  out_of_order_count_ = in.get_count();
   const std::uint64_t event_count = in.get_u64();
   if (event_count > kMaxRecordedStampEvents) in.fail("more stamp events than are ever recorded");
   events_.resize(event_count);
   for (StampEvent& event : events_) {
-    event.kind = static_cast<StampEventKind>(in.get_i64());
+    event.kind = in.get_enum(StampEventKind::kOutOfOrder, "stamp event kind");
     event.sample_index = in.get_i64();
     event.previous_stamp_ns = in.get_i64();
     event.stamp_ns = in.get_i64();

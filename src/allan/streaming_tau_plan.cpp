@@ -11,10 +11,23 @@ namespace imu_lab {
 namespace allan {
 namespace {
 
+// The lowest pyramid level L where m / 2^L fits under the exact limit.
+int level_holding(std::int64_t m, std::int64_t exact_limit) {
+  int level = 0;
+  while (m > (exact_limit << level)) ++level;
+  return level;
+}
+
 std::vector<std::int64_t> requested_factors(const StreamingOptions& options, std::int64_t max_factor) {
   std::vector<std::int64_t> factors;
   if (options.tau_spacing == TauSpacing::kEveryM) {
-    for (std::int64_t m = 1; m <= max_factor; ++m) factors.push_back(m);
+    // Every m up to max_tau / tau0 could be 1e9 of them, but beyond the exact limit the plan
+    // keeps only one per multiple of 2^L on level L: step from one such multiple to the next.
+    for (std::int64_t m = 1; m <= max_factor;) {
+      factors.push_back(m);
+      const std::int64_t block = std::int64_t{1} << level_holding(m, options.exact_max_averaging_factor);
+      m = (m + block - 1) / block * block + 1;
+    }
     return factors;
   }
   for (int i = 0;; ++i) {
@@ -38,8 +51,7 @@ TauPlan plan_taus(const StreamingOptions& options, double tau0_s) {
 
   std::map<int, std::set<int>> factors_by_level;
   for (const std::int64_t m : requested_factors(options, max_factor)) {
-    int level = 0;
-    while (m > (exact_limit << level)) ++level;
+    const int level = level_holding(m, exact_limit);
     // Rounding up keeps every level's reported factors above the previous level's.
     const std::int64_t block = std::int64_t{1} << level;
     factors_by_level[level].insert(static_cast<int>((m + block - 1) / block));

@@ -14,7 +14,9 @@ void WarmUpBuffer::add(std::int64_t stamp_ns, const double* values) {
 std::int64_t WarmUpBuffer::median_interval_ns() const {
   std::vector<std::int64_t> intervals;
   for (std::size_t i = 1; i < stamps_ns_.size(); ++i) {
-    const std::int64_t interval = stamps_ns_[i] - stamps_ns_[i - 1];
+    std::int64_t interval;
+    // Stamps over 292 years apart (corrupt input) are no sampling interval either.
+    if (__builtin_sub_overflow(stamps_ns_[i], stamps_ns_[i - 1], &interval)) continue;
     if (interval > 0) intervals.push_back(interval);
   }
   if (intervals.empty()) return 0;
@@ -55,7 +57,7 @@ void WarmUpBuffer::save(BinaryWriter& out) const {
 
 void WarmUpBuffer::load(BinaryReader& in) {
   stamps_ns_ = in.get_i64s();
-  values_ = in.get_f64s();
+  values_ = in.get_f64s();  // raw samples: NaN and Inf are kept here and excluded when accepted
   if (values_.size() != stamps_ns_.size() * channel_count_) in.fail("warm-up buffer of another channel count");
 }
 

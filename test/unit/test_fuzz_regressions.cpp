@@ -4,12 +4,20 @@
 // what is wrong.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstring>
 #include <fstream>
+#include <limits>
 #include <iterator>
 #include <string>
 #include <vector>
 
 #include "imu_lab/allan/checkpoint.h"
+#include "imu_lab/allan/checkpoint_codec.h"
+#include "imu_lab/allan/confidence.h"
+#include "imu_lab/allan/streaming_block_autocorrelation.h"
+#include "imu_lab/allan/streaming_difference_accumulator.h"
+#include "imu_lab/allan/streaming_level.h"
 #include "imu_lab/allan/streaming_allan.h"
 #include "imu_lab/allan/streaming_phase_history.h"
 #include "imu_lab/calib/calibration_file.h"
@@ -120,6 +128,169 @@ TEST(FuzzRegressions, CheckpointWhosePhaseHistoryDisagreesWithItsCountIsRefused)
     EXPECT_NE(std::string(error.what()).find("phase history length does not match its count"), std::string::npos)
         << error.what();
   }
+}
+
+// The checkpoint harness resumes what it loads (a snapshot, 4200 samples, a snapshot). The
+// state it crafted is rebuilt here per component, from a real one with one field changed, so the
+// tests outlive the checkpoint layout.
+
+// `bytes` with the eight bytes at `offset` (an offset from the end when negative) replaced.
+std::string with_int64_at(std::string bytes, std::ptrdiff_t offset, std::int64_t value) {
+  const std::size_t at = offset < 0 ? bytes.size() - static_cast<std::size_t>(-offset) : static_cast<std::size_t>(offset);
+  std::memcpy(&bytes[at], &value, sizeof value);
+  return bytes;
+}
+
+template <class Load>
+std::string input_error_of(Load load) {
+  try {
+    load();
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  ADD_FAILURE() << "accepted";
+  return "";
+}
+
+allan::PhaseRing ramp_ring(std::int64_t points) {
+  allan::PhaseRing ring(3 * 4 + 1, allan::kPhaseBlockPoints);
+  for (std::int64_t n = 0; n < points; ++n) ring.push(1e-3 * static_cast<double>(n * n % 97));
+  return ring;
+}
+
+TEST(FuzzRegressions, CheckpointWhoseNextNonOverlappingEndLagsTheProcessedPointsIsRefused) {
+  // Was accepted; the next update then read the phase window before its stored history.
+  const allan::PhaseRing ring = ramp_ring(200);
+  allan::DifferenceAccumulator allan_sums(2, {1, 2, 4});
+  allan_sums.update(ring, 0);
+  allan::BinaryWriter out;
+  allan_sums.save(out);
+  // The next ends are the last vector of the state; m = 4's is the last of them, legitimately 200.
+  const std::string stale = with_int64_at(out.bytes(), -8, 12);
+  const std::string message = input_error_of([&] {
+    allan::BinaryReader in(stale, "checkpoint x");
+    allan::DifferenceAccumulator(2, {1, 2, 4}).load(in, 200);
+  });
+  EXPECT_NE(message.find("out of step with the processed points"), std::string::npos) << message;
+  allan::BinaryReader untouched(out.bytes(), "checkpoint x");
+  EXPECT_NO_THROW(allan::DifferenceAccumulator(2, {1, 2, 4}).load(untouched, 200));
+}
+
+TEST(FuzzRegressions, CheckpointWhoseNextBlockMeanLagsTheProcessedPointsIsRefused) {
+  // The fuzzer's first resume crash: a heap read before the window in the block-mean update.
+  const allan::PhaseRing ring = ramp_ring(200);
+  allan::BlockMeanAutocorrelation block_means({1, 2, 4});
+  block_means.update(ring);
+  allan::BinaryWriter out;
+  block_means.save(out);
+  const std::string stale = with_int64_at(out.bytes(), -8, 12);
+  const std::string message = input_error_of([&] {
+    allan::BinaryReader in(stale, "checkpoint x");
+    allan::BlockMeanAutocorrelation({1, 2, 4}).load(in, 200);
+  });
+  EXPECT_NE(message.find("out of step with the processed points"), std::string::npos) << message;
+  allan::BinaryReader untouched(out.bytes(), "checkpoint x");
+  EXPECT_NO_THROW(allan::BlockMeanAutocorrelation({1, 2, 4}).load(untouched, 200));
+}
+
+// A level that has moved its window's history at least once (5000 points through a 4096 block).
+allan::BinaryWriter saved_level(bool close_a_segment) {
+  allan::ResolutionLevel level(0, {1, 2});
+  for (int n = 1; n < 5000; ++n) level.append_phase(1e-3 * (n % 13));
+  level.process_appended();
+  if (close_a_segment) {
+    level.restart_segment();
+    for (int n = 1; n < 10; ++n) level.append_phase(1e-3 * n);
+  }
+  allan::BinaryWriter out;
+  level.save(out);
+  return out;
+}
+
+TEST(FuzzRegressions, CheckpointWithUnprocessedPointsBeyondTheStoredHistoryIsRefused) {
+  const allan::BinaryWriter out = saved_level(false);
+  // level, factor count, the window's count, its stored points (length, values), then processed.
+  allan::BinaryReader layout(out.bytes(), "checkpoint x");
+  layout.get_u64();
+  layout.get_u64();
+  layout.get_i64();
+  const std::size_t stored = layout.get_f64s().size();
+  const std::ptrdiff_t processed_offset = 4 * 8 + static_cast<std::ptrdiff_t>(stored) * 8;
+  const std::string rewound = with_int64_at(out.bytes(), processed_offset, 0);
+  const std::string message = input_error_of([&] {
+    allan::BinaryReader in(rewound, "checkpoint x");
+    allan::ResolutionLevel(0, {1, 2}).load(in);
+  });
+  EXPECT_NE(message.find("without the history before them"), std::string::npos) << message;
+  allan::BinaryReader untouched(out.bytes(), "checkpoint x");
+  EXPECT_NO_THROW(allan::ResolutionLevel(0, {1, 2}).load(untouched));
+}
+
+TEST(FuzzRegressions, CheckpointWhoseClosedSegmentsOverflowTheTermCountIsRefused) {
+  // Was accepted; the total deviation's normaliser (length times count) then overflowed int64.
+  const allan::BinaryWriter out = saved_level(true);
+  // The map of closed segments ends the state: its one entry is (5000 points, 1 segment).
+  const std::string huge = with_int64_at(with_int64_at(out.bytes(), -16, std::int64_t{1} << 40), -8, std::int64_t{1} << 40);
+  const std::string message = input_error_of([&] {
+    allan::BinaryReader in(huge, "checkpoint x");
+    allan::ResolutionLevel(0, {1, 2}).load(in);
+  });
+  EXPECT_NE(message.find("closed segment length or count out of range"), std::string::npos) << message;
+  allan::BinaryReader untouched(out.bytes(), "checkpoint x");
+  EXPECT_NO_THROW(allan::ResolutionLevel(0, {1, 2}).load(untouched));
+}
+
+TEST(FuzzRegressions, ChiSquaredBoundsHoldForATrillionDegreesOfFreedom) {
+  // Boost's quantile series threw "exceeded 1000000 iterations" from a resumed snapshot.
+  const allan::DeviationBounds bounds = allan::chi_squared_bounds(1.0, 1e12, 0.683);
+  // Large-edf limit: 1 -+ z / sqrt(2 edf), z the standard normal's 84.15 % quantile.
+  const double z = 1.000642;
+  EXPECT_NEAR(bounds.lower, 1.0 - z / std::sqrt(2e12), 1e-11);
+  EXPECT_NEAR(bounds.upper, 1.0 + z / std::sqrt(2e12), 1e-11);
+  // No step where the approximation takes over: both sides of 1e8 agree to 1e-13.
+  const allan::DeviationBounds below = allan::chi_squared_bounds(1.0, std::nextafter(1e8, 0.0), 0.683);
+  const allan::DeviationBounds above = allan::chi_squared_bounds(1.0, 1e8, 0.683);
+  EXPECT_NEAR(below.lower, above.lower, 1e-13);
+  EXPECT_NEAR(below.upper, above.upper, 1e-13);
+}
+
+TEST(FuzzRegressions, SamplesThatOverflowTheSumsGiveNoPointsInsteadOfAnException) {
+  // Finite samples near 1e300 make infinite squares; chi_squared_bounds used to throw on the
+  // NaN deviation from inf - inf, out of snapshot().
+  allan::StreamingOptions options;
+  options.channel_count = 2;
+  options.warm_up_sample_count = 10;
+  allan::StreamingAllan engine(options);
+  for (int k = 0; k < 3000; ++k) {
+    const double huge = k % 2 == 0 ? 1e300 : -1e300;
+    engine.push(std::int64_t{1000000} * k, {huge, 1e-3 * (k % 7)});
+  }
+  allan::StreamingSnapshot snapshot;
+  ASSERT_NO_THROW(snapshot = engine.snapshot());
+  for (const allan::Statistic statistic : allan::kStreamingStatistics) {
+    for (const allan::StabilityPoint& point : snapshot.curve(statistic, 0)) {
+      EXPECT_TRUE(std::isfinite(point.deviation)) << allan::statistic_name(statistic) << " m " << point.averaging_factor;
+    }
+    EXPECT_FALSE(snapshot.curve(statistic, 1).empty()) << "the other channel keeps its curve";
+  }
+}
+
+TEST(FuzzRegressions, StampsCenturiesApartAreGapsAndDisorderNotOverflow) {
+  // Stamp differences overflowed int64 in the warm-up median and the stamp tracker (UB).
+  allan::StreamingOptions options;
+  options.channel_count = 1;
+  options.warm_up_sample_count = 8;
+  allan::StreamingAllan engine(options);
+  const std::int64_t far_past = std::numeric_limits<std::int64_t>::min() + 1;
+  const std::int64_t far_future = std::numeric_limits<std::int64_t>::max() - 1;
+  const std::int64_t ms = 1000000;
+  for (const std::int64_t stamp : {0 * ms, 1 * ms, 2 * ms, 3 * ms, far_future, far_past, 4 * ms, 5 * ms, 6 * ms}) {
+    engine.push(stamp, {1.0});
+  }
+  const allan::StreamingSnapshot snapshot = engine.snapshot();
+  EXPECT_EQ(snapshot.timing.tau0_s, 1e-3);
+  EXPECT_GE(snapshot.timing.gap_count, 1);
+  EXPECT_GE(snapshot.timing.out_of_order_count, 1);
 }
 
 }  // namespace

@@ -33,6 +33,20 @@ class BinaryReader {
   double get_f64();
   std::vector<double> get_f64s();
   std::vector<std::int64_t> get_i64s();
+  // Accumulator state is finite and counts are non-negative whenever the engine wrote it; a
+  // payload that says otherwise was not written by the engine (or overflowed), and resuming it
+  // would turn into NaN statistics or indices outside the buffers.
+  double get_finite_f64();
+  std::vector<double> get_finite_f64s();
+  std::int64_t get_count();
+  std::vector<std::int64_t> get_counts();
+  // An enumerator stored as its number; anything past `last` is refused.
+  template <class Enum>
+  Enum get_enum(Enum last, const char* what) {
+    const std::int64_t value = get_i64();
+    if (value < 0 || value > static_cast<std::int64_t>(last)) fail(std::string("unknown ") + what);
+    return static_cast<Enum>(value);
+  }
   // Reads a count and checks it against what the caller expects (a shape the options fix).
   void expect_u64(std::uint64_t expected, const char* what);
   bool at_end() const { return position_ == bytes_.size(); }

@@ -12,7 +12,8 @@ struct DeviationBounds {
 // Two-sided bounds holding `confidence` (e.g. 0.683) of the probability:
 //   sigma_lower = sigma * sqrt(edf / chi2((1 + confidence) / 2, edf))
 //   sigma_upper = sigma * sqrt(edf / chi2((1 - confidence) / 2, edf))
-// (NIST SP 1065, eq. 45), with exact chi-squared quantiles from Boost.Math.
+// (NIST SP 1065, eq. 45), with exact chi-squared quantiles from Boost.Math (Wilson-Hilferty
+// from 1e8 degrees of freedom on, within 5e-14 of them, where Boost's series stops converging).
 // Throws std::invalid_argument for edf <= 0, confidence outside (0, 1) or deviation < 0.
 DeviationBounds chi_squared_bounds(double deviation, double edf, double confidence);
 

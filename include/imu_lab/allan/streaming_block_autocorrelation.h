@@ -38,7 +38,8 @@ class BlockMeanAutocorrelation {
   BlockSeriesSummary summary(std::size_t tau_index) const;  // closed segments and the open one
   std::size_t heap_bytes() const;
   void save(BinaryWriter& out) const;
-  void load(BinaryReader& in);
+  // processed_count: the level's points already folded in (checks where the next ones resume).
+  void load(BinaryReader& in, std::int64_t processed_count);
 
  private:
   // One update's plain sums for a whole chain: lane d belongs to the d-times differenced series.

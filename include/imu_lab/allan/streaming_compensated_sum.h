@@ -24,8 +24,8 @@ class CompensatedSum {
     out.put_f64(compensation_);
   }
   void load(BinaryReader& in) {
-    sum_ = in.get_f64();
-    compensation_ = in.get_f64();
+    sum_ = in.get_finite_f64();
+    compensation_ = in.get_finite_f64();
   }
 
  private:

@@ -33,7 +33,8 @@ class DifferenceAccumulator {
   std::size_t heap_bytes() const;
 
   void save(BinaryWriter& out) const;
-  void load(BinaryReader& in);
+  // processed_count: the level's points already folded in (checks where the next ones resume).
+  void load(BinaryReader& in, std::int64_t processed_count);
 
  private:
   int order_;

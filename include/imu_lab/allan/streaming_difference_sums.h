@@ -41,7 +41,7 @@ struct DifferenceSums {
   void load(BinaryReader& in) {
     squares.load(in);
     values.load(in);
-    count = in.get_i64();
+    count = in.get_count();
   }
 };
 

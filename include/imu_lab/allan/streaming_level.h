@@ -33,6 +33,7 @@ class ResolutionLevel {
   void restart_segment();
 
   int level() const { return level_; }
+  std::int64_t phase_count() const { return ring_.count(); }  // of the open segment, its point 0 included
   double phase_scale() const { return phase_scale_; }  // 2^-level: level-0 phase to this level's units
   const std::vector<int>& averaging_factors() const { return averaging_factors_; }
   const DifferenceAccumulator& allan() const { return allan_; }

@@ -20,8 +20,15 @@ enum class StampPolicy {
 
 enum class TauSpacing {
   kLogarithmic,  // round(10^(i / points_per_decade)), duplicates removed
-  kEveryM,       // every m from 1 (meant for small data)
+  kEveryM,       // every m from 1 (meant for small data); beyond the exact limit every m a level tells apart
 };
+
+constexpr double kMaxPointsPerDecade = 1000.0;
+// Per channel the state holds about 65 doubles per unit of the exact limit (the B1 history, the
+// rings and heads of the levels): 2^20 is about 0.5 GB.
+constexpr int kMaxExactAveragingFactor = 1 << 20;
+// Every-m spacing keeps every factor up to the limit (and half as many per level above it).
+constexpr int kMaxEveryMExactFactor = 4096;
 
 struct StreamingOptions {
   std::size_t channel_count = 6;

@@ -27,6 +27,7 @@ class PhaseHistory {
   // one included; empty when that segment is held only at a coarser level.
   std::vector<double> phase_at_level(int level) const;
 
+  std::int64_t open_segment_count() const { return open_.level0_count; }  // level-0 points pushed
   std::size_t heap_bytes() const;
   void save(BinaryWriter& out) const;
   void load(BinaryReader& in);

@@ -57,6 +57,7 @@ class PhaseRing {
   const double* point(std::int64_t index) const { return values_.data() + (index - first_index_); }
   std::int64_t count() const { return count_; }  // phase points pushed since clear()
   std::int64_t newest() const { return count_ - 1; }
+  std::int64_t oldest_stored() const { return first_index_; }  // at() and point() reach no further back
   std::size_t history() const { return history_; }
   std::size_t heap_bytes() const { return values_.capacity() * sizeof(double); }
 
@@ -67,7 +68,7 @@ class PhaseRing {
   }
   void load(BinaryReader& in) {
     count_ = in.get_i64();
-    const std::vector<double> stored_points = in.get_f64s();
+    const std::vector<double> stored_points = in.get_finite_f64s();
     if (count_ < 0 || stored_points.size() > values_.size() || stored_points.size() > static_cast<std::size_t>(count_) ||
         stored_points.size() < std::min<std::size_t>(static_cast<std::size_t>(count_), history_)) {
       in.fail("phase window of another length");
@@ -88,6 +89,15 @@ class PhaseRing {
   std::int64_t first_index_ = 0;  // index of values_[0]
   std::int64_t count_ = 0;
 };
+
+// Whether `end` can be where the next block of lag m ends (its first ends at order * m) once the
+// points before processed_count are folded in: still the segment's first, or the first past the
+// processed points. A checkpoint claiming anything else would reach back before the history.
+inline bool is_next_block_end(std::int64_t end, int order, int m, std::int64_t processed_count) {
+  const std::int64_t first_end = static_cast<std::int64_t>(order) * m;
+  if (end == first_end) return true;
+  return end > first_end && (end - first_end) % m == 0 && end >= processed_count && end - processed_count < m;
+}
 
 // Difference of order `order` (2: Allan, 3: Hadamard) at lag m ending at phase index `newest`:
 // sum_j (-1)^j C(order, j) x[newest - j m].
