@@ -65,23 +65,10 @@ def term_cell(terms, term, symbol, unit_key):
 
 
 def white_equivalent_cell(fit, unit_key):
-    """N plus, in power, each Markov term with T_c below twice tau0: white noise behind the
-    sensor's low-pass, which the fit cannot tell from white noise (kalibr_imu.yaml's density)."""
-    tau0_s = fit.get("tau0_s")
-    power, found = 0.0, False
-    for name, values in fit.get("terms", {}).items():
-        if values.get("status") != "present":
-            continue
-        if name == "white_rate":
-            amplitude = values.get(f"N_{unit_key}")
-        elif name.startswith("markov") and tau0_s and values.get("T_c_s", float("inf")) < 2.0 * tau0_s:
-            amplitude = values.get(f"q_c_T_c_{unit_key}")
-        else:
-            continue
-        if amplitude is not None:
-            power += amplitude * amplitude
-            found = True
-    return f"{math.sqrt(power):.3g}" if found else "–"
+    """noise.yaml's white-equivalent N: the fitted N plus the Markov terms the curve cannot tell
+    from white noise (kalibr_imu.yaml's density)."""
+    value = fit.get("white_equivalent", {}).get(f"N_{unit_key}")
+    return f"{value:.3g}" if value is not None else "–"
 
 
 def noise_section(report, profile):

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/yaml_fields.h"
 
 namespace imu_lab {
 namespace calib {
@@ -32,41 +33,15 @@ Eigen::Matrix3d block(const ParameterVector& values, int offset) {
   return m;
 }
 
-Eigen::Vector3d read_vector(const YAML::Node& node, const std::string& path, const std::string& key) {
-  if (!node || !node.IsSequence() || node.size() != 3) throw ConfigError(path, key, "must be a list of 3 numbers");
-  Eigen::Vector3d v;
-  for (int k = 0; k < 3; ++k) {
-    const YAML::Node element = node[k];
-    if (!element.IsScalar() || !YAML::convert<double>::decode(element, v[k])) {
-      throw ConfigError(path, key + "[" + std::to_string(k) + "]", "must be a number");
-    }
-    if (!std::isfinite(v[k])) throw ConfigError(path, key, "must be finite");
-  }
-  return v;
-}
-
-Eigen::Matrix3d read_matrix(const YAML::Node& node, const std::string& path, const std::string& key) {
-  if (!node || !node.IsSequence() || node.size() != 3) throw ConfigError(path, key, "must be 3 rows of 3 numbers");
-  Eigen::Matrix3d m;
-  for (int row = 0; row < 3; ++row) {
-    m.row(row) = read_vector(node[row], path, key + "[" + std::to_string(row) + "]").transpose();
-  }
-  return m;
-}
-
-TriadCalibration read_triad(const YAML::Node& node, const std::string& path, const std::string& triad,
-                            const std::string& bias_key) {
-  if (!node || !node.IsMap()) throw ConfigError(path, triad, "missing (a map with " + bias_key + " and scale_misalignment)");
+TriadCalibration read_triad(const YamlFields& file, const std::string& triad_key, const std::string& bias_key) {
+  const YamlFields triad = file.child(triad_key);
   TriadCalibration calibration;
-  calibration.bias = read_vector(node[bias_key], path, triad + "." + bias_key);
-  calibration.scale_misalignment = read_matrix(node["scale_misalignment"], path, triad + ".scale_misalignment");
+  calibration.bias = triad.per_axis(bias_key, false);
+  calibration.scale_misalignment = triad.matrix3("scale_misalignment");
   if (std::abs(calibration.scale_misalignment.determinant()) < 1e-6) {
-    throw ConfigError(path, triad + ".scale_misalignment", "is singular: it cannot be inverted for the correction");
+    triad.fail("scale_misalignment", "is singular: it cannot be inverted for the correction");
   }
-  if (node["g_sensitivity_rad_s_per_m_s2"]) {
-    calibration.g_sensitivity =
-        read_matrix(node["g_sensitivity_rad_s_per_m_s2"], path, triad + ".g_sensitivity_rad_s_per_m_s2");
-  }
+  calibration.g_sensitivity = triad.matrix3_or_zero("g_sensitivity_rad_s_per_m_s2");
   return calibration;
 }
 
@@ -125,27 +100,18 @@ std::string calibration_yaml(const CalibrationResult& result) {
 }
 
 ImuCalibration load_calibration(const std::string& path) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& error) {
-    throw ConfigError(path, "(file)", std::string("cannot be read as YAML: ") + error.what());
-  }
+  const YAML::Node root = load_yaml_file(path);
   // A scalar or a list at the top (a truncated or wrong file) has no keys to look up.
   if (!root.IsMap()) throw ConfigError(path, "(file)", "must be a YAML map of keys (write the file with fit_calibration)");
-  const YAML::Node format = root["format"];
-  if (!format.IsScalar() || format.Scalar() != kFormat) {
-    throw ConfigError(path, "format", std::string("must be ") + kFormat + " (write the file with fit_calibration)");
+  const YamlFields file(root, "", path);
+  if (!file.has("format") || file.text("format") != kFormat) {
+    file.fail("format", std::string("must be ") + kFormat + " (write the file with fit_calibration)");
   }
-  try {
-    ImuCalibration calibration;
-    calibration.gyro = read_triad(root["gyro"], path, "gyro", "bias_rad_s");
-    calibration.accelerometer = read_triad(root["accelerometer"], path, "accelerometer", "bias_m_s2");
-    calibration.accelerometer.g_sensitivity.setZero();
-    return calibration;
-  } catch (const YAML::Exception& error) {
-    throw ConfigError(path, "(values)", std::string("not numbers: ") + error.what());
-  }
+  ImuCalibration calibration;
+  calibration.gyro = read_triad(file, "gyro", "bias_rad_s");
+  calibration.accelerometer = read_triad(file, "accelerometer", "bias_m_s2");
+  calibration.accelerometer.g_sensitivity.setZero();
+  return calibration;
 }
 
 }  // namespace calib

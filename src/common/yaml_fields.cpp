@@ -120,9 +120,12 @@ Eigen::Vector3d YamlFields::per_axis_or_zero(const std::string& key) const {
 }
 
 Eigen::Matrix3d YamlFields::matrix3_or_zero(const std::string& key) const {
-  Eigen::Matrix3d result = Eigen::Matrix3d::Zero();
-  if (!has(key)) return result;
-  const YAML::Node value = node_[key];
+  return has(key) ? matrix3(key) : Eigen::Matrix3d::Zero();
+}
+
+Eigen::Matrix3d YamlFields::matrix3(const std::string& key) const {
+  Eigen::Matrix3d result;
+  const YAML::Node value = raw(key);
   if (!value.IsSequence() || value.size() != 3) fail(key, "expected a 3x3 matrix (three rows)");
   for (int r = 0; r < 3; ++r) {
     const std::string row_key = key + "[" + std::to_string(r) + "]";

@@ -37,23 +37,31 @@ void write_pair(std::ostringstream& out, const std::string& sensor, const std::s
       << "\n";
 }
 
+// One axis's candidate: the white-equivalent density for N (white_equivalent.h), else the
+// term's value, or its upper bound when the fit found it absent. NaN when there is none.
+KalibrValue axis_kalibr_value(const FitResult& fit, TermKind kind) {
+  KalibrValue candidate;
+  candidate.value = std::nan("");
+  if (kind == TermKind::kWhiteRate) {
+    candidate.value = white_equivalent_density(fit);
+    if (std::isfinite(candidate.value)) return candidate;
+  }
+  const TermEstimate* term = fit.find(term_kind_name(kind));
+  if (term == nullptr) return candidate;
+  candidate.is_upper_bound = term->status != TermStatus::kPresent;
+  candidate.value = candidate.is_upper_bound ? term->amplitude.upper_bound : term->amplitude.value;
+  return candidate;
+}
+
 }  // namespace
 
 KalibrValue kalibr_value(const TriadFit& triad, TermKind kind) {
   KalibrValue result;
   result.value = -1.0;
   for (int axis = 0; axis < 3; ++axis) {
-    const TermEstimate* term = triad.axes[axis].find(term_kind_name(kind));
-    const double white_equivalent =
-        kind == TermKind::kWhiteRate ? white_equivalent_density(triad.axes[axis]) : std::nan("");
-    if (term == nullptr && !std::isfinite(white_equivalent)) continue;
-    const bool bound = !std::isfinite(white_equivalent) && term->status != TermStatus::kPresent;
-    const double value = std::isfinite(white_equivalent) ? white_equivalent
-                         : bound                         ? term->amplitude.upper_bound
-                                                         : term->amplitude.value;
-    if (std::isfinite(value) && value > result.value) {
-      result.value = value;
-      result.is_upper_bound = bound;
+    const KalibrValue candidate = axis_kalibr_value(triad.axes[axis], kind);
+    if (std::isfinite(candidate.value) && candidate.value > result.value) {
+      result = candidate;
       result.axis = axis;
     }
   }

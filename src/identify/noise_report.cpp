@@ -8,6 +8,7 @@
 
 #include "imu_lab/common/atomic_file.h"
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/identify/white_equivalent.h"
 
 namespace imu_lab {
 namespace identify {
@@ -75,6 +76,21 @@ void emit_graphical(YAML::Emitter& out, SensorKind sensor, const GraphicalReadin
   out << YAML::EndMap;
 }
 
+// The white density a filter designer needs (white_equivalent.h), next to the fitted terms it
+// is made of; kalibr_imu.yaml carries the same number.
+void emit_white_equivalent(YAML::Emitter& out, SensorKind sensor, const FitResult& fit) {
+  const double density = white_equivalent_density(fit);
+  if (!std::isfinite(density)) return;
+  out << YAML::Key << "white_equivalent" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "note" << YAML::Value
+      << "N plus, in power, each Markov term with T_c below twice tau0 (white noise behind the sensor's "
+         "low-pass, which the curve cannot tell from white); kalibr_imu.yaml's noise density";
+  for (const UnitScale& unit : amplitude_units(sensor, TermKind::kWhiteRate)) {
+    emit_number(out, parameter_key(amplitude_symbol(TermKind::kWhiteRate), unit.key), density * unit.per_si);
+  }
+  out << YAML::EndMap;
+}
+
 void emit_axis(YAML::Emitter& out, SensorKind sensor, const std::string& name,
                const FitResult& fit) {
   out << YAML::Key << name << YAML::Value << YAML::BeginMap;
@@ -93,6 +109,7 @@ void emit_axis(YAML::Emitter& out, SensorKind sensor, const std::string& name,
     emit_term(out, sensor, term, fit.options.upper_bound_confidence);
   }
   out << YAML::EndMap;
+  emit_white_equivalent(out, sensor, fit);
   emit_graphical(out, sensor, fit.graphical);
   out << YAML::Key << "warnings" << YAML::Value << YAML::BeginSeq;
   for (const std::string& warning : fit.warnings) out << warning;

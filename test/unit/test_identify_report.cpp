@@ -67,6 +67,9 @@ TEST(IdentifyReport, NumbersRoundTripThroughTheYaml) {
               1e-9);
   EXPECT_NEAR(values.at("triads.gyro.axes.gyro_x.terms.white_rate.N_deg_per_sqrt_h"),
               1e-4 * 180.0 / 3.14159265358979323846 * 60.0, 1e-6);
+  // No Markov term here, so the white-equivalent density is N itself.
+  EXPECT_DOUBLE_EQ(values.at("triads.gyro.axes.gyro_y.white_equivalent.N_rad_s_per_sqrt_hz"),
+                   values.at("triads.gyro.axes.gyro_y.terms.white_rate.N_rad_s_per_sqrt_hz"));
   EXPECT_THROW(read_noise_report_values("a: 1"), InputError);
 }
 
@@ -149,6 +152,10 @@ TEST(IdentifyKalibr, NoiseDensityAddsMarkovTermsFasterThanTau0InPower) {
   const KalibrImuNoise noise = kalibr_noise(gyro, gyro, 200.0, "/imu/raw");
   EXPECT_DOUBLE_EQ(noise.gyroscope_noise_density.value, merged);
   EXPECT_FALSE(noise.gyroscope_noise_density.is_upper_bound);
+  // noise.yaml carries the same density per axis (the demo's index reads it from there).
+  const auto values = read_noise_report_values(format_noise_report({gyro}, {"test", 100.0}));
+  EXPECT_DOUBLE_EQ(values.at("triads.gyro.axes.gyro_x.white_equivalent.N_rad_s_per_sqrt_hz"), merged);
+  EXPECT_DOUBLE_EQ(values.at("triads.gyro.axes.gyro_z.white_equivalent.N_rad_s_per_sqrt_hz"), 2e-5);
 
   // N absent (the fit gave all of it to the fast Markov term): the density is still a value.
   for (int axis = 0; axis < 3; ++axis) {

@@ -30,6 +30,7 @@ class YamlFields {
   // A scalar (same on all axes) or a sequence of three numbers.
   Eigen::Vector3d per_axis(const std::string& key, bool non_negative_only) const;
   Eigen::Vector3d per_axis_or_zero(const std::string& key) const;
+  Eigen::Matrix3d matrix3(const std::string& key) const;  // three rows of three numbers
   Eigen::Matrix3d matrix3_or_zero(const std::string& key) const;
 
   // One scalar element of a sequence; key labels it in messages ("range[0]").
