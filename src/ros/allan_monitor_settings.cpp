@@ -5,19 +5,11 @@
 
 #include "imu_lab/allan/streaming_snapshot.h"
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/ros/node_parameters.h"
 
 namespace imu_lab {
 namespace ros_io {
 namespace {
-
-template <class Value>
-Value positive_parameter(const ros::NodeHandle& private_node, const std::string& name, Value fallback) {
-  const Value value = private_node.param(name, fallback);
-  if (!(value > 0) || !std::isfinite(static_cast<double>(value))) {
-    throw ConfigError(private_node.resolveName(name), name, "must be a positive number");
-  }
-  return value;
-}
 
 std::string default_report_dir() {
   if (const char* ros_home = std::getenv("ROS_HOME")) return std::string(ros_home) + "/allan_report";
@@ -39,32 +31,30 @@ allan::Statistic parse_statistic(const std::string& key, const std::string& name
 AllanMonitorSettings load_allan_monitor_settings(const ros::NodeHandle& private_node) {
   AllanMonitorSettings settings;
   settings.input = parse_allan_input(private_node.resolveName("input_type"),
-                                     private_node.param<std::string>("input_type", "imu"));
-  std::vector<std::string> statistic_names;
-  if (private_node.getParam("statistics", statistic_names)) {
-    if (statistic_names.empty()) {
-      throw ConfigError(private_node.resolveName("statistics"), "statistics", "lists no statistic");
-    }
+                                     parameter<std::string>(private_node, "input_type", "imu"));
+  if (private_node.hasParam("statistics")) {
+    const auto statistic_names = parameter(private_node, "statistics", std::vector<std::string>());
+    if (statistic_names.empty()) throw parameter_error(private_node, "statistics", "lists no statistic");
     settings.statistics.clear();
     for (const auto& name : statistic_names) {
       settings.statistics.push_back(parse_statistic(private_node.resolveName("statistics"), name));
     }
   }
   settings.publish_period_s = positive_parameter(private_node, "publish_period_s", settings.publish_period_s);
-  settings.report_dir = private_node.param<std::string>("report_dir", default_report_dir());
-  settings.plot = private_node.param("plot", settings.plot);
-  settings.checkpoint_path = private_node.param<std::string>("checkpoint_path", "");
+  settings.report_dir = parameter(private_node, "report_dir", default_report_dir());
+  settings.plot = parameter(private_node, "plot", settings.plot);
+  settings.checkpoint_path = parameter<std::string>(private_node, "checkpoint_path", "");
   settings.checkpoint_period_s = positive_parameter(private_node, "checkpoint_period_s", settings.checkpoint_period_s);
-  settings.resume = private_node.param("resume", settings.resume);
+  settings.resume = parameter(private_node, "resume", settings.resume);
   if (settings.resume && settings.checkpoint_path.empty()) {
-    throw ConfigError(private_node.resolveName("resume"), "resume", "is true but checkpoint_path is not set");
+    throw parameter_error(private_node, "resume", "is true but checkpoint_path is not set");
   }
   settings.queue_size = positive_parameter(private_node, "queue_size", settings.queue_size);
-  settings.identify.enabled = private_node.param("identify", settings.identify.enabled);
-  settings.identify.bootstrap_replicas = private_node.param("bootstrap_replicas", settings.identify.bootstrap_replicas);
+  settings.identify.enabled = parameter(private_node, "identify", settings.identify.enabled);
+  settings.identify.bootstrap_replicas = parameter(private_node, "bootstrap_replicas", settings.identify.bootstrap_replicas);
   const std::string replicas_problem = bootstrap_replicas_problem(settings.identify.bootstrap_replicas);
   if (!replicas_problem.empty()) {
-    throw ConfigError(private_node.resolveName("bootstrap_replicas"), "bootstrap_replicas", replicas_problem);
+    throw parameter_error(private_node, "bootstrap_replicas", replicas_problem);
   }
 
   allan::StreamingOptions& engine = settings.engine;

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "imu_lab/calib/calibration_file.h"
-#include "imu_lab/common/config_error.h"
+#include "imu_lab/ros/node_parameters.h"
 
 namespace imu_lab {
 namespace ros_io {
@@ -50,13 +50,12 @@ sensor_msgs::Imu corrected_message(const sensor_msgs::Imu& input, const calib::I
 }
 
 CalibrationCorrectorNode::CalibrationCorrectorNode(ros::NodeHandle& node, ros::NodeHandle& private_node) {
-  if (!private_node.getParam("calibration_file", calibration_file_) || calibration_file_.empty()) {
-    throw ConfigError(private_node.resolveName("calibration_file"), "calibration_file",
-                      "required: the YAML written by fit_calibration");
+  calibration_file_ = parameter<std::string>(private_node, "calibration_file", "");
+  if (calibration_file_.empty()) {
+    throw parameter_error(private_node, "calibration_file", "required: the YAML written by fit_calibration");
   }
   calibration_ = calib::load_calibration(calibration_file_);
-  const int queue_size = private_node.param("queue_size", 1000);
-  if (queue_size <= 0) throw ConfigError(private_node.resolveName("queue_size"), "queue_size", "must be positive");
+  const int queue_size = positive_parameter(private_node, "queue_size", 1000);
 
   publisher_ = node.advertise<sensor_msgs::Imu>("imu/corrected", queue_size);
   subscriber_ = node.subscribe("imu/thermal", queue_size, &CalibrationCorrectorNode::on_imu, this);

@@ -4,44 +4,29 @@
 #include <boost/make_shared.hpp>
 #include <cmath>
 
-#include "imu_lab/common/config_error.h"
 #include "imu_lab/ros/config_paths.h"
 #include "imu_lab/ros/emulator_messages.h"
+#include "imu_lab/ros/node_parameters.h"
 
 namespace imu_lab {
 namespace ros_io {
-namespace {
-
-template <class Value>
-Value positive_parameter(ros::NodeHandle& private_node, const std::string& name, Value fallback) {
-  Value value = fallback;
-  private_node.param(name, value, fallback);
-  if (!(value > 0) || !std::isfinite(static_cast<double>(value))) {
-    throw ConfigError(private_node.resolveName(name), name, "must be a positive number");
-  }
-  return value;
-}
-
-}  // namespace
 
 ImuEmulatorNode::ImuEmulatorNode(ros::NodeHandle& node, ros::NodeHandle& private_node) {
-  const std::string profile_name = private_node.param<std::string>("profile", "tactical_mems");
-  const std::string scenario_name = private_node.param<std::string>("scenario", "static");
+  const std::string profile_name = parameter<std::string>(private_node, "profile", "tactical_mems");
+  const std::string scenario_name = parameter<std::string>(private_node, "scenario", "static");
   const auto profile = emulator::load_sensor_profile(resolve_config("sensors", profile_name));
   const auto scenario = emulator::load_scenario(resolve_config("scenarios", scenario_name));
 
   emulator::EmulatorSettings settings;
   settings.rate_hz = positive_parameter(private_node, "rate_hz", 200.0);
-  int seed = 1;
-  private_node.param("seed", seed, 1);
-  settings.seed = static_cast<std::uint64_t>(seed);
-  double start_time_s = private_node.param("start_time_s", 0.0);
+  settings.seed = static_cast<std::uint64_t>(parameter(private_node, "seed", 1));
+  const double start_time_s = non_negative_parameter(private_node, "start_time_s", 0.0);
   settings.start_time_s = start_time_s > 0.0 ? start_time_s : ros::WallTime::now().toSec();
   realtime_factor_ = positive_parameter(private_node, "realtime_factor", 1.0);
-  duration_s_ = std::max(0.0, private_node.param("duration_s", 0.0));
-  frame_id_ = private_node.param<std::string>("frame_id", "imu_link");
-  publish_truth_ = private_node.param("publish_truth", true);
-  publish_increments_ = private_node.param("publish_increments", true);
+  duration_s_ = non_negative_parameter(private_node, "duration_s", 0.0);
+  frame_id_ = parameter<std::string>(private_node, "frame_id", "imu_link");
+  publish_truth_ = parameter(private_node, "publish_truth", true);
+  publish_increments_ = parameter(private_node, "publish_increments", true);
   emulator_ = std::make_unique<emulator::ImuEmulator>(profile, scenario, settings);
 
   // Large queues: a burst after a stall must not drop samples.

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <utility>
 
-#include "imu_lab/common/config_error.h"
+#include "imu_lab/ros/node_parameters.h"
 
 namespace imu_lab {
 namespace ros_io {
@@ -24,14 +24,13 @@ std::string format(const char* pattern, double value) {
 
 InputHealthSettings load_input_health_settings(const ros::NodeHandle& private_node, double default_gap_factor) {
   InputHealthSettings settings;
-  settings.expected_rate_hz = private_node.param("expected_rate_hz", 0.0);
+  settings.expected_rate_hz = parameter(private_node, "expected_rate_hz", 0.0);
   if (!(settings.expected_rate_hz >= 0.0) || !std::isfinite(settings.expected_rate_hz)) {
-    throw ConfigError(private_node.resolveName("expected_rate_hz"), "expected_rate_hz",
-                      "must be a rate in Hz, or 0 to learn it from the first samples");
+    throw parameter_error(private_node, "expected_rate_hz", "must be a rate in Hz, or 0 to learn it from the first samples");
   }
-  settings.gap_factor = private_node.param("gap_factor", default_gap_factor);
+  settings.gap_factor = parameter(private_node, "gap_factor", default_gap_factor);
   if (!(settings.gap_factor > 1.0) || !std::isfinite(settings.gap_factor)) {
-    throw ConfigError(private_node.resolveName("gap_factor"), "gap_factor", "must be a number above 1");
+    throw parameter_error(private_node, "gap_factor", "must be a number above 1");
   }
   return settings;
 }

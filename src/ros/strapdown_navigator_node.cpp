@@ -2,21 +2,14 @@
 
 #include <cmath>
 
-#include "imu_lab/common/config_error.h"
 #include "imu_lab/ros/navigation_parameters.h"
+#include "imu_lab/ros/node_parameters.h"
 
 namespace imu_lab {
 namespace ros_io {
 namespace {
 
 constexpr double kLogThrottle_s = 5.0;
-
-template <class Value>
-Value positive_parameter(const ros::NodeHandle& private_node, const std::string& name, Value fallback) {
-  const Value value = private_node.param(name, fallback);
-  if (!(value > 0)) throw ConfigError(private_node.resolveName(name), name, "must be a positive number");
-  return value;
-}
 
 }  // namespace
 
@@ -25,15 +18,15 @@ StrapdownNavigatorNode::StrapdownNavigatorNode(ros::NodeHandle& node, ros::NodeH
   session_ = std::make_unique<NavigationSession>(settings);
   world_ = std::make_unique<LocalEnuFrame>(settings.navigator.earth, settings.latitude_rad, settings.longitude_rad,
                                            settings.height_m);
-  frames_.world = private_node.param<std::string>("world_frame", frames_.world);
-  frames_.body = private_node.param<std::string>("body_frame", frames_.body);
-  publish_tf_ = private_node.param("publish_tf", true);
-  attitude_only_ = private_node.param("attitude_only", false);
+  frames_.world = parameter(private_node, "world_frame", frames_.world);
+  frames_.body = parameter(private_node, "body_frame", frames_.body);
+  publish_tf_ = parameter(private_node, "publish_tf", true);
+  attitude_only_ = parameter(private_node, "attitude_only", false);
   path_interval_s_ = positive_parameter(private_node, "path_interval_s", 1.0);
   path_max_poses_ = static_cast<std::size_t>(positive_parameter(private_node, "path_max_poses", 3600));
   const int queue_size = positive_parameter(private_node, "queue_size", 2000);
   const InputType input_type =
-      parse_input_type(private_node.resolveName("input_type"), private_node.param<std::string>("input_type", "imu"));
+      parse_input_type(private_node.resolveName("input_type"), parameter<std::string>(private_node, "input_type", "imu"));
   path_.header.frame_id = frames_.world;
 
   odometry_publisher_ = node.advertise<nav_msgs::Odometry>("nav/odometry", queue_size);
@@ -44,7 +37,7 @@ StrapdownNavigatorNode::StrapdownNavigatorNode(ros::NodeHandle& node, ros::NodeH
   } else {
     input_subscriber_ = node.subscribe("imu/increment", queue_size, &StrapdownNavigatorNode::on_increment, this);
   }
-  if (private_node.param("reference_height_topic", false)) {
+  if (parameter(private_node, "reference_height_topic", false)) {
     reference_height_subscriber_ =
         node.subscribe("reference_height", 10, &StrapdownNavigatorNode::on_reference_height, this);
   }

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "imu_lab/common/config_error.h"
 #include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/ros/node_parameters.h"
 #include "imu_lab/thermal/thermal_model_yaml.h"
 
 namespace imu_lab {
@@ -28,16 +28,10 @@ void set_vector(geometry_msgs::Vector3& message, const Eigen::Vector3d& v) { mes
 }  // namespace
 
 ThermalCompensatorNode::ThermalCompensatorNode(ros::NodeHandle& node, ros::NodeHandle& private_node) {
-  if (!private_node.getParam("model_file", model_file_) || model_file_.empty()) {
-    throw ConfigError(private_node.resolveName("model_file"), "model_file", "required: the YAML written by fit_thermal");
-  }
-  const double max_age_s = private_node.param("max_temperature_age_s", 1.0);
-  if (!(max_age_s > 0.0) || !std::isfinite(max_age_s)) {
-    throw ConfigError(private_node.resolveName("max_temperature_age_s"), "max_temperature_age_s",
-                      "must be a positive number of seconds");
-  }
-  const int queue_size = private_node.param("queue_size", 1000);
-  if (queue_size <= 0) throw ConfigError(private_node.resolveName("queue_size"), "queue_size", "must be positive");
+  model_file_ = parameter<std::string>(private_node, "model_file", "");
+  if (model_file_.empty()) throw parameter_error(private_node, "model_file", "required: the YAML written by fit_thermal");
+  const double max_age_s = positive_parameter(private_node, "max_temperature_age_s", 1.0);
+  const int queue_size = positive_parameter(private_node, "queue_size", 1000);
   compensator_ = std::make_unique<thermal::ThermalCompensator>(thermal::load_thermal_model(model_file_), max_age_s);
 
   publisher_ = node.advertise<sensor_msgs::Imu>("imu/thermal", queue_size);
