@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/format_number.h"
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/ros/bag_navigation.h"
 #include "imu_lab/ros/navigation_csv.h"
@@ -100,12 +101,16 @@ void print_summary(const CommandLine& c, const imu_lab::ros_io::BagNavigationRes
               static_cast<unsigned long long>(n.invalid), static_cast<unsigned long long>(n.unordered),
               static_cast<unsigned long long>(n.gaps));
   const auto& a = *result.alignment;
-  std::printf("alignment (%s, %.1f s, ends %s): roll %.6f pitch %.6f yaw %.6f deg; predicted 1-sigma error "
-              "E/N/U %.3g %.3g %.3g arcsec\n",
-              a.method.c_str(), a.duration_s, imu_lab::ros_io::format_stamp(a.stamp_ns).c_str(),
-              a.roll_pitch_yaw_rad.x() / kDegToRad, a.roll_pitch_yaw_rad.y() / kDegToRad,
-              a.roll_pitch_yaw_rad.z() / kDegToRad, a.predicted_error_sigma_rad.x() * kArcsecPerRad,
-              a.predicted_error_sigma_rad.y() * kArcsecPerRad, a.predicted_error_sigma_rad.z() * kArcsecPerRad);
+  // A given attitude has no predicted error (NaN): say so rather than print "nan".
+  std::string predicted = "no predicted error (heading or attitude given, not estimated)";
+  if (a.predicted_error_sigma_rad.allFinite()) {
+    const Eigen::Vector3d sigma_arcsec = a.predicted_error_sigma_rad * kArcsecPerRad;
+    predicted = "predicted 1-sigma error E/N/U " + imu_lab::format_number(sigma_arcsec.x(), 3) + " " +
+                imu_lab::format_number(sigma_arcsec.y(), 3) + " " + imu_lab::format_number(sigma_arcsec.z(), 3) + " arcsec";
+  }
+  std::printf("alignment (%s, %.1f s, ends %s): roll %.6f pitch %.6f yaw %.6f deg; %s\n", a.method.c_str(),
+              a.duration_s, imu_lab::ros_io::format_stamp(a.stamp_ns).c_str(), a.roll_pitch_yaw_rad.x() / kDegToRad,
+              a.roll_pitch_yaw_rad.y() / kDegToRad, a.roll_pitch_yaw_rad.z() / kDegToRad, predicted.c_str());
   const auto& last = result.solutions.back();
   std::printf("final (%s): lat %.9f lon %.9f deg, height %.3f m, ENU %.3f %.3f %.3f m\n",
               imu_lab::ros_io::format_stamp(last.stamp_ns).c_str(), last.latitude_rad / kDegToRad,

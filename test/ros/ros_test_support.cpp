@@ -10,7 +10,10 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <iterator>
 #include <stdexcept>
+
+#include "imu_lab/ros/config_paths.h"
 
 #ifndef IMU_LAB_BIN_DIR
 #define IMU_LAB_BIN_DIR "."
@@ -68,6 +71,22 @@ std::vector<std::string> list_directory(const std::string& path) {
   ::closedir(directory);
   std::sort(names.begin(), names.end());
   return names;
+}
+
+std::string write_quick_twelve_position_schedule(const std::string& directory) {
+  std::ifstream shipped(ros_io::resolve_config("scenarios", "multiposition_12_thesis"));
+  std::string text((std::istreambuf_iterator<char>(shipped)), std::istreambuf_iterator<char>());
+  for (const char* dwell : {"dwell_s: 102", "dwell_s: 60"}) {
+    for (std::size_t at = text.find(dwell); at != std::string::npos; at = text.find(dwell)) {
+      text.replace(at, std::string(dwell).size(), "dwell_s: 6");
+    }
+  }
+  text.replace(text.find("move_rate_deg_s: 10"), 19, "move_rate_deg_s: 90");
+  text.replace(text.find("move_acceleration_deg_s2: 20"), 28, "move_acceleration_deg_s2: 180");
+  text.replace(text.find("duration_s: 982"), 15, "duration_s: 110");
+  const std::string path = directory + "/quick_12.yaml";
+  std::ofstream(path) << text;
+  return path;
 }
 
 }  // namespace test_support

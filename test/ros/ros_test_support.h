@@ -25,6 +25,9 @@ std::string write_truncated_copy(const std::string& source, const std::string& d
 bool file_exists(const std::string& path);
 // Sorted names of the entries of a directory (without . and ..).
 std::vector<std::string> list_directory(const std::string& path);
+// The thesis's 12 orientations (config/scenarios/multiposition_12_thesis.yaml) with 6 s dwells and
+// fast moves, written into `directory`: a calibration bag of about 110 s. Returns its path.
+std::string write_quick_twelve_position_schedule(const std::string& directory);
 
 }  // namespace test_support
 }  // namespace imu_lab

@@ -5,6 +5,7 @@
 // its writing; the temporary files a killed writer leaves beside the targets are allowed.
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -12,6 +13,7 @@
 #include <fcntl.h>
 #include <fstream>
 #include <map>
+#include <utility>
 #include <thread>
 
 #include "imu_lab/ros/imu_bag_reader.h"
@@ -30,6 +32,7 @@ using imu_lab::test_support::list_directory;
 using imu_lab::test_support::read_file;
 using imu_lab::test_support::run_tool;
 using imu_lab::test_support::scratch_directory;
+using imu_lab::test_support::write_quick_twelve_position_schedule;
 
 constexpr int kKillMoments = 8;
 
@@ -160,6 +163,31 @@ TEST(AtomicWritesKilled, AllanLeavesEachReportFileOldOrWholeNew) {
   ASSERT_GE(new_files.size(), 10u);
   const Outcomes outcomes = kill_at_spread_moments("allan", {new_bag, "--no-plot", "--out", report}, report,
                                                    run_time_s, kept_files(report), new_files);
+  EXPECT_GE(outcomes.kills, kKillMoments / 2);
+  EXPECT_GE(outcomes.old_files, 1);
+}
+
+// fit_calibration writes the calibration, the Kalibr/OpenVINS chain and the report one by one
+// after its fit: each is found old or new, whole.
+TEST(AtomicWritesKilled, FitCalibrationLeavesEachFileOldOrWholeNew) {
+  const std::string directory = scratch_directory();
+  const std::string schedule = write_quick_twelve_position_schedule(directory);
+  const std::string old_bag = directory + "/old.bag", new_bag = directory + "/new.bag";
+  for (const auto& [bag, seed] : {std::pair<std::string, int>{old_bag, 5}, {new_bag, 6}}) {
+    const auto made = run_tool("emulate", "--profile tactical_mems --scenario " + schedule + " --rate-hz 100 --seed " +
+                                              std::to_string(seed) + " --no-truth --out " + bag);
+    ASSERT_EQ(made.exit_code, 0) << made.output;
+  }
+  const std::string kept = directory + "/kept", reference = directory + "/reference";
+  for (const std::string& folder : {kept, reference}) ASSERT_EQ(::mkdir(folder.c_str(), 0755), 0) << folder;
+  ASSERT_EQ(run_tool("fit_calibration", old_bag + " --schedule " + schedule + " --out " + kept + "/imu.yaml").exit_code, 0);
+  const double run_time_s =
+      seconds_to_run("fit_calibration", new_bag + " --schedule " + schedule + " --out " + reference + "/imu.yaml");
+  const FileContents new_files = kept_files(reference);
+  ASSERT_EQ(new_files.size(), 3u);
+  const Outcomes outcomes = kill_at_spread_moments(
+      "fit_calibration", {new_bag, "--schedule", schedule, "--out", kept + "/imu.yaml"}, kept, run_time_s,
+      kept_files(kept), new_files);
   EXPECT_GE(outcomes.kills, kKillMoments / 2);
   EXPECT_GE(outcomes.old_files, 1);
 }

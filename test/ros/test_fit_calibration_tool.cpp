@@ -17,23 +17,7 @@ using imu_lab::test_support::file_exists;
 using imu_lab::test_support::read_file;
 using imu_lab::test_support::run_tool;
 using imu_lab::test_support::scratch_directory;
-
-// The thesis's 12 orientations with short dwells and fast moves: a quick bag.
-std::string write_quick_schedule(const std::string& directory) {
-  std::ifstream shipped(imu_lab::ros_io::resolve_config("scenarios", "multiposition_12_thesis"));
-  std::string text((std::istreambuf_iterator<char>(shipped)), std::istreambuf_iterator<char>());
-  for (const char* dwell : {"dwell_s: 102", "dwell_s: 60"}) {
-    for (std::size_t at = text.find(dwell); at != std::string::npos; at = text.find(dwell)) {
-      text.replace(at, std::string(dwell).size(), "dwell_s: 6");
-    }
-  }
-  text.replace(text.find("move_rate_deg_s: 10"), 19, "move_rate_deg_s: 90");
-  text.replace(text.find("move_acceleration_deg_s2: 20"), 28, "move_acceleration_deg_s2: 180");
-  text.replace(text.find("duration_s: 982"), 15, "duration_s: 110");
-  const std::string path = directory + "/quick_12.yaml";
-  std::ofstream(path) << text;
-  return path;
-}
+using imu_lab::test_support::write_quick_twelve_position_schedule;
 
 struct QuickBag {
   std::string directory, schedule, bag;
@@ -43,7 +27,7 @@ const QuickBag& quick_bag() {
   static const QuickBag bag = [] {
     QuickBag b;
     b.directory = scratch_directory();
-    b.schedule = write_quick_schedule(b.directory);
+    b.schedule = write_quick_twelve_position_schedule(b.directory);
     b.bag = b.directory + "/calibration.bag";
     const auto result = run_tool("emulate", "--profile tactical_mems --scenario " + b.schedule +
                                                 " --rate-hz 100 --seed 2 --out " + b.bag);
