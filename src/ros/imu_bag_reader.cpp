@@ -163,6 +163,22 @@ std::size_t OpenBag::for_each_increment(const std::string& topic,
       [&](const imu_lab::ImuIncrement& message) { on_record(to_increment_record(message)); });
 }
 
+std::size_t OpenBag::for_each_message_in_order(const std::function<void(const rosbag::MessageInstance&)>& on_message) {
+  std::size_t count = 0;
+  try {
+    rosbag::View view(*bag_);
+    for (const rosbag::MessageInstance& instance : view) {
+      on_message(instance);
+      ++count;
+    }
+  } catch (const rosbag::BagException& error) {
+    throw InputError("bag " + path_ + " is damaged after " + std::to_string(count) + " messages: " + error.what());
+  } catch (const ros::Exception& error) {
+    throw InputError("bag " + path_ + " is damaged after " + std::to_string(count) + " messages: " + error.what());
+  }
+  return count;
+}
+
 std::vector<TopicInfo> list_topics(const std::string& bag_path) { return OpenBag(bag_path).topics(); }
 
 std::string choose_imu_topic(const std::string& bag_path, const std::string& requested) {

@@ -17,6 +17,7 @@
 
 namespace rosbag {
 class Bag;
+class MessageInstance;
 }
 
 namespace imu_lab {
@@ -80,6 +81,9 @@ class OpenBag {
   std::size_t for_each_imu(const std::string& topic, const std::function<void(const ImuRecord&)>& on_record);
   std::size_t for_each_increment(const std::string& topic,
                                  const std::function<void(const IncrementRecord&)>& on_record);
+  // Every message of every topic in bag (receive-time) order, as rosbag play sends them, for a
+  // tool that rewrites a bag; a truncated or corrupt bag -> InputError as above.
+  std::size_t for_each_message_in_order(const std::function<void(const rosbag::MessageInstance&)>& on_message);
 
  private:
   std::string path_;

@@ -1,17 +1,33 @@
 // for_each_imu for tools that use every sample (bag_summary's statistics, the thermal and
-// calibration fits): one NaN/Inf value or unordered stamp would silently spoil the result, so such
-// a bag is refused with InputError naming the bag, the topic, the counts and the first bad stamp.
-// One pass: the callers only gather in on_record and compute and write after it returns, so the
-// refusal at the end of the pass still comes before anything is computed or written.
+// calibration fits, correct): one NaN/Inf value or unordered stamp would silently spoil the result,
+// so such a bag is refused with InputError naming the bag, the topic, the counts and the first bad
+// stamp. One pass: the callers only gather in on_record and compute and write after it returns, so
+// the refusal at the end of the pass still comes before anything is computed or written.
 #pragma once
 
+#include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "imu_lab/ros/imu_bag_reader.h"
 
 namespace imu_lab {
 namespace ros_io {
+
+// The check itself, for a tool that streams the IMU topic together with others (correct).
+class StrictImuCheck {
+ public:
+  // Counts a NaN/Inf sample or a stamp not after the latest one; true while no record so far
+  // (this one included) was bad, so the caller never uses a sample from the first bad one on.
+  bool accept(const ImuRecord& record);
+  // Throws the InputError described above if any record was bad.
+  void throw_if_refused(const std::string& bag_path, const std::string& topic) const;
+
+ private:
+  std::size_t non_finite_ = 0, unordered_ = 0;
+  std::optional<std::int64_t> latest_stamp_ns_, first_bad_stamp_ns_;
+};
 
 // Calls `on_record` in bag order for each message before the first bad one (so for every message
 // of a good bag), then throws if there was any. Returns the number of messages.
