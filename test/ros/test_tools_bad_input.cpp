@@ -1,5 +1,5 @@
 // The bad-input matrix across the bag-reading tools: every tool (allan, bag_summary, fit_thermal,
-// fit_calibration, navigate) given an empty, truncated, garbage or missing bag, a bag with
+// fit_calibration, navigate, correct) given an empty, truncated, garbage or missing bag, a bag with
 // several IMU topics, a wrong topic or a topic of the wrong type exits 1 with a message naming
 // the bag (and what to do), and writes nothing. Tools that cannot use NaN/Inf samples or
 // unordered stamps refuse them the same way, naming the bag and the topic (allan and navigate
@@ -30,12 +30,17 @@ struct Tool {
     if (tool == "bag_summary") return bag;
     if (tool == "fit_thermal") return bag + " --no-scale-factor --out " + out_directory + "/model.yaml";
     if (tool == "fit_calibration") return bag + " --latitude-deg 50 --out " + out_directory + "/calibration.yaml";
+    if (tool == "correct") {
+      return bag + " --calibration " + std::string(IMU_LAB_TEST_DATA_DIR) + "/calibration_example.yaml --out " +
+             out_directory + "/corrected.bag";
+    }
     return bag + " --latitude-deg 50 --longitude-deg 10 --height-m 0 --alignment-duration-s 10 --out " + out_directory +
            "/trajectory.csv";
   }
 };
 
-const std::vector<Tool> kTools = {{"allan"}, {"bag_summary"}, {"fit_thermal"}, {"fit_calibration"}, {"navigate"}};
+const std::vector<Tool> kTools = {{"allan"},           {"bag_summary"}, {"fit_thermal"},
+                                  {"fit_calibration"}, {"navigate"},    {"correct"}};
 
 // A scratch directory with inputs, and an empty one for the tools' output.
 struct Scratch {
@@ -111,8 +116,8 @@ TEST_P(ToolsBadBag, TopicOfAnotherTypeIsNamed) {
 INSTANTIATE_TEST_SUITE_P(Matrix, ToolsBadBag, ::testing::ValuesIn(kTools),
                          [](const ::testing::TestParamInfo<Tool>& info) { return std::string(info.param.name); });
 
-// bag_summary, fit_thermal and fit_calibration average or fit every sample: a NaN/Inf sample or
-// an unordered stamp would poison the result, so they refuse the bag.
+// bag_summary, fit_thermal and fit_calibration average or fit every sample, and correct would pass a
+// NaN/Inf sample or an unordered stamp on into the corrected bag: they refuse the bag.
 class StrictTools : public ToolsBadBag {};
 
 TEST_P(StrictTools, NanSamplesAreRefusedNamingTheTopic) {
@@ -134,7 +139,8 @@ TEST_P(StrictTools, UnorderedStampsAreRefusedNamingTheTopic) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Matrix, StrictTools,
-                         ::testing::Values(Tool{"bag_summary"}, Tool{"fit_thermal"}, Tool{"fit_calibration"}),
+                         ::testing::Values(Tool{"bag_summary"}, Tool{"fit_thermal"}, Tool{"fit_calibration"},
+                                           Tool{"correct"}),
                          [](const ::testing::TestParamInfo<Tool>& info) { return std::string(info.param.name); });
 
 // Samples at 100 Hz, from `from` on at `interval_ns` (a rate change) or shifted by `shift_ns` (a gap).
