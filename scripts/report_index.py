@@ -6,7 +6,7 @@
 Reads what scripts/demo left in REPORT: noise/ (allan: noise.yaml, kalibr_imu.yaml, allan.png),
 thermal/ (fit_thermal: thermal.yaml, thermal.png), calibration/ (fit_calibration:
 calibration.yaml, calibration_report.txt), navigation/ (navigate: trajectory_errors.csv,
-errors.png), rviz.png or rviz_skipped.txt. A missing part is named in the index, not skipped
+errors.png; the same drive after correct: corrected_trajectory_errors.csv, corrected_errors.png), rviz.png or rviz_skipped.txt. A missing part is named in the index, not skipped
 silently. Written beside the target and renamed into place.
 """
 import argparse
@@ -173,30 +173,42 @@ def calibration_section(report):
     return lines
 
 
-def navigation_section(report):
-    folder = os.path.join(report, "navigation")
-    path = os.path.join(folder, "trajectory_errors.csv")
-    lines = ["## Navigation: free inertial over a 10-minute drive", ""]
-    lines += figure(report, "navigation/errors.png", "Navigation error",
-                    "From the true initial attitude, raw (uncorrected) rates and specific forces, height held. "
-                    "Error against the emulator's truth.")
+def navigation_errors(report, prefix, what):
+    """One paragraph from navigation/<prefix>trajectory_errors.csv: the final and largest errors."""
+    path = os.path.join(report, "navigation", prefix + "trajectory_errors.csv")
     if not os.path.exists(path):
-        return lines + missing("navigation errors", path)
+        return missing(what, path)
     with open(path, newline="") as handle:
         rows = list(csv.DictReader(handle))
     if not rows:
-        return lines + ["*The error CSV is empty.*", ""]
+        return ["*The error CSV is empty.*", ""]
     last = rows[-1]
     horizontal = [float(r["horizontal_position_error_m"]) for r in rows]
     attitude_keys = [k for k in last if k.startswith("attitude_error")]
-    lines += [f"After {float(last['time_since_alignment_s']):.0f} s: horizontal position error "
+    lines = [f"After {float(last['time_since_alignment_s']):.0f} s: horizontal position error "
               f"{horizontal[-1]:.1f} m (max {max(horizontal):.1f} m)"]
     if attitude_keys:
         parts = ", ".join(f"{k.replace('attitude_error_', '').replace('_rad', '')} "
                           f"{float(last[k]) * ARCSEC_PER_RAD:.0f}" for k in attitude_keys)
         lines[-1] += f"; attitude error {parts} arcsec"
-    lines[-1] += ". Trajectory: [navigation/trajectory.csv](navigation/trajectory.csv)."
+    trajectory = f"navigation/{prefix}trajectory.csv"
+    lines[-1] += f". Trajectory: [{trajectory}]({trajectory})."
     lines.append("")
+    return lines
+
+
+def navigation_section(report):
+    lines = ["## Navigation: free inertial over a 10-minute drive", ""]
+    lines += figure(report, "navigation/errors.png", "Navigation error",
+                    "From the true initial attitude, raw (uncorrected) rates and specific forces, height held. "
+                    "Error against the emulator's truth.")
+    lines += navigation_errors(report, "", "navigation errors")
+    lines += figure(report, "navigation/corrected_errors.png", "Navigation error after correct",
+                    "The same drive corrected by `correct` with the thermal model and the calibration above "
+                    "([navigation/correct.txt](navigation/correct.txt)), navigated the same way. The fixed "
+                    "biases, scale factors and misalignments are removed; what is left are the errors no "
+                    "calibration file can know: the biases this run drew at turn-on and their drift.")
+    lines += navigation_errors(report, "corrected_", "corrected navigation errors")
     return lines
 
 
