@@ -52,6 +52,10 @@ AllanMonitorNode::AllanMonitorNode(ros::NodeHandle& node, ros::NodeHandle& priva
   gyro_publisher_ = node.advertise<imu_lab::AllanDeviation>("allan/gyro", 10);
   accel_publisher_ = node.advertise<imu_lab::AllanDeviation>("allan/accel", 10);
   noise_publisher_ = node.advertise<imu_lab::NoiseParameters>("allan/noise", 1, /*latch=*/true);
+  // The input health is ready before the first subscription: in a nodelet manager the callbacks
+  // run on worker threads as soon as it exists (one found health_ still empty and crashed it).
+  health_.emplace(node.resolveName(settings_.input == AllanInput::kRate ? "imu/raw" : "imu/increment"),
+                  load_input_health_settings(private_node, settings_.engine.gap_factor));
   if (settings_.input == AllanInput::kRate) {
     input_subscriber_ = node.subscribe("imu/raw", settings_.queue_size, &AllanMonitorNode::on_imu, this);
   } else {
@@ -65,7 +69,6 @@ AllanMonitorNode::AllanMonitorNode(ros::NodeHandle& node, ros::NodeHandle& priva
     checkpoint_timer_ = node.createWallTimer(ros::WallDuration(settings_.checkpoint_period_s),
                                              [this](const ros::WallTimerEvent&) { save_checkpoint(); });
   }
-  health_.emplace(input_subscriber_.getTopic(), load_input_health_settings(private_node, settings_.engine.gap_factor));
   diagnostics_.setHardwareID("allan_monitor");
   diagnostics_.add("allan monitor", this, &AllanMonitorNode::report);
   diagnostics_timer_ = node.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) {

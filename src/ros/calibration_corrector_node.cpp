@@ -57,9 +57,11 @@ CalibrationCorrectorNode::CalibrationCorrectorNode(ros::NodeHandle& node, ros::N
   calibration_ = calib::load_calibration(calibration_file_);
   const int queue_size = positive_parameter(private_node, "queue_size", 1000);
 
+  // The input health is ready before the first subscription: in a nodelet manager the callbacks
+  // run on worker threads as soon as it exists (one found health_ still empty and crashed it).
+  health_.emplace(node.resolveName("imu/thermal"), load_input_health_settings(private_node, 3.0));
   publisher_ = node.advertise<sensor_msgs::Imu>("imu/corrected", queue_size);
   subscriber_ = node.subscribe("imu/thermal", queue_size, &CalibrationCorrectorNode::on_imu, this);
-  health_.emplace(subscriber_.getTopic(), load_input_health_settings(private_node, 3.0));
   diagnostics_.setHardwareID("calibration_corrector");
   diagnostics_.add("calibration correction", this, &CalibrationCorrectorNode::report);
   diagnostics_timer_ = node.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) {

@@ -29,6 +29,14 @@ StrapdownNavigatorNode::StrapdownNavigatorNode(ros::NodeHandle& node, ros::NodeH
       parse_input_type(private_node.resolveName("input_type"), parameter<std::string>(private_node, "input_type", "imu"));
   path_.header.frame_id = frames_.world;
 
+  // The input health is ready before the first subscription: in a nodelet manager the callbacks
+  // run on worker threads as soon as it exists (one found health_ still empty and crashed it).
+  health_.emplace(node.resolveName(input_type == InputType::kImu ? "imu/corrected" : "imu/increment"),
+                  load_input_health_settings(private_node, settings.gap_factor));
+  bad_interval_condition_ = health_->define_condition("increments skipped: interval_s not positive",
+                                                      diagnostic_msgs::DiagnosticStatus::WARN);
+  failed_alignment_condition_ = health_->define_condition("failed alignments (started again)",
+                                                          diagnostic_msgs::DiagnosticStatus::WARN);
   odometry_publisher_ = node.advertise<nav_msgs::Odometry>("nav/odometry", queue_size);
   path_publisher_ = node.advertise<nav_msgs::Path>("nav/path", 10);
   alignment_publisher_ = node.advertise<imu_lab::Alignment>("nav/alignment", 1, /*latch=*/true);
@@ -42,11 +50,6 @@ StrapdownNavigatorNode::StrapdownNavigatorNode(ros::NodeHandle& node, ros::NodeH
         node.subscribe("reference_height", 10, &StrapdownNavigatorNode::on_reference_height, this);
   }
 
-  health_.emplace(input_subscriber_.getTopic(), load_input_health_settings(private_node, settings.gap_factor));
-  bad_interval_condition_ = health_->define_condition("increments skipped: interval_s not positive",
-                                                      diagnostic_msgs::DiagnosticStatus::WARN);
-  failed_alignment_condition_ = health_->define_condition("failed alignments (started again)",
-                                                          diagnostic_msgs::DiagnosticStatus::WARN);
   diagnostics_.setHardwareID("strapdown_navigator");
   diagnostics_.add("strapdown navigation", this, &StrapdownNavigatorNode::report);
   diagnostics_timer_ = node.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) {

@@ -34,14 +34,9 @@ ThermalCompensatorNode::ThermalCompensatorNode(ros::NodeHandle& node, ros::NodeH
   const int queue_size = positive_parameter(private_node, "queue_size", 1000);
   compensator_ = std::make_unique<thermal::ThermalCompensator>(thermal::load_thermal_model(model_file_), max_age_s);
 
-  publisher_ = node.advertise<sensor_msgs::Imu>("imu/thermal", queue_size);
-  imu_subscriber_ = node.subscribe("imu/raw", queue_size, &ThermalCompensatorNode::on_imu, this);
-  temperature_subscriber_ = node.subscribe("imu/temperature", queue_size, &ThermalCompensatorNode::on_temperature, this);
-  if (compensator_->model().uses_second_sensor) {
-    second_temperature_subscriber_ =
-        node.subscribe("imu/temperature2", queue_size, &ThermalCompensatorNode::on_second_temperature, this);
-  }
-  health_.emplace(imu_subscriber_.getTopic(), load_input_health_settings(private_node, 3.0));
+  // The input health is ready before the first subscription: in a nodelet manager the callbacks
+  // run on worker threads as soon as it exists (one found health_ still empty and crashed it).
+  health_.emplace(node.resolveName("imu/raw"), load_input_health_settings(private_node, 3.0));
   stale_condition_ = health_->define_condition(
       "samples not published: stale temperature (no reading within max_temperature_age_s of the stamp)",
       diagnostic_msgs::DiagnosticStatus::ERROR);
@@ -50,6 +45,13 @@ ThermalCompensatorNode::ThermalCompensatorNode(ros::NodeHandle& node, ros::NodeH
                                     " (corrected at its edge)", diagnostic_msgs::DiagnosticStatus::WARN);
   temperature_dropped_condition_ = health_->define_condition(
       "temperature readings dropped (NaN or not after the previous stamp)", diagnostic_msgs::DiagnosticStatus::WARN);
+  publisher_ = node.advertise<sensor_msgs::Imu>("imu/thermal", queue_size);
+  imu_subscriber_ = node.subscribe("imu/raw", queue_size, &ThermalCompensatorNode::on_imu, this);
+  temperature_subscriber_ = node.subscribe("imu/temperature", queue_size, &ThermalCompensatorNode::on_temperature, this);
+  if (compensator_->model().uses_second_sensor) {
+    second_temperature_subscriber_ =
+        node.subscribe("imu/temperature2", queue_size, &ThermalCompensatorNode::on_second_temperature, this);
+  }
   diagnostics_.setHardwareID("thermal_compensator");
   diagnostics_.add("thermal compensation", this, &ThermalCompensatorNode::report);
   diagnostics_timer_ = node.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) {
