@@ -1,14 +1,10 @@
 #include "imu_lab/ros/emulator_messages.h"
 
+#include "imu_lab/ros/vector_message.h"
+
 namespace imu_lab {
 namespace ros_io {
 namespace {
-
-void set_vector(geometry_msgs::Vector3& out, const Eigen::Vector3d& in) {
-  out.x = in.x();
-  out.y = in.y();
-  out.z = in.z();
-}
 
 void set_diagonal(boost::array<double, 9>& covariance, const Eigen::Vector3d& variance) {
   covariance.fill(0.0);
@@ -34,8 +30,8 @@ EmulatorMessages to_messages(const emulator::ImuSample& sample, const ros::Time&
   out.raw.orientation.w = 1.0;
   out.raw.orientation_covariance.fill(0.0);
   out.raw.orientation_covariance[0] = -1.0;
-  set_vector(out.raw.angular_velocity, sample.angular_rate_rad_s);
-  set_vector(out.raw.linear_acceleration, sample.specific_force_m_s2);
+  set_vector_message(out.raw.angular_velocity, sample.angular_rate_rad_s);
+  set_vector_message(out.raw.linear_acceleration, sample.specific_force_m_s2);
   set_diagonal(out.raw.angular_velocity_covariance, sample.angular_rate_variance_rad2_s2);
   set_diagonal(out.raw.linear_acceleration_covariance, sample.specific_force_variance_m2_s4);
 
@@ -53,18 +49,18 @@ EmulatorMessages to_messages(const emulator::ImuSample& sample, const ros::Time&
   out.truth.orientation.x = truth.attitude_body_to_enu.x();
   out.truth.orientation.y = truth.attitude_body_to_enu.y();
   out.truth.orientation.z = truth.attitude_body_to_enu.z();
-  set_vector(out.truth.angular_velocity_rad_s, truth.angular_rate_rad_s);
-  set_vector(out.truth.specific_force_m_s2, truth.specific_force_m_s2);
+  set_vector_message(out.truth.angular_velocity_rad_s, truth.angular_rate_rad_s);
+  set_vector_message(out.truth.specific_force_m_s2, truth.specific_force_m_s2);
   out.truth.latitude_rad = truth.latitude_rad;
   out.truth.longitude_rad = truth.longitude_rad;
   out.truth.height_m = truth.height_m;
-  set_vector(out.truth.velocity_enu_m_s, truth.velocity_enu_m_s);
+  set_vector_message(out.truth.velocity_enu_m_s, truth.velocity_enu_m_s);
   out.truth.temperature_c = truth.temperature_c;
 
   out.increment.header = header;
   out.increment.interval_s = interval_s;
-  set_vector(out.increment.delta_angle_rad, sample.delta_angle_rad);
-  set_vector(out.increment.delta_velocity_m_s, sample.delta_velocity_m_s);
+  set_vector_message(out.increment.delta_angle_rad, sample.delta_angle_rad);
+  set_vector_message(out.increment.delta_velocity_m_s, sample.delta_velocity_m_s);
   return out;
 }
 

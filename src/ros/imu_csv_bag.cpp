@@ -10,16 +10,11 @@
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/ros/atomic_bag.h"
 #include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/ros/vector_message.h"
 
 namespace imu_lab {
 namespace ros_io {
 namespace {
-
-geometry_msgs::Vector3 vector_message(const Eigen::Vector3d& v) {
-  geometry_msgs::Vector3 message;
-  message.x = v.x(), message.y = v.y(), message.z = v.z();
-  return message;
-}
 
 // A logger's rows carry no covariances and no attitude: covariances all zero ("unknown", as
 // sensor_msgs/Imu documents) and orientation marked absent (covariance[0] = -1).
@@ -31,8 +26,8 @@ sensor_msgs::Imu to_imu_message(const io::ImuCsvSample& sample, const std_msgs::
   message.orientation_covariance[0] = -1.0;
   message.angular_velocity_covariance.fill(0.0);
   message.linear_acceleration_covariance.fill(0.0);
-  message.angular_velocity = vector_message(sample.angular_rate_rad_s);
-  message.linear_acceleration = vector_message(sample.specific_force_m_s2);
+  set_vector_message(message.angular_velocity, sample.angular_rate_rad_s);
+  set_vector_message(message.linear_acceleration, sample.specific_force_m_s2);
   return message;
 }
 

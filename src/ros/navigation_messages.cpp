@@ -1,5 +1,7 @@
 #include "imu_lab/ros/navigation_messages.h"
 
+#include "imu_lab/ros/vector_message.h"
+
 namespace imu_lab {
 namespace ros_io {
 namespace {
@@ -10,15 +12,6 @@ geometry_msgs::Quaternion to_message(const Eigen::Quaterniond& q) {
   out.x = q.x();
   out.y = q.y();
   out.z = q.z();
-  return out;
-}
-
-template <class Vector3Like>
-Vector3Like to_vector(const Eigen::Vector3d& v) {
-  Vector3Like out;
-  out.x = v.x();
-  out.y = v.y();
-  out.z = v.z();
   return out;
 }
 
@@ -34,7 +27,7 @@ geometry_msgs::PoseStamped to_pose(const NavigationSolution& solution, const Nav
   geometry_msgs::PoseStamped pose;
   pose.header.stamp = to_ros_time(solution.stamp_ns);
   pose.header.frame_id = frames.world;
-  pose.pose.position = to_vector<geometry_msgs::Point>(solution.position_enu_m);
+  set_vector_message(pose.pose.position, solution.position_enu_m);
   pose.pose.orientation = to_message(solution.q_body_to_enu);
   return pose;
 }
@@ -46,8 +39,8 @@ nav_msgs::Odometry to_odometry(const NavigationSolution& solution, const Navigat
   odometry.header = pose.header;
   odometry.child_frame_id = frames.body;
   odometry.pose.pose = pose.pose;
-  odometry.twist.twist.linear = to_vector<geometry_msgs::Vector3>(solution.velocity_body_m_s);
-  odometry.twist.twist.angular = to_vector<geometry_msgs::Vector3>(solution.angular_rate_body_rad_s);
+  set_vector_message(odometry.twist.twist.linear, solution.velocity_body_m_s);
+  set_vector_message(odometry.twist.twist.angular, solution.angular_rate_body_rad_s);
   return odometry;
 }
 
@@ -56,7 +49,7 @@ geometry_msgs::TransformStamped to_transform(const NavigationSolution& solution,
   geometry_msgs::TransformStamped transform;
   transform.header = pose.header;
   transform.child_frame_id = frames.body;
-  transform.transform.translation = to_vector<geometry_msgs::Vector3>(solution.position_enu_m);
+  set_vector_message(transform.transform.translation, solution.position_enu_m);
   transform.transform.rotation = pose.pose.orientation;
   return transform;
 }
@@ -71,9 +64,9 @@ imu_lab::Alignment to_alignment_message(const AlignmentResult& alignment, const 
   message.roll_rad = alignment.roll_pitch_yaw_rad.x();
   message.pitch_rad = alignment.roll_pitch_yaw_rad.y();
   message.yaw_rad = alignment.roll_pitch_yaw_rad.z();
-  message.mean_angular_rate_rad_s = to_vector<geometry_msgs::Vector3>(alignment.mean_angular_rate_rad_s);
-  message.mean_specific_force_m_s2 = to_vector<geometry_msgs::Vector3>(alignment.mean_specific_force_m_s2);
-  message.predicted_error_sigma_rad = to_vector<geometry_msgs::Vector3>(alignment.predicted_error_sigma_rad);
+  set_vector_message(message.mean_angular_rate_rad_s, alignment.mean_angular_rate_rad_s);
+  set_vector_message(message.mean_specific_force_m_s2, alignment.mean_specific_force_m_s2);
+  set_vector_message(message.predicted_error_sigma_rad, alignment.predicted_error_sigma_rad);
   return message;
 }
 

@@ -1,21 +1,13 @@
 #include "imu_lab/ros/thermal_compensated_message.h"
 
+#include "imu_lab/ros/vector_message.h"
+
 namespace imu_lab {
 namespace ros_io {
-namespace {
-
-void set_vector(geometry_msgs::Vector3& message, const Eigen::Vector3d& v) {
-  message.x = v.x();
-  message.y = v.y();
-  message.z = v.z();
-}
-
-}  // namespace
-
 sensor_msgs::Imu thermal_compensated_message(const sensor_msgs::Imu& input, const thermal::CompensatedSample& sample) {
   sensor_msgs::Imu output = input;
-  set_vector(output.angular_velocity, sample.corrected.angular_rate_rad_s);
-  set_vector(output.linear_acceleration, sample.corrected.specific_force_m_s2);
+  set_vector_message(output.angular_velocity, sample.corrected.angular_rate_rad_s);
+  set_vector_message(output.linear_acceleration, sample.corrected.specific_force_m_s2);
   return output;
 }
 
