@@ -152,6 +152,19 @@ std::string input_error_of(Load load) {
   return "";
 }
 
+// Loading `tampered` into a fresh component is refused naming `problem`; `original` loads.
+template <class Load>
+void expect_only_the_tampered_state_refused(const Load& load, const std::string& original, const std::string& tampered,
+                                            const std::string& problem) {
+  const std::string message = input_error_of([&] {
+    allan::BinaryReader in(tampered, "checkpoint x");
+    load(in);
+  });
+  EXPECT_NE(message.find(problem), std::string::npos) << message;
+  allan::BinaryReader untouched(original, "checkpoint x");
+  EXPECT_NO_THROW(load(untouched));
+}
+
 allan::PhaseRing ramp_ring(std::int64_t points) {
   allan::PhaseRing ring(3 * 4 + 1, allan::kPhaseBlockPoints);
   for (std::int64_t n = 0; n < points; ++n) ring.push(1e-3 * static_cast<double>(n * n % 97));
@@ -166,14 +179,9 @@ TEST(FuzzRegressions, CheckpointWhoseNextNonOverlappingEndLagsTheProcessedPoints
   allan::BinaryWriter out;
   allan_sums.save(out);
   // The next ends are the last vector of the state; m = 4's is the last of them, legitimately 200.
-  const std::string stale = with_int64_at(out.bytes(), -8, 12);
-  const std::string message = input_error_of([&] {
-    allan::BinaryReader in(stale, "checkpoint x");
-    allan::DifferenceAccumulator(2, {1, 2, 4}).load(in, 200);
-  });
-  EXPECT_NE(message.find("out of step with the processed points"), std::string::npos) << message;
-  allan::BinaryReader untouched(out.bytes(), "checkpoint x");
-  EXPECT_NO_THROW(allan::DifferenceAccumulator(2, {1, 2, 4}).load(untouched, 200));
+  expect_only_the_tampered_state_refused(
+      [](allan::BinaryReader& in) { allan::DifferenceAccumulator(2, {1, 2, 4}).load(in, 200); }, out.bytes(),
+      with_int64_at(out.bytes(), -8, 12), "next non-overlapping difference out of step with the processed points");
 }
 
 TEST(FuzzRegressions, CheckpointWhoseNextBlockMeanLagsTheProcessedPointsIsRefused) {
@@ -183,17 +191,14 @@ TEST(FuzzRegressions, CheckpointWhoseNextBlockMeanLagsTheProcessedPointsIsRefuse
   block_means.update(ring);
   allan::BinaryWriter out;
   block_means.save(out);
-  const std::string stale = with_int64_at(out.bytes(), -8, 12);
-  const std::string message = input_error_of([&] {
-    allan::BinaryReader in(stale, "checkpoint x");
-    allan::BlockMeanAutocorrelation({1, 2, 4}).load(in, 200);
-  });
-  EXPECT_NE(message.find("out of step with the processed points"), std::string::npos) << message;
-  allan::BinaryReader untouched(out.bytes(), "checkpoint x");
-  EXPECT_NO_THROW(allan::BlockMeanAutocorrelation({1, 2, 4}).load(untouched, 200));
+  expect_only_the_tampered_state_refused(
+      [](allan::BinaryReader& in) { allan::BlockMeanAutocorrelation({1, 2, 4}).load(in, 200); }, out.bytes(),
+      with_int64_at(out.bytes(), -8, 12), "next block mean out of step with the processed points");
 }
 
 // A level that has moved its window's history at least once (5000 points through a 4096 block).
+void load_level(allan::BinaryReader& in) { allan::ResolutionLevel(0, {1, 2}).load(in); }
+
 allan::BinaryWriter saved_level(bool close_a_segment) {
   allan::ResolutionLevel level(0, {1, 2});
   for (int n = 1; n < 5000; ++n) level.append_phase(1e-3 * (n % 13));
@@ -216,14 +221,8 @@ TEST(FuzzRegressions, CheckpointWithUnprocessedPointsBeyondTheStoredHistoryIsRef
   layout.get_i64();
   const std::size_t stored = layout.get_f64s().size();
   const std::ptrdiff_t processed_offset = 4 * 8 + static_cast<std::ptrdiff_t>(stored) * 8;
-  const std::string rewound = with_int64_at(out.bytes(), processed_offset, 0);
-  const std::string message = input_error_of([&] {
-    allan::BinaryReader in(rewound, "checkpoint x");
-    allan::ResolutionLevel(0, {1, 2}).load(in);
-  });
-  EXPECT_NE(message.find("without the history before them"), std::string::npos) << message;
-  allan::BinaryReader untouched(out.bytes(), "checkpoint x");
-  EXPECT_NO_THROW(allan::ResolutionLevel(0, {1, 2}).load(untouched));
+  expect_only_the_tampered_state_refused(load_level, out.bytes(), with_int64_at(out.bytes(), processed_offset, 0),
+                                         "without the history before them");
 }
 
 TEST(FuzzRegressions, CheckpointWhoseClosedSegmentsOverflowTheTermCountIsRefused) {
@@ -231,13 +230,7 @@ TEST(FuzzRegressions, CheckpointWhoseClosedSegmentsOverflowTheTermCountIsRefused
   const allan::BinaryWriter out = saved_level(true);
   // The map of closed segments ends the state: its one entry is (5000 points, 1 segment).
   const std::string huge = with_int64_at(with_int64_at(out.bytes(), -16, std::int64_t{1} << 40), -8, std::int64_t{1} << 40);
-  const std::string message = input_error_of([&] {
-    allan::BinaryReader in(huge, "checkpoint x");
-    allan::ResolutionLevel(0, {1, 2}).load(in);
-  });
-  EXPECT_NE(message.find("closed segment length or count out of range"), std::string::npos) << message;
-  allan::BinaryReader untouched(out.bytes(), "checkpoint x");
-  EXPECT_NO_THROW(allan::ResolutionLevel(0, {1, 2}).load(untouched));
+  expect_only_the_tampered_state_refused(load_level, out.bytes(), huge, "closed segment length or count out of range");
 }
 
 TEST(FuzzRegressions, ChiSquaredBoundsHoldForATrillionDegreesOfFreedom) {
