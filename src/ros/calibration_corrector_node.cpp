@@ -6,6 +6,7 @@
 
 #include "imu_lab/calib/calibration_file.h"
 #include "imu_lab/ros/node_parameters.h"
+#include "imu_lab/ros/vector_message.h"
 
 namespace imu_lab {
 namespace ros_io {
@@ -14,14 +15,6 @@ namespace {
 constexpr double kLogThrottle_s = 5.0;
 
 Eigen::Vector3d vector_of(const geometry_msgs::Vector3& v) { return Eigen::Vector3d(v.x, v.y, v.z); }
-
-geometry_msgs::Vector3 message_of(const Eigen::Vector3d& v) {
-  geometry_msgs::Vector3 m;
-  m.x = v.x();
-  m.y = v.y();
-  m.z = v.z();
-  return m;
-}
 
 // K^-1 C K^-T for a known covariance; -1 in element 0 ("unknown", REP-145) stays as it is.
 void carry_covariance(boost::array<double, 9>& covariance, const Eigen::Matrix3d& k_inverse) {
@@ -42,8 +35,8 @@ sensor_msgs::Imu corrected_message(const sensor_msgs::Imu& input, const calib::I
   sensor_msgs::Imu output = input;
   const calib::CorrectedSample corrected =
       calibration.correct(vector_of(input.angular_velocity), vector_of(input.linear_acceleration));
-  output.angular_velocity = message_of(corrected.angular_rate_rad_s);
-  output.linear_acceleration = message_of(corrected.specific_force_m_s2);
+  set_vector_message(output.angular_velocity, corrected.angular_rate_rad_s);
+  set_vector_message(output.linear_acceleration, corrected.specific_force_m_s2);
   carry_covariance(output.angular_velocity_covariance, calibration.gyro.scale_misalignment.inverse());
   carry_covariance(output.linear_acceleration_covariance, calibration.accelerometer.scale_misalignment.inverse());
   return output;

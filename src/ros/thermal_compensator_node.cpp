@@ -6,6 +6,7 @@
 
 #include "imu_lab/ros/imu_bag_reader.h"
 #include "imu_lab/ros/node_parameters.h"
+#include "imu_lab/ros/thermal_compensated_message.h"
 #include "imu_lab/thermal/thermal_model_yaml.h"
 
 namespace imu_lab {
@@ -22,8 +23,6 @@ std::string validity_range_text(const thermal::ThermalModel& model) {
                 box.temperature_max_c, box.rate_min_c_s, box.rate_max_c_s);
   return text;
 }
-
-void set_vector(geometry_msgs::Vector3& message, const Eigen::Vector3d& v) { message.x = v.x(), message.y = v.y(), message.z = v.z(); }
 
 }  // namespace
 
@@ -116,13 +115,9 @@ void ThermalCompensatorNode::publish(const std::vector<thermal::CompensatedSampl
       ROS_WARN_THROTTLE(kLogThrottle_s, "thermal_compensator: %.2f degC (rate %.4f degC/s) is outside the model's "
                         "validity range; corrected at its edge", sample.input.temperature_c, sample.input.rate_c_s);
     }
-    // Covariances stay: (1 + delta_scale)^2 changes them by parts per thousand at most.
     // A new shared message (the input may be shared with other subscribers): nodelets downstream
     // in the same manager receive this pointer, not a copy.
-    const auto output = boost::make_shared<sensor_msgs::Imu>(*input);
-    set_vector(output->angular_velocity, sample.corrected.angular_rate_rad_s);
-    set_vector(output->linear_acceleration, sample.corrected.specific_force_m_s2);
-    publisher_.publish(output);
+    publisher_.publish(boost::make_shared<sensor_msgs::Imu>(thermal_compensated_message(*input, sample)));
     ++published_;
   }
 }

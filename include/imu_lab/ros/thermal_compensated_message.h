@@ -1,7 +1,7 @@
 // The sensor_msgs/Imu that thermal compensation publishes for one decided sample: the input
 // message (header, orientation, covariances) with the compensated angular rate and specific force.
 // Covariances stay: (1 + delta_scale)^2 changes them by parts per thousand at most.
-// Used by the offline `correct` tool; thermal_compensator_node.cpp builds the same message inline.
+// Shared by the thermal_compensator node and the offline `correct` tool.
 #pragma once
 
 #include <sensor_msgs/Imu.h>
