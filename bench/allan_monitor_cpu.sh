@@ -7,16 +7,8 @@
 set -euo pipefail
 seconds_measured=${1:-60}
 rate_hz=${2:-2000}
-port=$((11500 + RANDOM % 400))
-export ROS_MASTER_URI=http://localhost:$port
-export ROS_HOME=${ROS_HOME:-$(mktemp -d)}
 report=$(mktemp -d)
-pids=()
-cleanup() { for pid in "${pids[@]}"; do kill -INT "$pid" 2>/dev/null || true; done; wait 2>/dev/null || true; }
-trap cleanup EXIT
-
-roscore -p "$port" > /dev/null 2>&1 & pids+=($!)
-until rosparam list > /dev/null 2>&1; do sleep 0.5; done
+source "$(dirname "$0")/private_roscore.sh" 11500
 rosrun imu_lab allan_monitor _report_dir:="$report" _plot:=false > /dev/null 2>&1 & monitor=$!
 pids=("$monitor" "${pids[@]}")
 rosrun imu_lab imu_emulator _rate_hz:="$rate_hz" _publish_truth:=false _publish_increments:=false \

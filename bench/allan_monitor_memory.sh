@@ -16,15 +16,7 @@ set -euo pipefail
 hours=${1:-24}
 realtime_factor=${2:-50}
 rate_hz=1000
-port=$((12300 + RANDOM % 400))
-export ROS_MASTER_URI=http://localhost:$port
-export ROS_HOME=${ROS_HOME:-$(mktemp -d)}
-pids=()
-cleanup() { for pid in "${pids[@]}"; do kill -INT "$pid" 2>/dev/null || true; done; wait 2>/dev/null || true; }
-trap cleanup EXIT
-
-roscore -p "$port" > /dev/null 2>&1 & pids+=($!)
-until rosparam list > /dev/null 2>&1; do sleep 0.5; done
+source "$(dirname "$0")/private_roscore.sh" 12300
 cat > "$ROS_HOME/params.yaml" <<EOF
 allan_monitor: {report_dir: $ROS_HOME/allan_report, plot: false, identify: false,
                 queue_size: $(echo "10 * $rate_hz * $realtime_factor / 1" | bc)}

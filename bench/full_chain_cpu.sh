@@ -11,15 +11,7 @@ set -euo pipefail
 seconds_measured=${1:-60}
 rate_hz=${2:-1000}
 data=$(rospack find imu_lab)/test/data
-port=$((11900 + RANDOM % 400))
-export ROS_MASTER_URI=http://localhost:$port
-export ROS_HOME=${ROS_HOME:-$(mktemp -d)}
-pids=()
-cleanup() { for pid in "${pids[@]}"; do kill -INT "$pid" 2>/dev/null || true; done; wait 2>/dev/null || true; }
-trap cleanup EXIT
-
-roscore -p "$port" > /dev/null 2>&1 & pids+=($!)
-until rosparam list > /dev/null 2>&1; do sleep 0.5; done
+source "$(dirname "$0")/private_roscore.sh" 11900
 
 cpu_ticks() {  # utime + stime of the given processes, in clock ticks
   local total=0 pid
