@@ -70,28 +70,24 @@ std::vector<std::int64_t> BinaryReader::get_i64s() {
   get_raw(values.data(), values.size() * sizeof(std::int64_t));
   return values;
 }
-double BinaryReader::get_finite_f64() {
-  const double value = get_f64();
+double BinaryReader::require_finite(double value) const {
   if (!std::isfinite(value)) fail("non-finite value in the accumulator state");
   return value;
 }
-std::vector<double> BinaryReader::get_finite_f64s() {
-  std::vector<double> values = get_f64s();
-  for (const double value : values) {
-    if (!std::isfinite(value)) fail("non-finite value in the accumulator state");
-  }
-  return values;
-}
-std::int64_t BinaryReader::get_count() {
-  const std::int64_t count = get_i64();
+std::int64_t BinaryReader::require_count(std::int64_t count) const {
   if (count < 0) fail("negative count in the accumulator state");
   return count;
 }
+double BinaryReader::get_finite_f64() { return require_finite(get_f64()); }
+std::vector<double> BinaryReader::get_finite_f64s() {
+  std::vector<double> values = get_f64s();
+  for (const double value : values) require_finite(value);
+  return values;
+}
+std::int64_t BinaryReader::get_count() { return require_count(get_i64()); }
 std::vector<std::int64_t> BinaryReader::get_counts() {
   std::vector<std::int64_t> counts = get_i64s();
-  for (const std::int64_t count : counts) {
-    if (count < 0) fail("negative count in the accumulator state");
-  }
+  for (const std::int64_t count : counts) require_count(count);
   return counts;
 }
 void BinaryReader::expect_u64(std::uint64_t expected, const char* what) {

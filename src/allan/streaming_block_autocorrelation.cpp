@@ -165,13 +165,7 @@ void BlockMeanAutocorrelation::load(BinaryReader& in, std::int64_t processed_cou
       pooled.count[d] = in.get_count();
     }
   }
-  next_block_end_ = in.get_i64s();
-  if (next_block_end_.size() != averaging_factors_.size()) in.fail("block autocorrelation factor count");
-  for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {
-    if (!is_next_block_end(next_block_end_[i], 1, averaging_factors_[i], processed_count)) {
-      in.fail("next block mean out of step with the processed points");
-    }
-  }
+  next_block_end_ = load_next_block_ends(in, 1, averaging_factors_, processed_count, "next block mean");
 }
 
 }  // namespace allan

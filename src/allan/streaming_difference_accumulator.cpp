@@ -155,13 +155,8 @@ void DifferenceAccumulator::load(BinaryReader& in, std::int64_t processed_count)
     open_segment_overlapping_[i].load(in);
     closed_spread_[i].load(in);
   }
-  next_non_overlapping_end_ = in.get_i64s();
-  if (next_non_overlapping_end_.size() != averaging_factors_.size()) in.fail("averaging factor count");
-  for (std::size_t i = 0; i < averaging_factors_.size(); ++i) {
-    if (!is_next_block_end(next_non_overlapping_end_[i], order_, averaging_factors_[i], processed_count)) {
-      in.fail("next non-overlapping difference out of step with the processed points");
-    }
-  }
+  next_non_overlapping_end_ =
+      load_next_block_ends(in, order_, averaging_factors_, processed_count, "next non-overlapping difference");
 }
 
 }  // namespace allan

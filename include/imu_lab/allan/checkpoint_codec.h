@@ -54,6 +54,8 @@ class BinaryReader {
   [[noreturn]] void fail(const std::string& problem) const;
 
  private:
+  double require_finite(double value) const;
+  std::int64_t require_count(std::int64_t count) const;
   void get_raw(void* data, std::size_t size);
   std::size_t get_length(std::size_t element_size);
   const std::string& bytes_;

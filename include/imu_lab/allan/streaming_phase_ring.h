@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "imu_lab/allan/checkpoint_codec.h"
@@ -97,6 +98,20 @@ inline bool is_next_block_end(std::int64_t end, int order, int m, std::int64_t p
   const std::int64_t first_end = static_cast<std::int64_t>(order) * m;
   if (end == first_end) return true;
   return end > first_end && (end - first_end) % m == 0 && end >= processed_count && end - processed_count < m;
+}
+
+// Reads an accumulator's next block ends, one per averaging factor, refusing any that is not
+// is_next_block_end; `what` names them in the refusal.
+inline std::vector<std::int64_t> load_next_block_ends(BinaryReader& in, int order, const std::vector<int>& averaging_factors,
+                                                      std::int64_t processed_count, const std::string& what) {
+  std::vector<std::int64_t> ends = in.get_i64s();
+  if (ends.size() != averaging_factors.size()) in.fail(what + " for another number of averaging factors");
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    if (!is_next_block_end(ends[i], order, averaging_factors[i], processed_count)) {
+      in.fail(what + " out of step with the processed points");
+    }
+  }
+  return ends;
 }
 
 // Difference of order `order` (2: Allan, 3: Hadamard) at lag m ending at phase index `newest`:
