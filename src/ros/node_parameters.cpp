@@ -67,34 +67,29 @@ struct ParameterType<double> {
   }
 };
 
+// A type taken only from the one XmlRpc type that holds it.
+template <class Value, XmlRpcValue::Type kType>
+struct ExactParameterType {
+  static bool take(XmlRpcValue& value, Value& out) {
+    if (value.getType() != kType) return false;
+    out = static_cast<Value&>(value);
+    return true;
+  }
+};
+
 template <>
-struct ParameterType<int> {
+struct ParameterType<int> : ExactParameterType<int, XmlRpcValue::TypeInt> {
   static constexpr const char* name = "an int";
-  static bool take(XmlRpcValue& value, int& out) {
-    if (value.getType() != XmlRpcValue::TypeInt) return false;
-    out = static_cast<int&>(value);
-    return true;
-  }
 };
 
 template <>
-struct ParameterType<bool> {
+struct ParameterType<bool> : ExactParameterType<bool, XmlRpcValue::TypeBoolean> {
   static constexpr const char* name = "a bool (true or false)";
-  static bool take(XmlRpcValue& value, bool& out) {
-    if (value.getType() != XmlRpcValue::TypeBoolean) return false;
-    out = static_cast<bool&>(value);
-    return true;
-  }
 };
 
 template <>
-struct ParameterType<std::string> {
+struct ParameterType<std::string> : ExactParameterType<std::string, XmlRpcValue::TypeString> {
   static constexpr const char* name = "a string";
-  static bool take(XmlRpcValue& value, std::string& out) {
-    if (value.getType() != XmlRpcValue::TypeString) return false;
-    out = static_cast<std::string&>(value);
-    return true;
-  }
 };
 
 template <>
