@@ -95,7 +95,7 @@ class BagCorrector {
     } else if (compensator_ && (topic == temperature_.name || topic == second_temperature_.name)) {
       on_temperature(instance, topic == temperature_.name ? &temperature_ : &second_temperature_);
     }
-    out_.bag().write(topic, instance.getTime(), instance, instance.getConnectionHeader());
+    out_.write(topic, instance.getTime(), instance, instance.getConnectionHeader());
     ++summary_->copied_messages;
     copied_topics_.insert(topic);
     const std::string& datatype = instance.getDataType();
