@@ -9,6 +9,7 @@
 #include "imu_lab/allan/streaming_points.h"
 #include "imu_lab/allan/streaming_tau_plan.h"
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/imu_sample.h"
 
 namespace imu_lab {
 namespace allan {
@@ -139,7 +140,7 @@ void StreamingAllan::accept(std::int64_t stamp_ns, const double* values, std::in
   }
   for (std::size_t c = 0; c < channels_.size(); ++c) {
     ChannelReport& report = channel_reports_[c];
-    if (std::isfinite(values[c])) {
+    if (is_usable_imu_value(values[c])) {
       channels_[c].push(values[c]);
       ++report.finite_sample_count;
       continue;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "imu_lab/common/imu_sample.h"
+
 namespace imu_lab {
 namespace allan {
 
@@ -32,7 +34,7 @@ std::vector<double> WarmUpBuffer::finite_means() const {
     std::size_t count = 0;
     for (std::size_t sample = 0; sample < stamps_ns_.size(); ++sample) {
       const double value = values_[sample * channel_count_ + channel];
-      if (!std::isfinite(value)) continue;
+      if (!is_usable_imu_value(value)) continue;
       sum += value;
       ++count;
     }

@@ -108,6 +108,41 @@ TEST(AllanStreamingIrregularInput, NonFiniteValuesAreExcludedAndSplitOnlyTheirCh
   EXPECT_EQ(snapshot.timing.gap_count, 0);
 }
 
+// Finite but absurd values (1e308 rad/s) overflowed the sums to Inf: every later point of the
+// channel was lost and the snapshot's noise-type estimate threw (allan_monitor died of it). They
+// are now left out like NaN: the channel's curves are those of the clean pieces.
+TEST(AllanStreamingIrregularInput, ExtremeFiniteValuesAreExcludedLikeNaN) {
+  const std::size_t count = 9000;
+  std::vector<std::vector<double>> rates = {synthetic_rate(count, 53), synthetic_rate(count, 54, -1.0)};
+  const std::vector<std::size_t> bad = {700, 4000, 4001, 6000};
+  rates[1][700] = 1e308;
+  rates[1][4000] = -1e308;
+  rates[1][4001] = 2e100;
+  rates[1][6000] = std::numeric_limits<double>::max();
+  StreamingAllan engine(small_options(2));
+  feed(engine, rates, 0, count);
+  StreamingSnapshot snapshot;
+  ASSERT_NO_THROW(snapshot = engine.snapshot());
+
+  std::vector<std::vector<double>> clean_pieces;
+  std::size_t begin = 0;
+  for (const std::size_t index : bad) {
+    if (index > begin) clean_pieces.emplace_back(rates[1].begin() + begin, rates[1].begin() + index);
+    begin = index + 1;
+  }
+  clean_pieces.emplace_back(rates[1].begin() + begin, rates[1].end());
+  for (const Statistic statistic : kStreamingStatistics) {
+    expect_pooled_batch(points_up_to(snapshot.curve(statistic, 1), kExactLimit), clean_pieces, statistic, "1e308 channel");
+    for (const StabilityPoint& point : snapshot.curve(statistic, 1)) {
+      EXPECT_TRUE(std::isfinite(point.deviation) && std::isfinite(point.edf)) << statistic_name(statistic);
+    }
+  }
+  EXPECT_EQ(snapshot.channels[1].non_finite_count, 4);
+  EXPECT_EQ(snapshot.channels[1].finite_sample_count, static_cast<std::int64_t>(count) - 4);
+  EXPECT_LT(std::abs(snapshot.channels[1].offset), 10.0) << "the warm-up's offset left them out too";
+  EXPECT_EQ(snapshot.channels[0].non_finite_count, 0);
+}
+
 TEST(AllanStreamingIrregularInput, DuplicateAndOutOfOrderSamplesAreDroppedAndReported) {
   const std::size_t count = 6000;
   const std::vector<double> rate = synthetic_rate(count, 61);

@@ -39,7 +39,9 @@ constexpr std::size_t kMaxRecordedStampEvents = 100;
 struct ChannelReport {
   double offset = 0.0;                     // removed before accumulating (mean of the warm-up window)
   std::int64_t finite_sample_count = 0;    // accumulated
-  std::int64_t non_finite_count = 0;       // NaN/Inf: excluded, each one splits the channel's run
+  // NaN/Inf or beyond kLargestUsableImuValue (common/imu_sample.h): excluded, each one splits the
+  // channel's run (the sums would otherwise overflow and spoil every later point)
+  std::int64_t non_finite_count = 0;
   std::int64_t first_non_finite_sample_index = -1;
   std::int64_t last_non_finite_sample_index = -1;
   std::int64_t segment_count = 0;          // runs of consecutive accepted finite samples
