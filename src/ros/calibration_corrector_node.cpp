@@ -25,10 +25,6 @@ void carry_covariance(boost::array<double, 9>& covariance, const Eigen::Matrix3d
   for (int k = 0; k < 9; ++k) covariance[k] = carried(k / 3, k % 3);
 }
 
-bool finite(const sensor_msgs::Imu& message) {
-  return vector_of(message.angular_velocity).allFinite() && vector_of(message.linear_acceleration).allFinite();
-}
-
 }  // namespace
 
 sensor_msgs::Imu corrected_message(const sensor_msgs::Imu& input, const calib::ImuCalibration& calibration) {
@@ -67,11 +63,16 @@ CalibrationCorrectorNode::CalibrationCorrectorNode(ros::NodeHandle& node, ros::N
 
 void CalibrationCorrectorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message) {
   std::lock_guard<std::mutex> lock(mutex_);
-  health_->check_stamp(static_cast<std::int64_t>(message->header.stamp.toNSec()));
-  if (!finite(*message)) {
-    health_->count_non_finite();
-    ROS_WARN_THROTTLE(kLogThrottle_s, "calibration_corrector: dropped a sample with NaN/Inf at %.9f (counted in "
-                      "diagnostics)", message->header.stamp.toSec());
+  // Like every node of the chain: a duplicate or out-of-order stamp is dropped, not passed on.
+  const StampVerdict verdict = health_->check_stamp(static_cast<std::int64_t>(message->header.stamp.toNSec()));
+  if (verdict == StampVerdict::kDuplicate || verdict == StampVerdict::kOutOfOrder) {
+    ROS_WARN_THROTTLE(kLogThrottle_s, "calibration_corrector: dropped a sample at %.9f: its stamp is not after the "
+                      "previous one (counted in diagnostics)", message->header.stamp.toSec());
+    return;
+  }
+  if (!health_->check_values(to_imu_record(*message))) {
+    ROS_WARN_THROTTLE(kLogThrottle_s, "calibration_corrector: dropped a sample with NaN/Inf or a triad not provided at "
+                      "%.9f (counted in diagnostics)", message->header.stamp.toSec());
     return;
   }
   // A shared message: nodelets downstream in the same manager receive this pointer, not a copy.

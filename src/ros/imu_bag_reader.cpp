@@ -7,6 +7,7 @@
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/Temperature.h>
 
+#include <limits>
 #include <map>
 
 #include "imu_lab/common/config_error.h"
@@ -38,13 +39,19 @@ std::string describe(const std::vector<TopicInfo>& topics) {
 
 Eigen::Vector3d to_eigen(const geometry_msgs::Vector3& vector) { return {vector.x, vector.y, vector.z}; }
 
+// covariance[0] == -1: the triad carries no data (sensor_msgs/Imu); its values become NaN.
 ImuRecord make_imu_record(const ros::Time& stamp, const geometry_msgs::Vector3& angular_velocity,
-                          const geometry_msgs::Vector3& linear_acceleration) {
+                          double angular_velocity_covariance_0, const geometry_msgs::Vector3& linear_acceleration,
+                          double linear_acceleration_covariance_0) {
+  constexpr double kNoData = -1.0;
+  const Eigen::Vector3d missing = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
   ImuRecord record;
   record.stamp_s = stamp.toSec();
   record.stamp_ns = static_cast<std::int64_t>(stamp.toNSec());
-  record.angular_rate_rad_s = to_eigen(angular_velocity);
-  record.specific_force_m_s2 = to_eigen(linear_acceleration);
+  record.has_angular_rate = angular_velocity_covariance_0 != kNoData;
+  record.has_specific_force = linear_acceleration_covariance_0 != kNoData;
+  record.angular_rate_rad_s = record.has_angular_rate ? to_eigen(angular_velocity) : missing;
+  record.specific_force_m_s2 = record.has_specific_force ? to_eigen(linear_acceleration) : missing;
   return record;
 }
 
@@ -86,7 +93,8 @@ std::size_t for_each_message(const std::string& bag_path, const std::string& top
 }  // namespace
 
 ImuRecord to_imu_record(const sensor_msgs::Imu& message) {
-  return make_imu_record(message.header.stamp, message.angular_velocity, message.linear_acceleration);
+  return make_imu_record(message.header.stamp, message.angular_velocity, message.angular_velocity_covariance[0],
+                         message.linear_acceleration, message.linear_acceleration_covariance[0]);
 }
 
 IncrementRecord to_increment_record(const imu_lab::ImuIncrement& message) {
@@ -152,7 +160,8 @@ TopicInfo OpenBag::choose_topic(const std::string& requested, const std::string&
 
 std::size_t OpenBag::for_each_imu(const std::string& topic, const std::function<void(const ImuRecord&)>& on_record) {
   return for_each_message<ImuWireFields>(*bag_, path_, topic, kImuType, [&](const ImuWireFields& message) {
-    on_record(make_imu_record(message.stamp, message.angular_velocity, message.linear_acceleration));
+    on_record(make_imu_record(message.stamp, message.angular_velocity, message.angular_velocity_covariance_0,
+                              message.linear_acceleration, message.linear_acceleration_covariance_0));
   });
 }
 

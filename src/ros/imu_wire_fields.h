@@ -1,5 +1,6 @@
 // sensor_msgs/Imu read from its serialised form keeping only what an ImuRecord holds: the header
-// stamp, the angular velocity and the linear acceleration. The bag readers deserialise every
+// stamp, the angular velocity and the linear acceleration, and the first element of their
+// covariances (-1 marks a triad without data). The bag readers deserialise every
 // message of a long bag; skipping the frame_id string, the orientation and the three covariance
 // matrices instead of building a whole sensor_msgs::Imu saves an allocation and ~300 bytes of
 // copying per message. Same md5sum and type as sensor_msgs/Imu, so rosbag hands it exactly the
@@ -21,7 +22,9 @@ struct ImuWireFields {
   using ConstPtr = boost::shared_ptr<const ImuWireFields>;
   ros::Time stamp;
   geometry_msgs::Vector3 angular_velocity;
+  double angular_velocity_covariance_0 = 0.0;  // -1: no angular rate in the message
   geometry_msgs::Vector3 linear_acceleration;
+  double linear_acceleration_covariance_0 = 0.0;  // -1: no specific force in the message
 };
 
 }  // namespace ros_io
@@ -64,9 +67,11 @@ struct Serializer<imu_lab::ros_io::ImuWireFields> {
     stream.advance(frame_id_bytes);
     stream.advance(kQuaternionBytes + kCovarianceBytes);
     stream.next(fields.angular_velocity);
-    stream.advance(kCovarianceBytes);
+    stream.next(fields.angular_velocity_covariance_0);
+    stream.advance(kCovarianceBytes - sizeof(double));
     stream.next(fields.linear_acceleration);
-    stream.advance(kCovarianceBytes);
+    stream.next(fields.linear_acceleration_covariance_0);
+    stream.advance(kCovarianceBytes - sizeof(double));
   }
 };
 

@@ -88,6 +88,16 @@ StampVerdict InputHealth::check_stamp(std::int64_t stamp_ns) {
   return StampVerdict::kGood;
 }
 
+bool InputHealth::check_values(const ImuRecord& record) {
+  if (!record.has_angular_rate || !record.has_specific_force) {
+    ++absent_triad_.total;
+    return false;
+  }
+  if (record.angular_rate_rad_s.allFinite() && record.specific_force_m_s2.allFinite()) return true;
+  ++non_finite_.total;
+  return false;
+}
+
 void InputHealth::fill(diagnostic_updater::DiagnosticStatusWrapper& status, const std::string& ok_message) {
   using diagnostic_msgs::DiagnosticStatus;
   Level level = DiagnosticStatus::OK;
@@ -98,6 +108,10 @@ void InputHealth::fill(diagnostic_updater::DiagnosticStatusWrapper& status, cons
   };
   if (samples_.fresh() == 0) note(DiagnosticStatus::WARN, "no input on " + input_ + " since the last report");
   if (non_finite_.fresh() > 0) note(DiagnosticStatus::WARN, std::to_string(non_finite_.fresh()) + " samples with NaN/Inf");
+  if (absent_triad_.fresh() > 0) {
+    note(DiagnosticStatus::WARN, std::to_string(absent_triad_.fresh()) + " samples without angular rate or specific "
+                                 "force (covariance[0] = -1)");
+  }
   if (gaps_.fresh() > 0) {
     note(DiagnosticStatus::WARN, std::to_string(gaps_.fresh()) + " gaps in the stamps (" +
                                      format("%.3f", window_gap_s_) + " s missing)");
@@ -123,13 +137,16 @@ void InputHealth::fill(diagnostic_updater::DiagnosticStatusWrapper& status, cons
                                                 : std::string("learning"));
   status.add("samples", samples_.total);
   status.add("NaN/Inf samples", non_finite_.total);
+  status.add("samples without a triad (covariance[0] = -1)", absent_triad_.total);
   status.add("gaps", gaps_.total);
   status.add("longest gap [s]", longest_gap_s_);
   status.add("duplicate stamps", duplicates_.total);
   status.add("out-of-order stamps", out_of_order_.total);
   for (const Condition& condition : conditions_) status.add(condition.description, condition.count.total);
 
-  for (Count* count : {&samples_, &non_finite_, &gaps_, &duplicates_, &out_of_order_}) count->reported = count->total;
+  for (Count* count : {&samples_, &non_finite_, &absent_triad_, &gaps_, &duplicates_, &out_of_order_}) {
+    count->reported = count->total;
+  }
   for (Condition& condition : conditions_) condition.count.reported = condition.count.total;
   window_gap_s_ = 0.0;
   window_interval_sum_s_ = 0.0;

@@ -66,12 +66,11 @@ StrapdownNavigatorNode::StrapdownNavigatorNode(ros::NodeHandle& node, ros::NodeH
 
 void StrapdownNavigatorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message) {
   std::lock_guard<std::mutex> lock(mutex_);
-  const auto& w = message->angular_velocity;
-  const auto& f = message->linear_acceleration;
-  const Eigen::Vector3d angular_rate_rad_s(w.x, w.y, w.z), specific_force_m_s2(f.x, f.y, f.z);
-  check_input(message->header.stamp, angular_rate_rad_s.allFinite() && specific_force_m_s2.allFinite());
-  const auto outcome = session_->add_rates(static_cast<std::int64_t>(message->header.stamp.toNSec()),
-                                           angular_rate_rad_s, specific_force_m_s2);
+  // A triad not provided (covariance[0] = -1) reads as NaN: the session skips the sample.
+  const ImuRecord record = to_imu_record(*message);
+  health_->check_stamp(record.stamp_ns);
+  health_->check_values(record);
+  const auto outcome = session_->add_rates(record.stamp_ns, record.angular_rate_rad_s, record.specific_force_m_s2);
   after_sample(outcome, message->header.stamp);
 }
 

@@ -16,14 +16,6 @@ namespace {
 constexpr double kLogThrottle_s = 5.0;
 using Status = thermal::CompensatedSample::Status;
 
-std::string validity_range_text(const thermal::ThermalModel& model) {
-  const auto& box = model.validity;
-  char text[128];
-  std::snprintf(text, sizeof text, "%.2f .. %.2f degC, %.4f .. %.4f degC/s", box.temperature_min_c,
-                box.temperature_max_c, box.rate_min_c_s, box.rate_max_c_s);
-  return text;
-}
-
 }  // namespace
 
 ThermalCompensatorNode::ThermalCompensatorNode(ros::NodeHandle& node, ros::NodeHandle& private_node) {
@@ -40,7 +32,7 @@ ThermalCompensatorNode::ThermalCompensatorNode(ros::NodeHandle& node, ros::NodeH
       "samples not published: stale temperature (no reading within max_temperature_age_s of the stamp)",
       diagnostic_msgs::DiagnosticStatus::ERROR);
   clamped_condition_ =
-      health_->define_condition("samples outside the model's validity range " + validity_range_text(compensator_->model()) +
+      health_->define_condition("samples outside the model's validity range " + thermal::validity_range_text(compensator_->model()) +
                                     " (corrected at its edge)", diagnostic_msgs::DiagnosticStatus::WARN);
   temperature_dropped_condition_ = health_->define_condition(
       "temperature readings dropped (NaN or not after the previous stamp)", diagnostic_msgs::DiagnosticStatus::WARN);
@@ -67,11 +59,11 @@ void ThermalCompensatorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message) {
   std::lock_guard<std::mutex> lock(mutex_);
   const ImuRecord record = to_imu_record(*message);
   health_->check_stamp(record.stamp_ns);
-  if (!record.angular_rate_rad_s.allFinite() || !record.specific_force_m_s2.allFinite()) health_->count_non_finite();
+  health_->check_values(record);  // an unusable sample is then refused by the compensator (NaN)
   std::vector<thermal::CompensatedSample> ready;
   if (!compensator_->add_imu({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2}, &ready)) {
-    ROS_WARN_THROTTLE(kLogThrottle_s, "thermal_compensator: dropped an IMU sample at %.9f (NaN/Inf, or its stamp is "
-                      "not after the previous one; counted in diagnostics)", record.stamp_s);
+    ROS_WARN_THROTTLE(kLogThrottle_s, "thermal_compensator: dropped an IMU sample at %.9f (NaN/Inf, a triad not "
+                      "provided, or its stamp is not after the previous one; counted in diagnostics)", record.stamp_s);
     return;
   }
   waiting_messages_.push_back(message);
@@ -125,7 +117,7 @@ void ThermalCompensatorNode::publish(const std::vector<thermal::CompensatedSampl
 void ThermalCompensatorNode::report(diagnostic_updater::DiagnosticStatusWrapper& status) {
   health_->fill(status, "compensating");
   status.add("model file", model_file_);
-  status.add("validity range", validity_range_text(compensator_->model()));
+  status.add("validity range", thermal::validity_range_text(compensator_->model()));
   status.add("last temperature degC", last_temperature_c_);
   status.add("samples published", published_);
   status.add("samples waiting for temperature", compensator_->waiting());

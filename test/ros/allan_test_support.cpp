@@ -43,6 +43,14 @@ void write_imu_bag(const std::string& path, const std::vector<ros_io::AllanSampl
     imu.linear_acceleration.x = sample.values[3];
     imu.linear_acceleration.y = sample.values[4];
     imu.linear_acceleration.z = sample.values[5];
+    if (layout.without_angular_rate) {
+      imu.angular_velocity = geometry_msgs::Vector3();
+      imu.angular_velocity_covariance[0] = -1.0;
+    }
+    if (layout.without_specific_force) {
+      imu.linear_acceleration = geometry_msgs::Vector3();
+      imu.linear_acceleration_covariance[0] = -1.0;
+    }
     // The view orders by record time: keep it strictly increasing (the arrival order), so
     // unordered or duplicate header stamps reach the reader as they were recorded.
     record_ns = std::max(record_ns + 1, sample.stamp_ns);

@@ -24,6 +24,10 @@ void write_imu_bag(const std::string& path, const std::vector<ros_io::AllanSampl
 struct ImuBagLayout {
   std::vector<std::string> imu_topics = {"/imu/raw"};  // every sample on each of them
   bool with_temperature = false;  // sensor_msgs/Temperature at 25 degC on /imu/temperature, every tenth stamp
+  // A triad marked as not provided (covariance[0] = -1, values 0), as a driver of an IMU without it
+  // publishes sensor_msgs/Imu.
+  bool without_angular_rate = false;
+  bool without_specific_force = false;
 };
 void write_imu_bag(const std::string& path, const std::vector<ros_io::AllanSample>& samples, const ImuBagLayout& layout);
 

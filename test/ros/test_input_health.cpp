@@ -4,6 +4,10 @@
 #include "imu_lab/ros/input_health.h"
 
 #include <gtest/gtest.h>
+#include <sensor_msgs/Imu.h>
+
+#include <cmath>
+#include <limits>
 
 namespace {
 
@@ -67,6 +71,28 @@ TEST(InputHealth, NonFiniteSamplesWarnOnceThenTheNextReportIsOk) {
   const auto recovered = stream.report();
   EXPECT_EQ(recovered.level, DiagnosticStatus::OK) << recovered.message;
   EXPECT_EQ(value_of(recovered, "NaN/Inf samples"), "2");
+}
+
+// A sensor_msgs/Imu whose triad is marked as not provided (covariance[0] = -1) is unusable to
+// every node of the chain, and said so apart from NaN (the message conversion makes its values NaN).
+TEST(InputHealth, ASampleWithoutATriadIsCountedApartFromNaN) {
+  Stream stream;
+  stream.feed(100);
+  sensor_msgs::Imu message;
+  message.header.stamp.fromNSec(static_cast<std::uint64_t>(stream.stamp_ns));
+  message.linear_acceleration.z = 9.8;
+  EXPECT_TRUE(stream.health.check_values(imu_lab::ros_io::to_imu_record(message)));
+  message.angular_velocity_covariance[0] = -1.0;
+  const auto record = imu_lab::ros_io::to_imu_record(message);
+  EXPECT_FALSE(record.has_angular_rate);
+  EXPECT_TRUE(std::isnan(record.angular_rate_rad_s.x())) << "the zeros of a triad not provided are not data";
+  EXPECT_FALSE(stream.health.check_values(record));
+  message.angular_velocity_covariance[0] = 0.0;
+  message.linear_acceleration.x = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(stream.health.check_values(imu_lab::ros_io::to_imu_record(message)));
+  const auto status = stream.report();
+  EXPECT_EQ(status.level, DiagnosticStatus::WARN);
+  EXPECT_EQ(status.message, "1 samples with NaN/Inf; 1 samples without angular rate or specific force (covariance[0] = -1)");
 }
 
 TEST(InputHealth, AGapIsCountedWithTheMissingTimeAndDoesNotLookLikeASlowRate) {

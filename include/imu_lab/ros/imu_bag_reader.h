@@ -28,6 +28,12 @@ struct ImuRecord {
   std::int64_t stamp_ns = 0;  // the same, exact: differences of stamp_s near 1e9 s lose ~0.1 us
   Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();
   Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();
+  // A triad whose covariance[0] is -1 carries no data (sensor_msgs/Imu's convention, e.g. a driver
+  // of an IMU without gyros). Its values are then NaN, not the message's zeros, so that no consumer
+  // can average, fit or integrate them unawares: each one refuses, skips or excludes them as it
+  // does NaN, and can tell the user why from these flags.
+  bool has_angular_rate = true;
+  bool has_specific_force = true;
 };
 
 // imu_lab/ImuIncrement: the sensor's own integrals over interval_s, ending at the stamp.

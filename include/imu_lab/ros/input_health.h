@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "imu_lab/ros/imu_bag_reader.h"
+
 namespace imu_lab {
 namespace ros_io {
 
@@ -48,6 +50,9 @@ class InputHealth {
   StampVerdict check_stamp(std::int64_t stamp_ns);
   // A sample with a NaN/Inf value (counted; the node drops or excludes it).
   void count_non_finite() { ++non_finite_.total; }
+  // A sensor_msgs/Imu sample's values: counts one lacking a triad (covariance[0] = -1, the driver
+  // does not provide it) or holding NaN/Inf; true when both triads are there and finite.
+  bool check_values(const ImuRecord& record);
 
   // The node's own conditions: define once (returns its id), count per occurrence.
   std::size_t define_condition(const std::string& description, Level level);
@@ -80,7 +85,7 @@ class InputHealth {
   std::vector<double> learning_intervals_s_;
   bool have_previous_ = false;
   std::int64_t previous_stamp_ns_ = 0;
-  Count samples_, non_finite_, gaps_, duplicates_, out_of_order_;
+  Count samples_, non_finite_, absent_triad_, gaps_, duplicates_, out_of_order_;
   double window_gap_s_ = 0.0, longest_gap_s_ = 0.0;
   // Rate from the in-order intervals that are not gaps, so a gap does not look like a slow rate.
   double window_interval_sum_s_ = 0.0;
