@@ -23,7 +23,8 @@ using SampleBatch = std::vector<AllanSample>;
 // Thrown inside the reader's callback to stop the bag iteration when the consumer gave up.
 struct ReadingCancelled {};
 
-void read_batches(OpenBag& bag, const std::string& topic, AllanInput input, BoundedQueue<SampleBatch>& queue) {
+void read_batches(OpenBag& bag, const std::string& topic, AllanInput input, BoundedQueue<SampleBatch>& queue,
+                  AllanBagPassResult& result) {
   SampleBatch batch;
   batch.reserve(kBatchSamples);
   const auto add = [&](const AllanSample& sample) {
@@ -34,7 +35,11 @@ void read_batches(OpenBag& bag, const std::string& topic, AllanInput input, Boun
     batch.reserve(kBatchSamples);
   };
   if (input == AllanInput::kRate) {
-    bag.for_each_imu(topic, [&](const ImuRecord& record) { add(to_allan_sample(record)); });
+    bag.for_each_imu(topic, [&](const ImuRecord& record) {
+      result.messages_without_angular_rate += record.has_angular_rate ? 0 : 1;
+      result.messages_without_specific_force += record.has_specific_force ? 0 : 1;
+      add(to_allan_sample(record));
+    });
   } else {
     bag.for_each_increment(topic, [&](const IncrementRecord& record) { add(to_allan_sample(record)); });
   }
@@ -67,7 +72,7 @@ AllanBagPassResult run_allan_bag_pass(const std::string& bag_path, const AllanBa
   std::exception_ptr reader_error;
   std::thread reader([&] {
     try {
-      read_batches(bag, result.topic, options.input, queue);
+      read_batches(bag, result.topic, options.input, queue, result);
     } catch (const ReadingCancelled&) {
     } catch (...) {
       reader_error = std::current_exception();
@@ -108,6 +113,13 @@ AllanBagPassResult run_allan_bag_pass(const std::string& bag_path, const AllanBa
   if (!result.snapshot.warmed_up) {
     throw InputError(where + ": the " + std::to_string(result.message_count) +
                      " messages have too few regular stamps to estimate the sample period");
+  }
+  bool any_usable = false;
+  for (const allan::ChannelReport& channel : result.snapshot.channels) any_usable |= channel.finite_sample_count > 0;
+  if (!any_usable) {
+    throw InputError(where + ": none of the " + std::to_string(result.message_count) +
+                     " messages has a usable value in any channel (NaN/Inf, beyond +-1e100, or covariance[0] = -1 "
+                     "for a triad not provided), so there are no curves; nothing written");
   }
   return result;
 }

@@ -1,9 +1,11 @@
 #include "imu_lab/ros/allan_monitor_node.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/imu_sample.h"
 #include "imu_lab/ros/allan_messages.h"
 #include "imu_lab/ros/allan_report.h"
 #include "imu_lab/ros/noise_messages.h"
@@ -56,6 +58,10 @@ AllanMonitorNode::AllanMonitorNode(ros::NodeHandle& node, ros::NodeHandle& priva
   // run on worker threads as soon as it exists (one found health_ still empty and crashed it).
   health_.emplace(node.resolveName(settings_.input == AllanInput::kRate ? "imu/raw" : "imu/increment"),
                   load_input_health_settings(private_node, settings_.engine.gap_factor));
+  too_large_condition_ = health_->define_condition("samples with a value beyond +-1e100 (excluded from its channel)",
+                                                   diagnostic_msgs::DiagnosticStatus::WARN);
+  snapshot_failed_condition_ = health_->define_condition("snapshots that failed (no curves published)",
+                                                         diagnostic_msgs::DiagnosticStatus::ERROR);
   if (settings_.input == AllanInput::kRate) {
     input_subscriber_ = node.subscribe("imu/raw", settings_.queue_size, &AllanMonitorNode::on_imu, this);
   } else {
@@ -83,14 +89,16 @@ AllanMonitorNode::AllanMonitorNode(ros::NodeHandle& node, ros::NodeHandle& priva
 AllanMonitorNode::~AllanMonitorNode() { finish(); }
 
 void AllanMonitorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message) {
-  add(to_allan_sample(to_imu_record(*message)), message->header);
+  const ImuRecord record = to_imu_record(*message);
+  // A triad not provided (covariance[0] = -1) reads as NaN, which its channels leave out.
+  add(to_allan_sample(record), message->header, record.has_angular_rate && record.has_specific_force ? nullptr : &record);
 }
 
 void AllanMonitorNode::on_increment(const imu_lab::ImuIncrement::ConstPtr& message) {
-  add(to_allan_sample(to_increment_record(*message)), message->header);
+  add(to_allan_sample(to_increment_record(*message)), message->header, nullptr);
 }
 
-void AllanMonitorNode::add(const AllanSample& sample, const std_msgs::Header& header) {
+void AllanMonitorNode::add(const AllanSample& sample, const std_msgs::Header& header, const ImuRecord* incomplete) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (finished_) return;
   if (resume_after_stamp_ns_ && sample.stamp_ns <= *resume_after_stamp_ns_) {
@@ -102,12 +110,19 @@ void AllanMonitorNode::add(const AllanSample& sample, const std_msgs::Header& he
     ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: stamp %.9f s not after the previous one: sample dropped "
                       "(counted in diagnostics)", sample.stamp_ns * 1e-9);
   }
-  for (const double value : sample.values) {
-    if (std::isfinite(value)) continue;
+  if (incomplete != nullptr) {
+    health_->check_values(*incomplete);
+    ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: a sample at %.9f s without angular rate or specific force "
+                      "(covariance[0] = -1): that triad's channels leave it out (counted in diagnostics)",
+                      sample.stamp_ns * 1e-9);
+  } else if (std::any_of(sample.values.begin(), sample.values.end(), [](double v) { return !std::isfinite(v); })) {
     health_->count_non_finite();
     ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: NaN/Inf value at %.9f s excluded (counted in diagnostics)",
                       sample.stamp_ns * 1e-9);
-    break;
+  } else if (!std::all_of(sample.values.begin(), sample.values.end(), is_usable_imu_value)) {
+    health_->count(too_large_condition_);
+    ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: a value beyond +-%.0e at %.9f s excluded from its channel "
+                      "(counted in diagnostics)", kLargestUsableImuValue, sample.stamp_ns * 1e-9);
   }
   // The engine splits at gaps and drops unordered stamps itself (streaming_options.h).
   engine_->push(sample.stamp_ns, sample.values.data(), sample.values.size());
@@ -117,7 +132,14 @@ void AllanMonitorNode::add(const AllanSample& sample, const std_msgs::Header& he
 void AllanMonitorNode::publish_curves() {
   std::lock_guard<std::mutex> lock(mutex_);
   if (finished_ || !engine_->warmed_up()) return;
-  latest_snapshot_ = engine_->snapshot();
+  // A node never dies on its input: whatever the curves cannot be computed from is reported.
+  try {
+    latest_snapshot_ = engine_->snapshot();
+  } catch (const std::exception& error) {
+    health_->count(snapshot_failed_condition_);
+    ROS_ERROR_THROTTLE(kLogThrottle_s, "allan_monitor: no curves this time: %s (counted in diagnostics)", error.what());
+    return;
+  }
   for (const allan::Statistic statistic : settings_.statistics) {
     const double confidence = engine_->options().confidence;
     gyro_publisher_.publish(to_allan_deviation(*latest_snapshot_, statistic, AllanTriad::kGyro, confidence, last_header_));

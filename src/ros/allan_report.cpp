@@ -1,41 +1,24 @@
 #include "imu_lab/ros/allan_report.h"
 
-#include <ros/package.h>
-#include <spawn.h>
-#include <sys/wait.h>
-
-#include <filesystem>
 #include <stdexcept>
 
 #include "imu_lab/common/atomic_file.h"
-
-extern char** environ;
+#include "imu_lab/ros/config_paths.h"
 
 namespace imu_lab {
 namespace ros_io {
 namespace {
 
-const char* const kPython = "/usr/bin/python3";
-
-// Runs scripts/plot_allan.py on the CSVs in `directory`; returns what went wrong, or "".
-std::string plot_oadev(const std::string& directory) {
-  const std::string package_path = ros::package::getPath("imu_lab");
-  if (package_path.empty()) return "package imu_lab not found (is the workspace sourced?), so no plot";
-  const std::string script = package_path + "/scripts/plot_allan.py";
-  const std::string out = directory + "/allan.png";
-  std::vector<std::string> arguments = {kPython, script, directory, "--statistic", "oadev", "--out", out};
-  std::vector<char*> argv;
-  for (std::string& argument : arguments) argv.push_back(argument.data());
-  argv.push_back(nullptr);
-  pid_t child = 0;
-  if (::posix_spawn(&child, kPython, nullptr, nullptr, argv.data(), environ) != 0) {
-    return std::string("cannot run ") + kPython + " " + script;
+// Every file a report may hold, so that files of an earlier report this one does not produce
+// (its plot, its noise model) do not stay beside the new curves.
+std::vector<std::string> report_file_names() {
+  std::vector<std::string> names;
+  for (const allan::Statistic statistic : allan::kStreamingStatistics) {
+    names.push_back(std::string(allan::statistic_name(statistic)) + ".csv");
   }
-  int status = 0;
-  if (::waitpid(child, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    return script + " failed (see its message above; python3-matplotlib installed?)";
-  }
-  return "";
+  for (const char* name : {"allan_summary.yaml", "allan.png", "noise.yaml", "kalibr_imu.yaml"}) names.push_back(name);
+  for (const char* channel : kAllanChannelNames) names.push_back(partial_curves_file_name(channel));
+  return names;
 }
 
 }  // namespace
@@ -51,26 +34,30 @@ std::vector<io::ChannelCurve> channel_curves(const allan::StreamingSnapshot& sna
 AllanReportFiles write_allan_report(const std::string& directory, const AllanRunDescription& run,
                                     const allan::StreamingSnapshot& snapshot, bool plot,
                                     const AllanIdentifyOptions& identify) {
-  std::error_code error;
-  std::filesystem::create_directories(directory, error);
-  if (error) throw std::runtime_error("cannot create the report directory " + directory + ": " + error.message());
+  // One set: written in full into a staging directory, then moved in together (atomic_file.h).
+  OutputSet set;
+  const std::string staging = set.stage_directory(directory);
   AllanReportFiles files;
   for (const allan::Statistic statistic : allan::kStreamingStatistics) {
-    const std::string path = directory + "/" + allan::statistic_name(statistic) + ".csv";
-    io::write_stability_csv(path, channel_curves(snapshot, statistic));
-    files.written.push_back(path);
+    const std::string name = std::string(allan::statistic_name(statistic)) + ".csv";
+    io::write_stability_csv(staging + "/" + name, channel_curves(snapshot, statistic));
+    files.written.push_back(name);
   }
   // After the curves (a failed fit keeps them) and before the plot (it draws the partial curves).
-  files.noise = write_allan_noise_report(directory, run, snapshot, identify);
-  files.written.insert(files.written.end(), files.noise.written.begin(), files.noise.written.end());
-  const std::string summary_path = directory + "/allan_summary.yaml";
-  write_file_atomically(summary_path,
+  files.noise = write_allan_noise_report(staging, run, snapshot, identify);
+  for (const std::string& path : files.noise.written) files.written.push_back(path.substr(staging.size() + 1));
+  write_file_atomically(staging + "/allan_summary.yaml",
                         format_allan_summary(run, snapshot) + format_identification_summary(identify, files.noise));
-  files.written.push_back(summary_path);
+  files.written.push_back("allan_summary.yaml");
   if (plot) {
-    files.plot_problem = plot_oadev(directory);
-    if (files.plot_problem.empty()) files.written.push_back(directory + "/allan.png");
+    files.plot_problem = run_plot_script(
+        "plot_allan.py", {staging, "--statistic", "oadev", "--out", staging + "/allan.png"});
+    if (files.plot_problem.empty()) files.written.push_back("allan.png");
+    else files.plot_problem += ", so no plot";
   }
+  for (const std::string& name : report_file_names()) set.remove_at_commit(directory + "/" + name);
+  set.commit();
+  for (std::string& name : files.written) name = directory + "/" + name;
   return files;
 }
 

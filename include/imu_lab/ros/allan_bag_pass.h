@@ -30,12 +30,16 @@ struct AllanBagPassResult {
   AllanInput input = AllanInput::kRate;
   allan::StreamingOptions engine;  // as used
   std::size_t message_count = 0;
+  // sensor_msgs/Imu messages marking a triad as not provided (covariance[0] = -1): the triad's
+  // channels leave them out, as they do NaN values.
+  std::size_t messages_without_angular_rate = 0;
+  std::size_t messages_without_specific_force = 0;
   allan::StreamingSnapshot snapshot;
 };
 
 // Throws InputError naming the bag (and the topic) for an unreadable, truncated or corrupt bag,
-// a missing or ambiguous topic, a topic of the wrong type, one with too few messages, and, under
-// StampPolicy::kStop, the first irregular stamp. ConfigError for unusable engine options.
+// a missing or ambiguous topic, a topic of the wrong type, one with too few messages, one where no
+// channel has a single usable value, and, under StampPolicy::kStop, the first irregular stamp. ConfigError for unusable engine options.
 AllanBagPassResult run_allan_bag_pass(const std::string& bag_path, const AllanBagPassOptions& options);
 
 }  // namespace ros_io

@@ -48,7 +48,8 @@ class AllanMonitorNode {
  private:
   void on_imu(const sensor_msgs::Imu::ConstPtr& message);
   void on_increment(const imu_lab::ImuIncrement::ConstPtr& message);
-  void add(const AllanSample& sample, const std_msgs::Header& header);
+  // incomplete: the record when it lacks a triad (covariance[0] = -1), for the diagnostics.
+  void add(const AllanSample& sample, const std_msgs::Header& header, const ImuRecord* incomplete);
   void publish_curves();
   void save_checkpoint();
   bool on_write_report(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
@@ -75,6 +76,8 @@ class AllanMonitorNode {
   ros::WallTimer diagnostics_timer_;
 
   std::optional<InputHealth> health_;
+  std::size_t too_large_condition_ = 0;
+  std::size_t snapshot_failed_condition_ = 0;
 };
 
 }  // namespace ros_io
