@@ -1,6 +1,10 @@
 #include "imu_lab/emulator/imu_emulator.h"
 
+#include <cmath>
 #include <stdexcept>
+#include <string>
+
+#include "imu_lab/common/config_error.h"
 
 #include "imu_lab/emulator/sensor_channel.h"
 
@@ -16,7 +20,14 @@ ImuEmulator::ImuEmulator(const SensorProfile& profile, std::unique_ptr<MotionSou
       gyro_(std::make_unique<TriadChannel>(profile.gyro, "gyro", settings.seed)),
       accelerometer_(
           std::make_unique<TriadChannel>(profile.accelerometer, "accelerometer", settings.seed)) {
-  if (!(settings.rate_hz > 0.0)) throw std::invalid_argument("ImuEmulator: rate_hz must be positive");
+  // Stamps are whole nanoseconds: a faster rate would repeat them.
+  if (!(settings.rate_hz > 0.0 && settings.rate_hz <= 1e9)) {
+    throw ConfigError("emulator settings", "rate_hz", "must be in (0, 1e9] Hz, got " + std::to_string(settings.rate_hz));
+  }
+  if (!(settings.start_time_s >= 0.0 && std::isfinite(settings.start_time_s))) {
+    throw ConfigError("emulator settings", "start_time_s", "must be a finite time >= 0 s, got " +
+                                                                std::to_string(settings.start_time_s));
+  }
   if (!motion_) throw std::invalid_argument("ImuEmulator: no motion source");
 }
 

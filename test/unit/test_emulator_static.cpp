@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "imu_lab/common/config_error.h"
 #include "imu_lab/emulator/earth_model.h"
 #include "imu_lab/emulator/imu_emulator.h"
 #include "test_emulator_paths.h"
@@ -220,6 +221,30 @@ TEST(EmulatorStatic, SameSeedBitIdenticalDifferentSeedDifferent) {
     std::printf("[determinism] %s: seed 42 twice identical; seed 43 differs in %zu of %zu values\n",
                 file, differing, first.size());
   }
+}
+
+// A rate whose interval is under the stamps' nanosecond, or a negative or non-finite start, is a
+// bad configuration named by its key (the tool's options and the node's parameters both land here).
+TEST(EmulatorSettingsCheck, ImpossibleRatesAndStartsAreRefusedByKey) {
+  const SensorProfile profile = white_only_profile();
+  const ScenarioConfig scenario = scenario_at(50.0, 0.0, 0.0, 0.0);
+  const auto refusal = [&](double rate_hz, double start_time_s) -> std::string {
+    EmulatorSettings settings;
+    settings.rate_hz = rate_hz;
+    settings.start_time_s = start_time_s;
+    try {
+      ImuEmulator emulator(profile, scenario, settings);
+    } catch (const ConfigError& error) {
+      return error.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(refusal(200.0, 1e9), "");
+  EXPECT_NE(refusal(2e9, 1e9).find("rate_hz: must be in (0, 1e9] Hz"), std::string::npos);
+  EXPECT_NE(refusal(std::nan(""), 1e9).find("rate_hz"), std::string::npos);
+  EXPECT_NE(refusal(-1.0, 1e9).find("rate_hz"), std::string::npos);
+  EXPECT_NE(refusal(200.0, -5.0).find("start_time_s: must be a finite time >= 0 s"), std::string::npos);
+  EXPECT_NE(refusal(200.0, INFINITY).find("start_time_s"), std::string::npos);
 }
 
 }  // namespace
