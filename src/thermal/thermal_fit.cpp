@@ -5,7 +5,10 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <set>
 #include <sstream>
+
+#include "imu_lab/common/fit_quality.h"
 
 namespace imu_lab {
 namespace thermal {
@@ -25,12 +28,15 @@ struct TriadSpec {
   double input_reference;  // |input| of the known excitation, for the opposite-orientation test
 };
 
-// The rows (static windows) of one axis.
+// The rows (static windows) of one axis. `cluster` is the row's constant: its orientation's, or
+// (across gravity, thermal_fit.h) its visit's.
 struct AxisData {
   std::vector<double> y, delta_t, rate, second_delta_t, input;
   std::vector<int> cluster;
   double input_reference = 1.0;
 };
+
+
 
 struct Structure {
   int clusters = 0;
@@ -110,44 +116,77 @@ struct CrossValidation {
   double standard_error = 0.0;
 };
 
-CrossValidation cross_validate(const AxisData& data, const Structure& s, const ThermalFitOptions& options) {
+// One candidate's held-out errors per fold; `constrained` is false where the fold's training rows
+// leave the candidate singular.
+struct FoldErrors {
+  std::vector<bool> constrained;
+  std::vector<double> square;
+  std::vector<std::size_t> count;
+};
+
+FoldErrors fold_errors(const AxisData& data, const Structure& s, const ThermalFitOptions& options) {
   const int folds = options.cross_validation_folds;
   const std::size_t block = static_cast<std::size_t>(std::max(1, options.cross_validation_block_windows));
-  std::vector<double> fold_mean_square;
-  double total_square = 0.0;
-  std::size_t total_count = 0;
+  FoldErrors out;
   for (int fold = 0; fold < folds; ++fold) {
     std::vector<std::size_t> train, test;
     for (std::size_t r = 0; r < data.y.size(); ++r) ((r / block) % folds == static_cast<std::size_t>(fold) ? test : train).push_back(r);
     std::vector<int> column;
     const Solution solution = fit_rows(data, train, s, &column);
-    if (!solution.ok) return {};
+    out.constrained.push_back(solution.ok);
+    out.square.push_back(0.0);
+    out.count.push_back(0);
+    if (!solution.ok) continue;
     Structure kept = s;
     kept.clusters = static_cast<int>(std::count_if(column.begin(), column.end(), [](int c) { return c >= 0; }));
-    double square = 0.0;
-    std::size_t count = 0;
     Eigen::RowVectorXd row(kept.columns());
     for (std::size_t r : test) {
-      if (column[data.cluster[r]] < 0) continue;  // an orientation seen only in this fold
+      if (column[data.cluster[r]] < 0) continue;  // an orientation (or visit) seen only in this fold
       fill_row(data, r, kept, column, row);
       const double error = data.y[r] - row.dot(solution.beta);
-      square += error * error;
-      ++count;
+      out.square.back() += error * error;
+      ++out.count.back();
     }
-    if (count == 0) continue;
-    fold_mean_square.push_back(square / count);
-    total_square += square;
-    total_count += count;
   }
-  CrossValidation out;
-  if (total_count == 0 || fold_mean_square.size() < 2) return out;
-  out.mean_square = total_square / total_count;
-  double mean = 0.0, spread = 0.0;
-  for (double value : fold_mean_square) mean += value;
-  mean /= fold_mean_square.size();
-  for (double value : fold_mean_square) spread += (value - mean) * (value - mean);
-  out.standard_error = std::sqrt(spread / (fold_mean_square.size() - 1) / fold_mean_square.size());
   return out;
+}
+
+// The candidates' scores over the same folds: a fold whose training rows leave even the simplest
+// candidate singular (it holds, say, every window of an orientation at two of its three
+// temperatures) says nothing about the orders and is left out for all; a candidate singular in
+// another fold cannot be fitted reliably and scores infinite.
+std::vector<CrossValidation> score_on_common_folds(const std::vector<FoldErrors>& candidates) {
+  std::vector<CrossValidation> scores(candidates.size());
+  if (candidates.empty()) return scores;
+  const std::size_t folds = candidates.front().constrained.size();
+  std::vector<bool> informative(folds, false);
+  for (const FoldErrors& candidate : candidates) {
+    for (std::size_t f = 0; f < folds; ++f) informative[f] = informative[f] || candidate.constrained[f];
+  }
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    const FoldErrors& errors = candidates[c];
+    std::vector<double> fold_mean_square;
+    double total_square = 0.0;
+    std::size_t total_count = 0;
+    bool usable = true;
+    for (std::size_t f = 0; f < folds && usable; ++f) {
+      if (!informative[f]) continue;
+      usable = errors.constrained[f];
+      if (!usable || errors.count[f] == 0) continue;
+      fold_mean_square.push_back(errors.square[f] / errors.count[f]);
+      total_square += errors.square[f];
+      total_count += errors.count[f];
+    }
+    if (!usable || total_count == 0 || fold_mean_square.size() < 2) continue;
+    CrossValidation& out = scores[c];
+    out.mean_square = total_square / total_count;
+    double mean = 0.0, spread = 0.0;
+    for (double value : fold_mean_square) mean += value;
+    mean /= fold_mean_square.size();
+    for (double value : fold_mean_square) spread += (value - mean) * (value - mean);
+    out.standard_error = std::sqrt(spread / (fold_mean_square.size() - 1) / fold_mean_square.size());
+  }
+  return scores;
 }
 
 std::string axis_label(const TriadSpec& triad, int axis) { return std::string(triad.name) + " " + kAxisNames[axis]; }
@@ -252,6 +291,17 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
                           "the second-sensor term");
   }
   result.static_window_count = used.size();
+  // Visits: runs of static windows in one orientation, broken by a move (or any window not static).
+  std::vector<int> visit_of_window(windows.size(), -1);
+  int visits = 0;
+  for (std::size_t w = 0, previous = windows.size(); w < windows.size(); ++w) {
+    if (orientations.cluster_of_window[w] < 0) continue;
+    const bool continues = previous + 1 == w && orientations.cluster_of_window[previous] == orientations.cluster_of_window[w];
+    visit_of_window[w] = continues ? visit_of_window[previous] : visits++;
+    previous = w;
+  }
+  result.visit_count = static_cast<std::size_t>(visits);
+  const double along_gravity_cosine = std::cos(options.cluster_angle_rad);
 
   ThermalModel& model = result.model;
   model.reference_temperature_c = options.reference_temperature_c;
@@ -270,6 +320,13 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
     box.second_temperature_min_c = std::min(box.second_temperature_min_c, second_c);
     box.second_temperature_max_c = std::max(box.second_temperature_max_c, second_c);
   }
+  // A steady temperature (rate 0) always belongs inside: there the rate term adds nothing, whatever
+  // rates the test ran through. Without it, a test whose static windows all saw some drift left 0
+  // outside, and a steady temperature was "clamped" to a rate the sensor never had. The margin (a
+  // tenth of the largest tested rate) keeps the noise of a steady temperature's rate estimate in.
+  const double rate_margin_c_s = 0.1 * std::max(std::abs(box.rate_min_c_s), std::abs(box.rate_max_c_s));
+  box.rate_min_c_s = std::min(box.rate_min_c_s, 0.0) - rate_margin_c_s;
+  box.rate_max_c_s = std::max(box.rate_max_c_s, 0.0) + rate_margin_c_s;
 
   const TriadSpec triads[2] = {
       {"gyro", "rad/s", options.gyro_scale_factor, options.earth.earth_rate_rad_s},
@@ -317,17 +374,25 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
         data.second_delta_t.push_back(window.second_temperature_c.value_or(window.temperature_c) -
                                       options.reference_temperature_c);
         data.input.push_back(gyro ? cluster.angular_rate_input_rad_s[axis] : cluster.specific_force_input_m_s2[axis]);
-        data.cluster.push_back(orientations.cluster_of_window[w]);
+        const bool along_gravity = std::abs(cluster.up_body[axis]) >= along_gravity_cosine;
+        const int clusters = static_cast<int>(orientations.clusters.size());
+        data.cluster.push_back(options.precise_revisits || along_gravity ? orientations.cluster_of_window[w]
+                                                                          : clusters + visit_of_window[w]);
       }
       Structure base;
-      base.clusters = static_cast<int>(orientations.clusters.size());
+      base.clusters = static_cast<int>(orientations.clusters.size()) + visits;
       base.rate = options.temperature_rate_term;
       base.scale_rate = options.scale_factor_rate_term;
       base.second_order = options.second_sensor_term ? options.second_sensor_order : 0;
-      const std::vector<int> orders =
-          admissible_orders(options, box.temperature_max_c - box.temperature_min_c, data.y.size(), base, triad.scale_factor);
+      // base.clusters numbers the constants (orientations, then visits); the parameters are the
+      // constants this axis uses.
+      Structure counted = base;
+      counted.clusters = static_cast<int>(std::set<int>(data.cluster.begin(), data.cluster.end()).size());
+      const std::vector<int> orders = admissible_orders(options, box.temperature_max_c - box.temperature_min_c,
+                                                        data.y.size(), counted, triad.scale_factor);
       if (orders.empty()) {
-        refuse_unconstrained(options, box.temperature_min_c, box.temperature_max_c, data.y.size(), base, triad.scale_factor);
+        refuse_unconstrained(options, box.temperature_min_c, box.temperature_max_c, data.y.size(), counted,
+                             triad.scale_factor);
       }
 
       AxisFitReport report;
@@ -345,14 +410,18 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
           CrossValidation score;
         };
         std::vector<Candidate> candidates;
+        std::vector<FoldErrors> errors;
         for (int bias_order : orders) {
           for (int scale_order : triad.scale_factor ? orders : std::vector<int>{0}) {
             Structure s = base;
             s.bias_order = bias_order;
             s.scale_order = scale_order;
-            candidates.push_back({s, cross_validate(data, s, options)});
+            candidates.push_back({s, CrossValidation()});
+            errors.push_back(fold_errors(data, s, options));
           }
         }
+        const std::vector<CrossValidation> scores = score_on_common_folds(errors);
+        for (std::size_t c = 0; c < candidates.size(); ++c) candidates[c].score = scores[c];
         const auto best = std::min_element(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
           return a.score.mean_square < b.score.mean_square;
         });
@@ -384,9 +453,12 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
                               "orientations seen at too few temperatures?); ask for a lower order or add dwells "
                               "at more temperatures");
       }
+      // The solution's layout: only the constants (orientations, visits) that have rows.
+      chosen.clusters = static_cast<int>(std::count_if(column.begin(), column.end(), [](int c) { return c >= 0; }));
       report.bias_order = chosen.bias_order;
       report.scale_factor_order = chosen.scale_order;
       report.residual_rms = std::sqrt(solution.residual_sum_squares / data.y.size());
+      report.constant_count = static_cast<std::size_t>(chosen.clusters);
       AxisThermalTerms& terms = (*terms_of[t])[axis];
       fill_terms(chosen, solution, data, triad, &terms, &report);
 
@@ -405,7 +477,7 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
         residual.stamp_s = window.mid_stamp_s;
         residual.temperature_c = window.temperature_c;
         residual.rate_c_s = window.rate_c_s;
-        residual.cluster = data.cluster[r];
+        residual.cluster = orientations.cluster_of_window[used[r]];  // the orientation, not the visit
         residual.residual = data.y[r] - predicted;
         residual.fitted_delta_bias = polynomial;
         residual.observed_delta_bias = polynomial + residual.residual;
@@ -414,6 +486,27 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
         fitted_max = std::max(fitted_max, delta_bias);
       }
       report.delta_bias_peak_to_peak = fitted_max - fitted_min;
+      // The noise of a window mean from the residuals themselves: half the mean square of the
+      // change between neighbouring windows of one visit (the Allan variance at the window's
+      // length: white noise and flicker, without the slow wander or a misfit between visits).
+      double change_square = 0.0;
+      std::size_t changes = 0;
+      const std::size_t first = result.residuals.size() - data.y.size();
+      for (std::size_t r = 0; r + 1 < data.y.size(); ++r) {
+        if (used[r + 1] != used[r] + 1 || visit_of_window[used[r + 1]] != visit_of_window[used[r]]) continue;
+        const double change = result.residuals[first + r + 1].residual - result.residuals[first + r].residual;
+        change_square += change * change;
+        ++changes;
+      }
+      report.window_noise = changes > 0 ? std::sqrt(change_square / (2.0 * changes)) : 0.0;
+      report.residual_over_noise = report.window_noise > 0.0 ? report.residual_rms / report.window_noise
+                                                             : std::numeric_limits<double>::infinity();
+      const std::string warning = chi2_warning(
+          axis_label(triad, axis), report.residual_over_noise * report.residual_over_noise,
+          "did the IMU move during the rests, or do revisits of an orientation differ in a way one constant per "
+          "visit does not absorb (precise revisits claimed for a hand-turned test)? The residuals per window are "
+          "in the residual CSV");
+      if (!warning.empty()) result.warnings.push_back(warning);
       result.axes.push_back(report);
     }
   }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "imu_lab/common/format_number.h"
+
 namespace imu_lab {
 namespace thermal {
 namespace {
@@ -29,6 +31,19 @@ double polynomial_without_constant(const std::vector<double>& coefficients, doub
   double sum = 0.0;  // Horner on x (c0 + x (c1 + ...))
   for (auto it = coefficients.rbegin(); it != coefficients.rend(); ++it) sum = (sum + *it) * x;
   return sum;
+}
+
+std::string validity_range_text(const ThermalModel& model) {
+  const ThermalValidity& box = model.validity;
+  std::string text = format_number(box.temperature_min_c, 4) + " .. " + format_number(box.temperature_max_c, 4) + " degC";
+  if (model.uses_temperature_rate) {
+    text += ", " + format_number(box.rate_min_c_s, 4) + " .. " + format_number(box.rate_max_c_s, 4) + " degC/s";
+  }
+  if (model.uses_second_sensor) {
+    text += ", second sensor " + format_number(box.second_temperature_min_c, 4) + " .. " +
+            format_number(box.second_temperature_max_c, 4) + " degC";
+  }
+  return text;
 }
 
 ThermalInput clamp_to_validity(const ThermalModel& model, const ThermalInput& input, bool* clamped) {

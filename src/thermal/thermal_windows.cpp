@@ -1,5 +1,6 @@
 #include "imu_lab/thermal/thermal_windows.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -51,18 +52,15 @@ void ThermalWindowAverager::add(const ImuReading& reading) {
                                      second_temperature_->age_at(reading.stamp_s), settings_.max_temperature_age_s));
     }
   }
-  if (first_stamp_s_) {
-    const double interval_s = reading.stamp_s - last_stamp_s_;
-    if (sample_interval_s_ == 0.0 || interval_s < sample_interval_s_) sample_interval_s_ = interval_s;
-  } else {
-    first_stamp_s_ = reading.stamp_s;
-  }
+  if (!first_stamp_s_) first_stamp_s_ = reading.stamp_s;
+  const double interval_s = reading.stamp_s - last_stamp_s_;
   last_stamp_s_ = reading.stamp_s;
   const long index = static_cast<long>(std::floor((reading.stamp_s - *first_stamp_s_) / settings_.window_s));
   if (index != window_index_) {
     if (count_ > 0) close_window();
     window_index_ = index;
     count_ = 0;
+    window_intervals_s_.clear();
     rate_offset_ = reading.angular_rate_rad_s;
     force_offset_ = reading.specific_force_m_s2;
     rate_sum_ = rate_square_sum_ = force_sum_ = force_square_sum_ = Eigen::Vector3d::Zero();
@@ -70,6 +68,7 @@ void ThermalWindowAverager::add(const ImuReading& reading) {
   }
   const Eigen::Vector3d rate = reading.angular_rate_rad_s - rate_offset_;
   const Eigen::Vector3d force = reading.specific_force_m_s2 - force_offset_;
+  if (count_ > 0) window_intervals_s_.push_back(interval_s);
   ++count_;
   rate_sum_ += rate;
   rate_square_sum_ += rate.cwiseProduct(rate);
@@ -94,8 +93,14 @@ void ThermalWindowAverager::close_window() {
   window.temperature_c = temperature_sum_ / n;
   window.rate_c_s = rate_c_s_sum_ / n;
   if (second_temperature_) window.second_temperature_c = second_sum_ / n;
-  const double expected = sample_interval_s_ > 0.0 ? settings_.window_s / sample_interval_s_
-                                                   : std::numeric_limits<double>::infinity();
+  // The samples a full window holds, from the median interval: real stamps jitter (+-30 % is
+  // common), and the smallest interval would ask for more samples than any window has.
+  double expected = std::numeric_limits<double>::infinity();
+  if (!window_intervals_s_.empty()) {
+    auto middle = window_intervals_s_.begin() + window_intervals_s_.size() / 2;
+    std::nth_element(window_intervals_s_.begin(), middle, window_intervals_s_.end());
+    expected = settings_.window_s / *middle;
+  }
   window.is_static = n >= settings_.min_fill_fraction * expected &&
                      window.angular_rate_std_rad_s.maxCoeff() < settings_.static_angular_rate_std_rad_s &&
                      window.specific_force_std_m_s2.maxCoeff() < settings_.static_specific_force_std_m_s2;

@@ -2,9 +2,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <optional>
 
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/thermal/thermal_fit.h"
+#include "imu_lab/thermal/thermal_model.h"
 
 namespace imu_lab {
 namespace {
@@ -119,6 +122,57 @@ TEST(ThermalRefusals, StaleOrMissingTemperatureStopsTheAveraging) {
   const thermal::TemperatureHistory empty;
   thermal::ThermalWindowAverager without(settings, empty, nullptr);
   EXPECT_THROW(without.add({1.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()}), InputError);
+}
+
+// Real stamps jitter: with +-30 % on every interval the smallest one is 0.7 of the period, and
+// taking it for the period made every window "short of samples", so no window was static ("no
+// window with the IMU at rest"). The median interval is the period; a window with a gap is still
+// short.
+TEST(ThermalWindows, JitteredStampsFillTheirWindowsAndAGapDoesNot) {
+  thermal::TemperatureHistory history;
+  for (int i = 0; i <= 700; ++i) history.add(1000.0 + i, 20.0);
+  thermal::WindowSettings settings;
+  thermal::ThermalWindowAverager averager(settings, history, nullptr);
+  std::uint64_t state = 16;
+  const auto uniform = [&] {  // a fixed sequence in [0, 1)
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) / 9007199254740992.0;
+  };
+  double stamp_s = 1000.0;
+  while (stamp_s < 1600.0) {
+    const bool in_gap = stamp_s > 1330.0 && stamp_s < 1345.0;  // 15 s missing in the sixth window
+    if (!in_gap) averager.add({stamp_s, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, 9.8)});
+    stamp_s += 0.1 * (1.0 + 0.6 * (uniform() - 0.5));  // 10 Hz, +-30 %
+  }
+  const auto windows = averager.finish();
+  ASSERT_EQ(windows.size(), 10u);
+  for (std::size_t w = 0; w < windows.size(); ++w) {
+    EXPECT_EQ(windows[w].is_static, w != 5) << "window " << w << " with " << windows[w].sample_count << " samples";
+  }
+}
+
+// A steady temperature's rate (0) belongs in the validity box, with a margin: a test whose static
+// windows all saw the temperature rise left 0 outside, and a steady temperature was "clamped" to a
+// rate the sensor never had (in the demo 24,554 of 120,000 samples got a correction not there).
+TEST(ThermalValidity, RateZeroIsInsideTheBoxWithAMargin) {
+  auto windows = synthetic_windows(kSixPositions, -20.0, 60.0, 20);
+  for (std::size_t w = 0; w < windows.size(); ++w) windows[w].rate_c_s = 0.01 + 0.01 * static_cast<double>(w % 5) / 4.0;
+  thermal::ThermalFitOptions options;
+  options.polynomial_order = 1;
+  options.temperature_rate_term = true;
+  const auto result = thermal::fit_thermal_model(windows, 60.0, options);
+  const auto& box = result.model.validity;
+  EXPECT_NEAR(box.rate_max_c_s, 0.02 + 0.002, 1e-12);
+  EXPECT_NEAR(box.rate_min_c_s, -0.002, 1e-12);
+  bool clamped = false;
+  thermal::clamp_to_validity(result.model, {20.0, 0.0, std::nullopt}, &clamped);
+  EXPECT_FALSE(clamped) << "a steady temperature is outside the model's range";
+  thermal::clamp_to_validity(result.model, {20.0, 0.05, std::nullopt}, &clamped);
+  EXPECT_TRUE(clamped);
+  EXPECT_EQ(thermal::validity_range_text(result.model), "-20 .. 60 degC, -0.002 .. 0.022 degC/s");
+  options.temperature_rate_term = false;
+  EXPECT_EQ(thermal::validity_range_text(thermal::fit_thermal_model(windows, 60.0, options).model), "-20 .. 60 degC")
+      << "no rate term: no rate range that could clamp";
 }
 
 }  // namespace

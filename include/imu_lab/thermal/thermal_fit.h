@@ -5,6 +5,12 @@
 // scale factor and misalignment times the known input, and the turn-on bias: those belong to
 // calibration, which comes after thermal compensation). So delta_scale needs the axis in at least
 // two opposite orientations; one orientation cannot separate bias(T) from scale factor(T).
+// Revisits: an orientation turned to again by hand is off by a few tenths of a degree, delta. For
+// the axis along gravity that changes its input by g delta^2 / 2 (14 ug at 0.3 deg), so its visits
+// share the orientation's constant; for an axis across gravity by g delta (5 mg), more than a
+// MEMS accelerometer's whole thermal bias, so there each visit gets its own constant and only the
+// temperature changes within a visit inform the fit (unless precise_revisits: a rate table or a
+// fixture that repeats orientations to arc-seconds).
 // Polynomial orders are fixed or chosen by blocked cross-validation (one-standard-error rule).
 // Parameter uncertainties assume independent window means: with flicker and random-walk noise
 // over hours they are optimistic.
@@ -45,6 +51,7 @@ struct ThermalFitOptions {
   int cross_validation_folds = 5;
   int cross_validation_block_windows = 10;  // neighbouring windows share a fold (they are correlated)
   double cluster_angle_rad = 10.0 * 3.14159265358979323846 / 180.0;
+  bool precise_revisits = false;  // one constant per orientation for every axis (see above)
   EarthReference earth;
 };
 
@@ -64,6 +71,12 @@ struct AxisFitReport {
   double residual_rms = 0.0;          // [u]
   double cross_validation_rms = 0.0;  // [u]; 0 when the order was fixed
   double delta_bias_peak_to_peak = 0.0;  // of the fitted delta_bias over the test's windows [u]
+  std::size_t constant_count = 0;        // per orientation (along gravity) or per visit (across it)
+  // The noise of one window's mean [u], from the change of the residual between neighbouring
+  // windows of a visit (Allan deviation at the window's length), and residual_rms over it: 1 to 2
+  // when the model describes the data (the slow wander of random walk adds), far above when not.
+  double window_noise = 0.0;
+  double residual_over_noise = 0.0;
   std::vector<FittedParameter> parameters;
 };
 
@@ -86,6 +99,8 @@ struct ThermalFitResult {
   std::vector<WindowResidual> residuals;
   OrientationAssignment orientations;
   std::size_t static_window_count = 0;
+  std::size_t visit_count = 0;        // runs of static windows in one orientation
+  std::vector<std::string> warnings;  // axes whose residual is far above the noise (fit_quality.h)
 };
 
 // rate_window_s: how the windows' rates were estimated (WindowSettings), stored in the model.

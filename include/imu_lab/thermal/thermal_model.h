@@ -65,6 +65,10 @@ struct ThermalCorrection {
   bool clamped = false;  // an input was outside the validity box and was held at its edge
 };
 
+// The validity range of the inputs the model uses (only those clamp), for messages:
+// "-20.1 .. 60.2 degC, -0.0042 .. 0.0189 degC/s".
+std::string validity_range_text(const ThermalModel& model);
+
 // The input clamped into the validity box (and whether it had to be).
 ThermalInput clamp_to_validity(const ThermalModel& model, const ThermalInput& input, bool* clamped);
 

@@ -39,7 +39,9 @@ struct WindowSettings {
   // degrees per second, or a change of orientation, exceeds them by far).
   double static_angular_rate_std_rad_s = 0.005;
   double static_specific_force_std_m_s2 = 0.05;
-  double min_fill_fraction = 0.9;  // of the samples the window should hold, from the sample rate
+  // of the samples the window should hold at its median sample interval (robust to stamp jitter;
+  // a gap leaves the window short of samples and so not static)
+  double min_fill_fraction = 0.9;
 };
 
 class ThermalWindowAverager {
@@ -63,7 +65,7 @@ class ThermalWindowAverager {
   std::vector<ThermalWindow> windows_;
   std::optional<double> first_stamp_s_;
   double last_stamp_s_ = 0.0;
-  double sample_interval_s_ = 0.0;  // smallest seen, for the fill check
+  std::vector<double> window_intervals_s_;  // between the current window's samples, for the fill check
   long window_index_ = -1;
   std::size_t count_ = 0;
   Eigen::Vector3d rate_sum_, rate_square_sum_, force_sum_, force_square_sum_;
