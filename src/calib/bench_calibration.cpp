@@ -10,6 +10,7 @@
 #include "calibration_residuals.h"
 #include "imu_lab/calib/observability.h"
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/fit_quality.h"
 
 namespace imu_lab {
 namespace calib {
@@ -319,6 +320,13 @@ CalibrationResult calibrate(const std::vector<CalibrationSample>& samples, const
     result.moves.push_back(report);
   }
   result.held_out = held_out_check(held_out_rests, result.calibration, result.covariance, site);
+  const std::string warning = chi2_warning(
+      "the calibration fit", result.chi2_per_degree_of_freedom,
+      result.known_orientations
+          ? "is the schedule the one the IMU followed (its orientations and site), and was it still in the rests?"
+          : "are the latitude and height the site's (gravity and the Earth rate are the reference), and was the IMU "
+            "still in the rests?");
+  if (!warning.empty()) result.warnings.push_back(warning);
   return result;
 }
 

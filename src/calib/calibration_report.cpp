@@ -62,7 +62,9 @@ std::string calibration_report(const CalibrationResult& result) {
   text += format("residuals %.0f, free parameters %.0f, chi2/dof %.3f, condition number %.3g\n",
                  static_cast<double>(result.residual_count), static_cast<double>(result.free_parameter_count),
                  result.chi2_per_degree_of_freedom, result.condition_number);
-  text += "solver: " + result.solver_report + "\n\n";
+  text += "solver: " + result.solver_report + "\n";
+  for (const std::string& warning : result.warnings) text += "WARNING: " + warning + "\n";
+  text += "\n";
   text += triad_section(result, true);
   if (result.estimated[parameter_offset::kGyroGSensitivity]) {
     text += "  g-sensitivity G [deg/h per g], rows x y z:\n";

@@ -78,6 +78,7 @@ struct CalibrationResult {
   std::vector<MoveReport> moves;
   HeldOutCheck held_out;
   std::string solver_report;
+  std::vector<std::string> warnings;  // chi2/dof far above 1 (common/fit_quality.h)
 };
 
 // Throws InputError with what is wrong and what to do: no or too few rests (with the number still
