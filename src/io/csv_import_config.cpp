@@ -69,6 +69,9 @@ CsvImportOptions parse_csv_import_options(const std::string& yaml_text, const st
     check_keys(time, source, "time", {"column", "unit", "offset_s"});
     if (time["column"]) options.time_column = scalar(time["column"], source, "time.column");
     if (time["unit"]) options.time_unit = parse_time_unit(scalar(time["unit"], source, "time.unit"), source, "time.unit");
+    options.given.columns |= bool(time["column"]);
+    options.given.time_unit |= bool(time["unit"]);
+    options.given.time_offset |= bool(time["offset_s"]);
     if (time["offset_s"]) {
       const std::string text = scalar(time["offset_s"], source, "time.offset_s");
       const auto offset_ns = parse_decimal_time_ns(text, TimeUnit::kSecond);
@@ -80,6 +83,8 @@ CsvImportOptions parse_csv_import_options(const std::string& yaml_text, const st
     check_keys(gyro, source, "gyro", {"columns", "unit"});
     if (gyro["columns"]) read_triad(gyro["columns"], source, "gyro.columns", options.gyro_columns);
     if (gyro["unit"]) options.gyro_unit = parse_angular_rate_unit(scalar(gyro["unit"], source, "gyro.unit"), source, "gyro.unit");
+    options.given.columns |= bool(gyro["columns"]);
+    options.given.gyro_unit |= bool(gyro["unit"]);
   }
   if (const YAML::Node accel = root["accel"]) {
     check_keys(accel, source, "accel", {"columns", "unit"});
@@ -87,10 +92,13 @@ CsvImportOptions parse_csv_import_options(const std::string& yaml_text, const st
     if (accel["unit"]) {
       options.accel_unit = parse_specific_force_unit(scalar(accel["unit"], source, "accel.unit"), source, "accel.unit");
     }
+    options.given.columns |= bool(accel["columns"]);
+    options.given.accel_unit |= bool(accel["unit"]);
   }
   if (const YAML::Node temperature = root["temperature"]) {
     check_keys(temperature, source, "temperature", {"column"});
     if (temperature["column"]) options.temperature_column = scalar(temperature["column"], source, "temperature.column");
+    options.given.temperature_column |= bool(temperature["column"]);
   }
   return options;
 }

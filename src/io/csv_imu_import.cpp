@@ -10,6 +10,7 @@
 
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/identify/units.h"
+#include "imu_lab/io/csv_header_inference.h"
 
 namespace imu_lab {
 namespace io {
@@ -78,15 +79,6 @@ int unit_exponent_to_ns(TimeUnit unit) {
   return 0;
 }
 
-std::string format_stamp_s(std::int64_t stamp_ns) {
-  const bool negative = stamp_ns < 0;
-  const std::uint64_t magnitude = negative ? 0 - static_cast<std::uint64_t>(stamp_ns) : stamp_ns;
-  char text[40];
-  std::snprintf(text, sizeof text, "%s%llu.%09llu", negative ? "-" : "",
-                static_cast<unsigned long long>(magnitude / 1000000000ULL),
-                static_cast<unsigned long long>(magnitude % 1000000000ULL));
-  return text;
-}
 
 bool is_column_number(const std::string& spec) {
   return !spec.empty() && std::all_of(spec.begin(), spec.end(), [](unsigned char c) { return std::isdigit(c); });
@@ -174,6 +166,40 @@ Value parse_name(const std::string& name, const std::string& source, const std::
   throw ConfigError(source, key, "unknown " + what + " '" + name + "' (" + names + ")");
 }
 
+enum class LineRead { kLine, kTooLong, kEnd };
+
+// One line without its '\n', at most kMaxLineBytes of it kept: a longer one is read to its end
+// and reported, so one enormous line cannot fill the memory.
+LineRead read_bounded_line(std::istream& in, std::string& line) {
+  line.clear();
+  std::streambuf* buffer = in.rdbuf();
+  if (buffer == nullptr) return LineRead::kEnd;
+  bool any = false;
+  while (true) {
+    const int c = buffer->sbumpc();
+    if (c == std::char_traits<char>::eof()) {
+      in.setstate(std::ios::eofbit);
+      if (!any) return LineRead::kEnd;
+      break;
+    }
+    any = true;
+    if (c == '\n') break;
+    if (line.size() <= kMaxLineBytes) line.push_back(static_cast<char>(c));
+  }
+  return line.size() > kMaxLineBytes ? LineRead::kTooLong : LineRead::kLine;
+}
+
+// A header behind a '#' (EuRoC/ASL) rather than a comment: as many fields as the mapping needs
+// (time and six axes) and not all of them numbers.
+bool is_commented_header(std::string_view trimmed, const CsvImportOptions& options) {
+  if (trimmed.empty() || trimmed.front() != '#') return false;
+  const auto fields = split(trimmed.substr(1), options.delimiter);
+  if (fields.size() < 7) return false;
+  return std::any_of(fields.begin(), fields.end(), [&](std::string_view field) {
+    return !parse_number(field, options.decimal_comma).problem.empty();
+  });
+}
+
 // Parses the rows after the header; one object per file.
 class RowParser {
  public:
@@ -191,8 +217,17 @@ class RowParser {
                             "header: false) or add one");
     }
     for (const auto& field : fields) summary_.header.emplace_back(field);
+    if (options_.infer_from_file) {
+      HeaderInference inference = infer_from_header(summary_.header, options_, source_);
+      options_ = std::move(inference.options);
+      summary_.recognised = std::move(inference.description);
+    }
     columns_ = resolve_columns(source_, options_, summary_.header);
     expect_fields(summary_.header.size(), "the header");
+  }
+
+  void reject_too_long() {
+    reject("longer than " + std::to_string(kMaxLineBytes) + " bytes (not read; a broken line end, or not a CSV)");
   }
 
   void row(std::string_view line, const std::function<void(const ImuCsvSample&)>& on_sample) {
@@ -235,8 +270,9 @@ class RowParser {
       }
     }
     if (summary_.accepted_rows > 0 && sample.stamp_ns <= summary_.last_stamp_ns) {
-      return reject("time " + format_stamp_s(sample.stamp_ns) + " s is not after the previous good row's " +
-                    format_stamp_s(summary_.last_stamp_ns) + " s");
+      // In the file's own times (without the offset), which the user can find in it.
+      return reject("time " + format_stamp_s(sample.stamp_ns - *offset_ns_) + " s is not after the previous good row's " +
+                    format_stamp_s(summary_.last_stamp_ns - *offset_ns_) + " s");
     }
     if (summary_.accepted_rows == 0) summary_.first_stamp_ns = sample.stamp_ns;
     summary_.last_stamp_ns = sample.stamp_ns;
@@ -248,6 +284,10 @@ class RowParser {
   void expect_fields(std::size_t count, const std::string& where) {
     expected_fields_ = count;
     expected_from_ = where;
+    const char* time_units[] = {"s", "ms", "us", "ns"};
+    summary_.units = std::string("time ") + time_units[static_cast<int>(options_.time_unit)] + ", gyro " +
+                     unit_name(options_.gyro_unit) + ", accel " + unit_name(options_.accel_unit);
+    summary_.temperature_column = options_.temperature_column;
     if (columns_->highest >= count) {
       throw ConfigError(source_, "columns",
                         "column " + std::to_string(columns_->highest + 1) + " is mapped, but " + where + " has " +
@@ -256,10 +296,19 @@ class RowParser {
     }
   }
 
+  // The offset is decided at the first time read: a relative time column (see infer_from_file)
+  // is moved as a whole, an absolute one left as it is.
   bool add_offset(std::int64_t stamp_ns, std::int64_t& out_ns) {
-    if (__builtin_add_overflow(stamp_ns, options_.time_offset_ns, &out_ns) || out_ns <= 0 || out_ns > kMaxRosStamp_ns) {
+    if (!offset_ns_) {
+      offset_ns_ = options_.time_offset_ns;
+      if (options_.infer_from_file && !options_.given.time_offset &&
+          static_cast<double>(stamp_ns) < kRelativeTimeLimit_s * 1e9) {
+        offset_ns_ = summary_.relative_time_offset_ns = options_.relative_time_offset_ns;
+      }
+    }
+    if (__builtin_add_overflow(stamp_ns, *offset_ns_, &out_ns) || out_ns <= 0 || out_ns > kMaxRosStamp_ns) {
       reject("time " + format_stamp_s(stamp_ns) + " s" +
-             (options_.time_offset_ns != 0 ? " plus the offset " + format_stamp_s(options_.time_offset_ns) + " s" : "") +
+             (*offset_ns_ != 0 ? " plus the offset " + format_stamp_s(*offset_ns_) + " s" : "") +
              " is outside ROS time (0, 4294967295.999999999] s; a time offset moves it in");
       return false;
     }
@@ -281,15 +330,26 @@ class RowParser {
     if (summary_.rejected.size() < options_.max_reported_rows) summary_.rejected.push_back({summary_.lines, reason});
   }
 
-  const CsvImportOptions& options_;
+  CsvImportOptions options_;  // a copy: the header may fill in what the options leave open
   const std::string& source_;
   CsvImportSummary& summary_;
   std::optional<ColumnIndices> columns_;
+  std::optional<std::int64_t> offset_ns_;
   std::size_t expected_fields_ = 0;
   std::string expected_from_;
 };
 
 }  // namespace
+
+std::string format_stamp_s(std::int64_t stamp_ns) {
+  const bool negative = stamp_ns < 0;
+  const std::uint64_t magnitude = negative ? 0 - static_cast<std::uint64_t>(stamp_ns) : stamp_ns;
+  char text[40];
+  std::snprintf(text, sizeof text, "%s%llu.%09llu", negative ? "-" : "",
+                static_cast<unsigned long long>(magnitude / 1000000000ULL),
+                static_cast<unsigned long long>(magnitude % 1000000000ULL));
+  return text;
+}
 
 AngularRateUnit parse_angular_rate_unit(const std::string& name, const std::string& source, const std::string& key) {
   return parse_name<AngularRateUnit>(name, source, key, "angular-rate unit",
@@ -405,11 +465,25 @@ CsvImportSummary parse_imu_csv(std::istream& in, const CsvImportOptions& options
   RowParser parser(options, source, summary);
   bool header_pending = options.has_header;
   std::string line;
-  while (std::getline(in, line)) {
+  while (true) {
+    const LineRead read = read_bounded_line(in, line);
+    if (read == LineRead::kEnd) break;
     ++summary.lines;
+    if (read == LineRead::kTooLong) {
+      if (header_pending) {
+        throw InputError(source + ": line " + std::to_string(summary.lines) + " is longer than " +
+                         std::to_string(kMaxLineBytes) + " bytes where the header should be: not a CSV of IMU samples");
+      }
+      parser.reject_too_long();
+      continue;
+    }
     std::string_view content = line;
     if (summary.lines == 1 && content.substr(0, 3) == "\xEF\xBB\xBF") content.remove_prefix(3);  // UTF-8 BOM
-    const std::string_view trimmed = trim(content);
+    std::string_view trimmed = trim(content);
+    if (header_pending && options.infer_from_file && is_commented_header(trimmed, options)) {
+      content = trimmed.substr(1);  // EuRoC/ASL: "#timestamp [ns],w_RS_S_x [rad s^-1],..."
+      trimmed = trim(content);
+    }
     if (trimmed.empty() || trimmed.front() == '#') continue;
     if (header_pending) {
       parser.header(content);

@@ -1,6 +1,7 @@
 // libFuzzer harness: the logger-CSV parser (io/csv_imu_import.h). The first byte picks one of a
 // few column mappings (header names or numbers, delimiters, decimal comma, units, a temperature
-// column, a large time offset); the rest is the file. Bad rows are reported, not thrown: the
+// column, a large time offset), and whether to infer from the header as import_csv does; the rest is
+// the file. Bad rows are reported, not thrown: the
 // parser may only throw ConfigError for a mapping that does not fit the file.
 #include <array>
 
@@ -39,7 +40,10 @@ std::array<CsvImportOptions, 4> mappings() {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
   static const std::array<CsvImportOptions, 4> options = mappings();
-  const CsvImportOptions& mapping = options[data[0] % options.size()];
+  CsvImportOptions mapping = options[data[0] % options.size()];
+  // Bit 2 of the first byte: read as import_csv does (units and columns from the header, a
+  // relative time column moved), so the header inference meets every header too.
+  mapping.infer_from_file = (data[0] / options.size()) % 2 == 1;
   const std::string text(reinterpret_cast<const char*>(data + 1), size - 1);
   return imu_lab::fuzz::refusals_allowed([&] {
     imu_lab::io::parse_imu_csv_text(text, mapping).summary.describe_rejections("fuzz.csv");

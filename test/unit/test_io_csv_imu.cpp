@@ -261,6 +261,94 @@ TEST(CsvImuImport, UnitNamesAreCheckedAndNamedInTheMessage) {
   EXPECT_THROW(parse_bad_row_policy("ignore", "f", "k"), ConfigError);
 }
 
+// A line longer than kMaxLineBytes is a bad row read past without being kept (a 1 GiB line used
+// to take 2.1 GB of memory); before the header it refuses the file.
+TEST(CsvImuImport, AnOverlongLineIsABadRowAndIsNotKept) {
+  const std::string text = kHeader + "1,0,0,0,0,0,1\n" + std::string(kMaxLineBytes + 1, '5') + "\n2,0,0,0,0,0,1\n";
+  const auto result = parse_imu_csv_text(text, plain());
+  EXPECT_EQ(result.samples.size(), 2u);
+  ASSERT_EQ(result.summary.rejected.size(), 1u);
+  EXPECT_EQ(result.summary.rejected[0].line, 3u);
+  EXPECT_EQ(result.summary.rejected[0].reason.rfind("longer than 65536 bytes", 0), 0u) << result.summary.rejected[0].reason;
+  const std::string exactly = kHeader + "1,0,0,0,0,0," + std::string(kMaxLineBytes - 13, '0') + "1\n";
+  EXPECT_EQ(parse_imu_csv_text(exactly, plain()).samples.size(), 1u) << "a line of exactly the limit is read";
+  EXPECT_THROW(parse_imu_csv_text(std::string(kMaxLineBytes + 10, 'x') + "\n1,0,0,0,0,0,1\n", plain()), InputError);
+}
+
+CsvImportOptions inferring() {
+  CsvImportOptions options;
+  options.infer_from_file = true;
+  return options;
+}
+
+TEST(CsvImuImport, EurocAndOtherUnitCarryingHeadersAreRecognised) {
+  const std::string euroc =
+      "#timestamp [ns],w_RS_S_x [rad s^-1],w_RS_S_y [rad s^-1],w_RS_S_z [rad s^-1],a_RS_S_x [m s^-2],"
+      "a_RS_S_y [m s^-2],a_RS_S_z [m s^-2]\n"
+      "1403636579758555392,-0.099,0.14,0.025,8.11,-1.96,-2.60\n"
+      "1403636579763555584,-0.098,0.14,0.026,8.13,-1.96,-2.60\n";
+  const auto result = parse_imu_csv_text(euroc, inferring());
+  ASSERT_EQ(result.samples.size(), 2u) << result.summary.describe_rejections("csv");
+  EXPECT_EQ(result.samples[1].stamp_ns, 1403636579763555584LL);
+  EXPECT_DOUBLE_EQ(result.samples[0].specific_force_m_s2.x(), 8.11);
+  EXPECT_EQ(result.summary.recognised.rfind("EuRoC/ASL format: ", 0), 0u) << result.summary.recognised;
+  EXPECT_EQ(result.summary.units, "time ns, gyro rad_s, accel m_s2");
+  // Without inference (the parser's default) the '#' line is a comment, as it always was.
+  EXPECT_THROW(parse_imu_csv_text(euroc, plain()), ConfigError);
+
+  // Columns found by name in another order, units from brackets and suffixes, temperature by its unit.
+  const std::string mixed = "ax (g),ay (g),az (g),stamp_ms,gx (deg/s),gy (deg/s),gz (deg/s),temperature_c\n"
+                            "0,0,1,1700000000000,90,0,0,21.5\n";
+  const auto other = parse_imu_csv_text(mixed, inferring());
+  ASSERT_EQ(other.samples.size(), 1u) << other.summary.describe_rejections("csv");
+  EXPECT_EQ(other.samples[0].stamp_ns, 1700000000000000000LL);
+  EXPECT_DOUBLE_EQ(other.samples[0].angular_rate_rad_s.x(), M_PI / 2.0);
+  EXPECT_DOUBLE_EQ(other.samples[0].specific_force_m_s2.z(), kG);
+  ASSERT_TRUE(other.samples[0].temperature_c.has_value());
+  EXPECT_DOUBLE_EQ(*other.samples[0].temperature_c, 21.5);
+  EXPECT_EQ(other.summary.units, "time ms, gyro deg_s, accel g");
+
+  // export_csv's own header reads back with no options.
+  CsvExportOptions export_options;
+  export_options.with_temperature = true;
+  const std::string exported = imu_csv_header(export_options) + "\n1700000000.25,0.1,0.2,0.3,1,2,9.8,25\n";
+  const auto back = parse_imu_csv_text(exported, inferring());
+  ASSERT_EQ(back.samples.size(), 1u);
+  EXPECT_TRUE(back.samples[0].temperature_c.has_value());
+}
+
+TEST(CsvImuImport, AGivenUnitTheHeaderContradictsIsRefused) {
+  CsvImportOptions options = inferring();
+  options.gyro_unit = AngularRateUnit::kDegreePerSecond;
+  options.given.gyro_unit = true;
+  try {
+    parse_imu_csv_text("time_s,gyro_x_rad_s,gyro_y_rad_s,gyro_z_rad_s,accel_x_m_s2,accel_y_m_s2,accel_z_m_s2\n"
+                       "1700000000,0,0,0,0,0,9.8\n",
+                       options, "log.csv");
+    ADD_FAILURE();
+  } catch (const ConfigError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "log.csv: gyro unit: 'deg_s' given, but the header names the gyro columns in rad_s");
+  }
+}
+
+TEST(CsvImuImport, ARelativeTimeColumnIsOffsetUnlessAnOffsetIsGiven) {
+  const std::string text = kHeader + "0,0,0,0,0,0,1\n0.01,0,0,0,0,0,1\n";
+  const auto relative = parse_imu_csv_text(text, inferring());
+  ASSERT_EQ(relative.samples.size(), 2u) << relative.summary.describe_rejections("csv");
+  EXPECT_EQ(relative.samples[0].stamp_ns, 1'000'000'000LL * 1'000'000'000LL);
+  EXPECT_EQ(relative.samples[1].stamp_ns - relative.samples[0].stamp_ns, 10'000'000);
+  EXPECT_EQ(relative.summary.relative_time_offset_ns, 1'000'000'000LL * 1'000'000'000LL);
+  CsvImportOptions given = inferring();
+  given.time_offset_ns = 0;
+  given.given.time_offset = true;
+  const auto kept = parse_imu_csv_text(text, given);
+  EXPECT_EQ(kept.summary.rejected_row_count, 1u) << "time 0 is still outside ROS time when asked for";
+  const auto absolute = parse_imu_csv_text(kHeader + "1700000000,0,0,0,0,0,1\n", inferring());
+  EXPECT_EQ(absolute.samples[0].stamp_ns, 1700000000LL * 1'000'000'000LL);
+  EXPECT_EQ(absolute.summary.relative_time_offset_ns, 0);
+}
+
 TEST(CsvImportConfig, ReadsEveryKeyAndRefusesUnknownOnes) {
   const auto options = parse_csv_import_options(
       "delimiter: ';'\nheader: true\ndecimal_comma: true\n"

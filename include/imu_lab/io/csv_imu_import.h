@@ -62,7 +62,27 @@ struct CsvImportOptions {
   std::int64_t time_offset_ns = 0;  // added to every stamp (e.g. to move time-since-boot to an epoch)
   BadRowPolicy bad_rows = BadRowPolicy::kRefuse;
   std::size_t max_reported_rows = 20;  // rejected rows kept with their reasons; all are counted
+
+  // What the user set (options or the mapping file), for infer_from_header.
+  struct Given {
+    bool columns = false;  // any of time, gyro, accel columns
+    bool time_unit = false, gyro_unit = false, accel_unit = false, temperature_column = false, time_offset = false;
+  } given;
+  // import_csv reads what the options leave open from the file: units and columns from a header
+  // whose names carry them (csv_header_inference.h; a header line may then start with '#', as
+  // EuRoC's does), and a relative time column (below kRelativeTimeLimit_s, i.e. time since power-up
+  // or since the log's start, which ROS time cannot hold) moved by relative_time_offset_ns unless
+  // an offset was given. Both are said in the summary. Off: the file is read as the options say.
+  bool infer_from_file = false;
+  std::int64_t relative_time_offset_ns = 1000000000LL * 1000000000LL;  // 1e9 s (2001-09-09), as emulate's default start
 };
+
+// A time column whose first time is below this reads as relative (about three years in seconds;
+// an absolute clock reads over 1e9 s since 2001).
+constexpr double kRelativeTimeLimit_s = 1e8;
+// Longer lines are bad rows, read past without being kept (a damaged or binary file must not fill
+// the memory: one 1 GiB line used to take 2.1 GB).
+constexpr std::size_t kMaxLineBytes = 65536;
 
 struct RejectedRow {
   std::size_t line = 0;  // 1-based line of the file
@@ -77,6 +97,10 @@ struct CsvImportSummary {
   std::size_t rows_without_temperature = 0;  // with a temperature column: empty or NaN cells
   std::int64_t first_stamp_ns = 0, last_stamp_ns = 0;
   std::vector<std::string> header;  // the header's names, if there was one
+  std::string recognised;           // with infer_from_file: what the header told, or ""
+  std::string units;                // as read: "time ns, gyro rad_s, accel m_s2"
+  std::string temperature_column;   // as read: "" for none
+  std::int64_t relative_time_offset_ns = 0;  // with infer_from_file: added to a relative time column, or 0
 
   // "N bad rows of M: line 7: ...; line 9: ..." (capped as stored), for messages.
   std::string describe_rejections(const std::string& source) const;
@@ -88,7 +112,7 @@ struct CsvImportSummary {
 // Bad rows are collected in the summary whatever the policy (the caller decides what refusal
 // means); blank lines and lines starting with '#' are skipped. Rows: wrong field count, a cell
 // that is not a finite number, a time before the previous accepted row's or out of the ROS time
-// range. Stamps are parsed from the decimal text exactly (no double rounding at 1e9 s).
+// range, a line longer than kMaxLineBytes. Stamps are parsed from the decimal text exactly (no double rounding at 1e9 s).
 CsvImportSummary parse_imu_csv(std::istream& in, const CsvImportOptions& options, const std::string& source,
                                const std::function<void(const ImuCsvSample&)>& on_sample);
 
@@ -99,6 +123,9 @@ struct CsvImportResult {
 };
 CsvImportResult parse_imu_csv_text(const std::string& text, const CsvImportOptions& options,
                                    const std::string& source = "csv");
+
+// Integer nanoseconds -> exact decimal seconds ("-2.500000000"), for messages.
+std::string format_stamp_s(std::int64_t stamp_ns);
 
 // Exact decimal text -> integer nanoseconds in `unit` ("1700000000.123456789" s, "1.5e3" ms,
 // "-2"); rounds to the nearest ns. Empty on anything else or on overflow of int64.
