@@ -9,9 +9,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <tuple>
 
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/tool_main.h"
+#include "imu_lab/common/tool_options.h"
 #include "imu_lab/ros/allan_bag_pass.h"
 #include "imu_lab/ros/allan_report.h"
 #include "imu_lab/ros/noise_table.h"
@@ -50,10 +52,18 @@ void print_summary(const imu_lab::ros_io::AllanBagPassResult& result, const imu_
   for (const auto& channel : result.snapshot.channels) non_finite += channel.non_finite_count;
   if (timing.gap_count + timing.duplicate_count + timing.out_of_order_count + non_finite > 0) {
     std::printf("allan: irregular input (split and pooled / dropped, see allan_summary.yaml): %lld gaps (%.6g s), "
-                "%lld duplicate and %lld out-of-order stamps, %lld NaN/Inf values\n",
+                "%lld duplicate and %lld out-of-order stamps, %lld NaN/Inf or unusable values\n",
                 static_cast<long long>(timing.gap_count), timing.gap_time_s,
                 static_cast<long long>(timing.duplicate_count), static_cast<long long>(timing.out_of_order_count),
                 non_finite);
+  }
+  for (const auto& [count, field, triad] : {std::tuple{result.messages_without_angular_rate, "angular_velocity", "gyro"},
+                                            std::tuple{result.messages_without_specific_force, "linear_acceleration",
+                                                       "accelerometer"}}) {
+    if (count > 0) {
+      std::printf("allan: %zu of %zu messages mark the %s triad as not provided (%s_covariance[0] = -1): its channels "
+                  "leave them out\n", count, result.message_count, triad, field);
+    }
   }
   for (const auto& path : files.written) std::printf("allan: wrote %s\n", path.c_str());
   if (!files.plot_problem.empty()) std::fprintf(stderr, "allan: warning: %s\n", files.plot_problem.c_str());
@@ -108,12 +118,13 @@ int main(int argc, char** argv) {
       ->check([](const std::string& text) {
         return imu_lab::ros_io::bootstrap_replicas_problem(std::atoi(text.c_str()));
       });
-  CLI11_PARSE(app, argc, argv);
+  if (const auto status = imu_lab::parse_tool_options("allan", app, argc, argv)) return *status;
   options.input = imu_lab::ros_io::parse_allan_input("--input", input);
   identify.enabled = !no_identify;
   engine.stamp_policy = on_gap == "stop" ? imu_lab::allan::StampPolicy::kStop : imu_lab::allan::StampPolicy::kSplitAndPool;
 
-  return imu_lab::run_tool_main("allan", [&] {
+  imu_lab::ToolInput bag_input{"bag", bag_path, options.topic};
+  return imu_lab::run_tool_main("allan", bag_input, [&] {
     ProgressBar bar;
     if (progress || ::isatty(STDERR_FILENO)) {
       options.on_progress = [&](std::size_t processed, std::size_t total) { bar.update(processed, total); };

@@ -9,11 +9,13 @@
 #include <cstdio>
 #include <iostream>
 #include <numeric>
+#include <tuple>
 
 #include "imu_lab/allan/batch.h"
 #include "imu_lab/allan/confidence.h"
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/tool_main.h"
+#include "imu_lab/common/tool_options.h"
 #include "imu_lab/emulator/analytic_profile_avar.h"
 #include "imu_lab/ros/config_paths.h"
 #include "imu_lab/ros/imu_bag_reader.h"
@@ -72,20 +74,35 @@ int main(int argc, char** argv) {
   app.add_option("bag", bag_path, "bag to read")->required();
   app.add_option("--topic", topic, "sensor_msgs/Imu topic (default: the only one in the bag)");
   app.add_option("--profile", profile_name, "sensor profile whose analytic ADEV to print beside the measured");
-  app.add_option("--taus-s", taus_s, "averaging times [s]")->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  app.add_option("--taus-s", taus_s, "averaging times [s]")->capture_default_str()->check(imu_lab::option_range::positive());
+  if (const auto status = imu_lab::parse_tool_options("bag_summary", app, argc, argv)) return *status;
 
-  return imu_lab::run_tool_main("bag_summary", [&] {
-    topic = imu_lab::ros_io::choose_imu_topic(bag_path, topic);
+  imu_lab::ToolInput input{"bag", bag_path, topic};
+  return imu_lab::run_tool_main("bag_summary", input, [&] {
+    input.topic = topic = imu_lab::ros_io::choose_imu_topic(bag_path, topic);
     std::array<std::vector<double>, 6> channels;
     std::vector<std::int64_t> stamps_ns;
+    // A triad no message carries (covariance[0] = -1) is left out; one that some lack is refused.
+    imu_lab::ros_io::StrictImuCheck check(imu_lab::ros_io::ImuTriadsNeeded{false, false});
     imu_lab::ros_io::for_each_imu_strictly(bag_path, topic, [&](const imu_lab::ros_io::ImuRecord& record) {
       stamps_ns.push_back(record.stamp_ns);
       for (int axis = 0; axis < 3; ++axis) {
         channels[axis].push_back(record.angular_rate_rad_s[axis]);
         channels[axis + 3].push_back(record.specific_force_m_s2[axis]);
       }
-    });
+    }, &check);
+    std::array<bool, 6> present{};
+    for (int c = 0; c < 6; ++c) {
+      present[c] = c < 3 ? !check.angular_rate_absent_throughout() : !check.specific_force_absent_throughout();
+    }
+    for (const auto& [absent, triad, field] :
+         {std::tuple{check.angular_rate_absent_throughout(), "gyro", "angular_velocity"},
+          std::tuple{check.specific_force_absent_throughout(), "accelerometer", "linear_acceleration"}}) {
+      if (absent) {
+        std::fprintf(stderr, "bag_summary: bag %s, topic %s: no message carries the %s triad (%s_covariance[0] = -1, "
+                     "not provided by the driver): left out\n", bag_path.c_str(), topic.c_str(), triad, field);
+      }
+    }
     const std::size_t count = channels[0].size();
     if (count < 3) throw imu_lab::InputError("bag " + bag_path + ": topic " + topic + " has too few messages");
     const SampleTiming timing = timing_of(stamps_ns);
@@ -106,6 +123,7 @@ int main(int argc, char** argv) {
     std::printf("\n%-8s %16s %16s  %s\n", "channel", "mean", "std", "unit");
     std::array<double, 6> means{};
     for (int c = 0; c < 6; ++c) {
+      if (!present[c]) continue;
       means[c] = mean_of(channels[c]);
       std::printf("%-8s %16.9g %16.9g  %s\n", kChannelNames[c], means[c], standard_deviation(channels[c], means[c]),
                   kUnits[c]);
@@ -123,6 +141,7 @@ int main(int argc, char** argv) {
     std::printf("%-8s %10s %14s %14s %14s %14s %8s\n", "channel", "tau_s", "measured", "lower", "upper",
                 profile ? "analytic" : "", profile ? "in 95 %" : "");
     for (int c = 0; c < 6; ++c) {
+      if (!present[c]) continue;
       std::vector<double> centred(channels[c]);
       for (double& v : centred) v -= means[c];  // keeps the integrated phase small (round-off)
       const auto phase = imu_lab::allan::phase_from_frequency(centred, tau0_s);

@@ -9,6 +9,7 @@
 #include "imu_lab/calib/calibration_file.h"
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/tool_main.h"
+#include "imu_lab/common/tool_options.h"
 #include "imu_lab/ros/bag_correction.h"
 #include "imu_lab/thermal/thermal_model_yaml.h"
 
@@ -32,12 +33,12 @@ void print_summary(const CommandLine& c, const imu_lab::ros_io::BagCorrectionSum
   std::printf("correct: %zu of %zu IMU messages on %s corrected with %s and written to %s in %s", s.corrected,
               s.imu_messages, s.imu_topic.c_str(), stages.c_str(), s.out_topic.c_str(), c.out_path.c_str());
   if (c.options.thermal_model) {
-    const auto& box = c.options.thermal_model->validity;
     std::printf("; %zu temperature readings used; %zu samples outside the thermal model's validity range "
-                "(%.2f .. %.2f degC, %.4f .. %.4f degC/s) were corrected at its edge (clamped); %zu samples "
-                "skipped for want of a temperature within %.3g s of their stamp (as thermal_compensator does)",
-                s.temperature_messages, s.clamped, box.temperature_min_c, box.temperature_max_c, box.rate_min_c_s,
-                box.rate_max_c_s, s.stale, c.options.max_temperature_age_s);
+                "(%s) were corrected at its edge (clamped); %zu samples skipped for want of a temperature within "
+                "%.3g s of their stamp (as thermal_compensator does)",
+                s.temperature_messages, s.clamped,
+                imu_lab::thermal::validity_range_text(*c.options.thermal_model).c_str(), s.stale,
+                c.options.max_temperature_age_s);
   }
   std::printf("; %zu other messages copied unchanged (%s)", s.copied_messages, joined(s.copied_topics).c_str());
   if (!s.uncorrected_imu_topics.empty()) {
@@ -66,10 +67,11 @@ int main(int argc, char** argv) {
   app.add_option("--max-temperature-age-s", o.max_temperature_age_s,
                  "farthest a thermosensor reading may be from an IMU stamp [s] (thermal_compensator's parameter)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  CLI11_PARSE(app, argc, argv);
+      ->check(imu_lab::option_range::positive());
+  if (const auto status = imu_lab::parse_tool_options("correct", app, argc, argv)) return *status;
 
-  return imu_lab::run_tool_main("correct", [&] {
+  imu_lab::ToolInput input{"bag", c.bag_path, o.imu_topic};
+  return imu_lab::run_tool_main("correct", input, [&] {
     if (c.thermal_model_path.empty() && c.calibration_path.empty()) {
       throw imu_lab::ConfigError("correct", "--thermal-model/--calibration", "give at least one of them");
     }

@@ -8,6 +8,7 @@
 
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/tool_main.h"
+#include "imu_lab/common/tool_options.h"
 #include "imu_lab/emulator/imu_emulator.h"
 #include "imu_lab/ros/config_paths.h"
 #include "imu_lab/ros/emulated_bag.h"
@@ -29,16 +30,22 @@ int main(int argc, char** argv) {
   app.add_option("--scenario", scenario_name, "scenario: a name in config/scenarios/ or a YAML path")
       ->capture_default_str();
   app.add_option("-o,--out", out_path, "bag to write")->required();
-  app.add_option("--duration-s", duration_s, "length of the run [s] (default: the scenario's duration_s)");
-  app.add_option("--rate-hz", settings.rate_hz, "sample rate [Hz]")->capture_default_str()->check(CLI::PositiveNumber);
+  using namespace imu_lab::option_range;
+  const auto* duration_option =
+      app.add_option("--duration-s", duration_s, "length of the run [s] (default: the scenario's duration_s)")
+          ->check(positive());
+  app.add_option("--rate-hz", settings.rate_hz, "sample rate [Hz]")
+      ->capture_default_str()
+      ->check(positive())
+      ->check(between(0.0, 1e9));  // stamps are whole nanoseconds
   app.add_option("--seed", settings.seed, "random seed")->capture_default_str();
   app.add_option("--start-time-s", settings.start_time_s, "stamp of the start of the first sample [s]")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive());
   app.add_option("--frame-id", options.frame_id, "frame_id of the sensor")->capture_default_str();
   app.add_flag("--no-truth", no_truth, "do not write /imu/truth");
   app.add_flag("--no-increments", no_increments, "do not write /imu/increment");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto status = imu_lab::parse_tool_options("emulate", app, argc, argv)) return *status;
   options.write_truth = !no_truth;
   options.write_increments = !no_increments;
 
@@ -47,7 +54,7 @@ int main(int argc, char** argv) {
         imu_lab::emulator::load_sensor_profile(imu_lab::ros_io::resolve_config("sensors", profile_name));
     const auto scenario =
         imu_lab::emulator::load_scenario(imu_lab::ros_io::resolve_config("scenarios", scenario_name));
-    options.duration_s = duration_s > 0.0 ? duration_s : scenario.duration_s;
+    options.duration_s = duration_option->count() > 0 ? duration_s : scenario.duration_s;
     if (!(options.duration_s > 0.0)) {
       std::cerr << "emulate: the scenario " << scenario.source << " has no duration_s; give --duration-s\n";
       return 2;

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "imu_lab/common/tool_main.h"
+#include "imu_lab/common/tool_options.h"
 #include "imu_lab/ros/imu_csv_bag.h"
 
 int main(int argc, char** argv) {
@@ -25,9 +26,10 @@ int main(int argc, char** argv) {
   app.add_option("--gyro-unit", gyro_unit, "rad_s or deg_s")->capture_default_str();
   app.add_option("--accel-unit", accel_unit, "m_s2 or g (9.80665 m/s^2)")->capture_default_str();
   app.add_option("--delimiter", delimiter, "',' ';' or tab")->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  if (const auto status = imu_lab::parse_tool_options("export_csv", app, argc, argv)) return *status;
 
-  return imu_lab::run_tool_main(kTool, [&] {
+  imu_lab::ToolInput input{"bag", bag_path, request.imu_topic};
+  return imu_lab::run_tool_main(kTool, input, [&] {
     using namespace imu_lab::io;
     request.format.delimiter = parse_delimiter(delimiter, kCommandLine, "--delimiter");
     request.format.gyro_unit = parse_angular_rate_unit(gyro_unit, kCommandLine, "--gyro-unit");

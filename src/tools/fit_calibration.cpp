@@ -13,6 +13,7 @@
 #include "imu_lab/common/atomic_file.h"
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/tool_main.h"
+#include "imu_lab/common/tool_options.h"
 #include "imu_lab/ros/config_paths.h"
 #include "imu_lab/ros/imu_bag_reader.h"
 #include "imu_lab/ros/strict_imu_reading.h"
@@ -39,38 +40,61 @@ imu_lab::emulator::EarthModel earth_model_named(const std::string& name) {
 
 int main(int argc, char** argv) {
   CLI::App app{"Bench calibration of an IMU bag: bias and full scale/misalignment matrix of gyros and accelerometers."};
+  using namespace imu_lab::option_range;
+  const auto latitude_deg_range = imu_lab::option_range::latitude_deg;  // the names are taken by the options
+  const auto height_m_range = imu_lab::option_range::height_m;
   std::string bag_path, topic, schedule_name, out_path, earth_model = "wgs84_rotating";
   double latitude_deg = 0.0, height_m = 0.0;
   std::size_t held_out_last = 0;
   imu_lab::calib::CalibrationOptions options;
   app.add_option("bag", bag_path, "calibration bag")->required();
-  app.add_option("--out", out_path, "calibration YAML to write (beside it: *_kalibr_imu_chain.yaml, *_report.txt)")
+  app.add_option("-o,--out", out_path, "calibration YAML to write (beside it: *_kalibr_imu_chain.yaml, *_report.txt)")
       ->required();
   app.add_option("--topic", topic, "sensor_msgs/Imu topic (default: the only one in the bag)");
-  app.add_option("--schedule", schedule_name,
-                 "multi_position scenario (name in config/scenarios or path) giving the orientations: mode 1");
-  app.add_option("--latitude-deg", latitude_deg, "site latitude, without a schedule")->capture_default_str();
-  app.add_option("--height-m", height_m, "site height, without a schedule")->capture_default_str();
+  auto* schedule_option = app.add_option(
+      "--schedule", schedule_name,
+      "multi_position scenario (name in config/scenarios or path) giving the orientations and the site: mode 1");
+  // Without a schedule the site is the reference of both triads (normal gravity, Earth rate), so
+  // it is required; with one, the schedule's site is used and a second one is refused.
+  auto* latitude_option = app.add_option("--latitude-deg", latitude_deg, "site latitude (required without --schedule)")
+                              ->check(latitude_deg_range())
+                              ->excludes(schedule_option);
+  auto* height_option = app.add_option("--height-m", height_m, "site height (required without --schedule)")
+                            ->check(height_m_range())
+                            ->excludes(schedule_option);
   app.add_option("--earth-model", earth_model, "wgs84_rotating | sphere_non_rotating, without a schedule")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->excludes(schedule_option);
   app.add_option("--held-out-last", held_out_last, "leave the last N rests out of the fit, for the |g|/|Earth rate| check");
   app.add_flag("--g-sensitivity", options.estimate_g_sensitivity, "also fit the gyros' g-sensitivity matrix");
-  app.add_option("--static-window-s", options.static_detection.window_s, "rest detection window")->capture_default_str();
-  app.add_option("--min-rest-s", options.static_detection.min_duration_s, "shortest rest")->capture_default_str();
+  app.add_option("--static-window-s", options.static_detection.window_s, "rest detection window")
+      ->capture_default_str()
+      ->check(positive());
+  app.add_option("--min-rest-s", options.static_detection.min_duration_s, "shortest rest")
+      ->capture_default_str()
+      ->check(positive());
   app.add_option("--static-threshold-rad-s", options.static_detection.threshold_rad_s,
-                 "rest threshold on the window mean rate (default: from the noise)");
-  CLI11_PARSE(app, argc, argv);
+                 "rest threshold on the window mean rate (default: from the noise)")
+      ->check(positive());
+  if (const auto status = imu_lab::parse_tool_options("fit_calibration", app, argc, argv)) return *status;
 
-  return imu_lab::run_tool_main("fit_calibration", [&] {
+  imu_lab::ToolInput input{"bag", bag_path, topic};
+  return imu_lab::run_tool_main("fit_calibration", input, [&] {
     if (!schedule_name.empty()) {
       options.schedule = imu_lab::calib::schedule_from_scenario(
           imu_lab::emulator::load_scenario(imu_lab::ros_io::resolve_config("scenarios", schedule_name)));
     } else {
+      if (latitude_option->count() == 0 || height_option->count() == 0) {
+        throw imu_lab::ConfigError("fit_calibration", "--latitude-deg/--height-m",
+                                   "give the site's latitude and height (or --schedule): without a schedule they set "
+                                   "the reference gravity and Earth rate, and a wrong site is a scale-factor error "
+                                   "(latitude 0 instead of 50 degrees: about 2700 ppm)");
+      }
       options.site.latitude_rad = latitude_deg * kRadPerDeg;
       options.site.height_m = height_m;
       options.site.earth_model = earth_model_named(earth_model);
     }
-    topic = imu_lab::ros_io::choose_imu_topic(bag_path, topic);
+    input.topic = topic = imu_lab::ros_io::choose_imu_topic(bag_path, topic);
     std::vector<imu_lab::calib::CalibrationSample> samples;
     imu_lab::ros_io::for_each_imu_strictly(bag_path, topic, [&](const imu_lab::ros_io::ImuRecord& record) {
       samples.push_back({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2});
@@ -84,10 +108,13 @@ int main(int argc, char** argv) {
     const auto result = imu_lab::calib::calibrate(samples, options);
     const double rate_hz = (samples.size() - 1) / (samples.back().stamp_s - samples.front().stamp_s);
     const std::string report = imu_lab::calib::calibration_report(result);
-    imu_lab::write_file_atomically(out_path, imu_lab::calib::calibration_yaml(result));
-    imu_lab::write_file_atomically(beside(out_path, "_kalibr_imu_chain.yaml"),
-                                   imu_lab::calib::kalibr_imu_chain_yaml(result, topic, rate_hz));
-    imu_lab::write_file_atomically(beside(out_path, "_report.txt"), report);
+    // The three files are one set: all new, or (on any failure) all as they were.
+    imu_lab::OutputSet outputs;
+    outputs.write(out_path, imu_lab::calib::calibration_yaml(result));
+    outputs.write(beside(out_path, "_kalibr_imu_chain.yaml"), imu_lab::calib::kalibr_imu_chain_yaml(result, topic, rate_hz));
+    outputs.write(beside(out_path, "_report.txt"), report);
+    outputs.commit();
+    for (const std::string& warning : result.warnings) std::cerr << "fit_calibration: warning: " << warning << "\n";
     std::cout << report << "\nwrote " << out_path << ", " << beside(out_path, "_kalibr_imu_chain.yaml") << ", "
               << beside(out_path, "_report.txt") << "\n";
     return 0;

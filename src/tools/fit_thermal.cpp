@@ -1,16 +1,18 @@
 // fit_thermal: thermal-test bag -> thermal model YAML (atomic), the per-window residual CSV and,
 // on request, a PNG of bias against temperature per axis (scripts/plot_thermal.py).
 #include <CLI/CLI.hpp>
-#include <ros/package.h>
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
 
+#include "imu_lab/common/atomic_file.h"
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/tool_main.h"
+#include "imu_lab/common/tool_options.h"
 #include "imu_lab/emulator/earth_model.h"
+#include "imu_lab/ros/config_paths.h"
 #include "imu_lab/ros/thermal_bag.h"
 #include "imu_lab/thermal/thermal_fit.h"
 #include "imu_lab/thermal/thermal_model_yaml.h"
@@ -27,7 +29,7 @@ struct Command {
   imu_lab::thermal::ThermalFitOptions fit;
   int order = 0;
   bool no_scale_factor = false;
-  double latitude_deg = 45.0;
+  double latitude_deg = 0.0;
   double height_m = 0.0;
 };
 
@@ -38,23 +40,17 @@ std::string default_csv_path(const std::string& out_path) {
   return (has_suffix ? out_path.substr(0, out_path.size() - suffix.size()) : out_path) + "_residuals.csv";
 }
 
-void plot(const std::string& csv_path, const std::string& png_path) {
-  const std::string script = ros::package::getPath("imu_lab") + "/scripts/plot_thermal.py";
-  const std::string command = "/usr/bin/python3 '" + script + "' '" + csv_path + "' '" + png_path + "'";
-  if (std::system(command.c_str()) != 0) throw std::runtime_error("plotting failed: " + command);
-  std::printf("fit_thermal: wrote %s\n", png_path.c_str());
-}
-
 void print_summary(const imu_lab::thermal::ThermalFitResult& result) {
-  const auto& box = result.model.validity;
-  std::printf("fit_thermal: %zu static windows in %zu orientations, valid %.2f .. %.2f degC, rate %.4f .. %.4f degC/s\n",
-              result.static_window_count, result.orientations.clusters.size(), box.temperature_min_c,
-              box.temperature_max_c, box.rate_min_c_s, box.rate_max_c_s);
+  std::printf("fit_thermal: %zu static windows in %zu orientations (%zu visits), valid %s\n",
+              result.static_window_count, result.orientations.clusters.size(), result.visit_count,
+              imu_lab::thermal::validity_range_text(result.model).c_str());
   static const char* const kAxisNames[3] = {"x", "y", "z"};
   for (const auto& axis : result.axes) {
-    std::printf("  %-13s %s: bias order %d, scale-factor order %d, fitted delta-bias p-p %.4g, residual rms %.4g%s\n",
+    std::printf("  %-13s %s: bias order %d, scale-factor order %d, fitted delta-bias p-p %.4g, residual rms %.4g%s "
+                "(%.3g x the noise of a window mean), %zu constants\n",
                 axis.triad.c_str(), kAxisNames[axis.axis], axis.bias_order, axis.scale_factor_order,
-                axis.delta_bias_peak_to_peak, axis.residual_rms, axis.triad == "gyro" ? " rad/s" : " m/s^2");
+                axis.delta_bias_peak_to_peak, axis.residual_rms, axis.triad == "gyro" ? " rad/s" : " m/s^2",
+                axis.residual_over_noise, axis.constant_count);
   }
 }
 
@@ -62,6 +58,7 @@ void print_summary(const imu_lab::thermal::ThermalFitResult& result) {
 
 int main(int argc, char** argv) {
   CLI::App app{"Fit a thermal model (bias and scale factor against temperature) to a thermal-test bag."};
+  using namespace imu_lab::option_range;
   Command c;
   app.add_option("bag", c.bag_path, "thermal-test bag: the IMU static in several orientations over a temperature profile")
       ->required();
@@ -80,25 +77,34 @@ int main(int argc, char** argv) {
   app.add_flag("--scale-factor-rate-term", c.fit.scale_factor_rate_term,
                "also a dT/dt term in the scale factor (needs opposite orientations during ramps)");
   app.add_flag("--no-scale-factor", c.no_scale_factor, "fit the bias only (one orientation is enough)");
+  app.add_flag("--precise-revisits", c.fit.precise_revisits,
+               "orientations are repeated to arc-seconds (a rate table or fixture): one constant per orientation for "
+               "every axis (default: per visit for the axes across gravity, as a hand-turned test needs)");
   app.add_flag("--gyro-scale-factor", c.fit.gyro_scale_factor,
                "fit gyro scale factor from the Earth rate (navigation-grade gyros only)");
   app.add_option("--reference-temperature-c", c.fit.reference_temperature_c, "temperature the model corrects to")
-      ->capture_default_str();
-  app.add_option("--window-s", c.windows.window_s, "averaging window [s]")->capture_default_str()->check(CLI::PositiveNumber);
+      ->capture_default_str()
+      ->check(at_least(-273.15));
+  app.add_option("--window-s", c.windows.window_s, "averaging window [s]")->capture_default_str()->check(positive());
   app.add_option("--rate-window-s", c.windows.rate_window_s, "window of the dT/dt estimate [s]")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive());
   app.add_option("--max-temperature-age-s", c.windows.max_temperature_age_s,
                  "farthest a thermosensor reading may be from an IMU stamp [s]")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive());
   app.add_option("--static-gyro-std-rad-s", c.windows.static_angular_rate_std_rad_s, "static-window threshold")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(positive());
   app.add_option("--static-accel-std-m-s2", c.windows.static_specific_force_std_m_s2, "static-window threshold")
-      ->capture_default_str();
-  app.add_option("--latitude-deg", c.latitude_deg, "test site latitude (gravity and Earth rate)")->capture_default_str();
-  app.add_option("--height-m", c.height_m, "test site height")->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+      ->capture_default_str()
+      ->check(positive());
+  const auto* latitude_option =
+      app.add_option("--latitude-deg", c.latitude_deg, "test site latitude (gravity and Earth rate; required with a "
+                                                       "scale-factor term)")
+          ->check(latitude_deg());
+  app.add_option("--height-m", c.height_m, "test site height")->capture_default_str()->check(imu_lab::option_range::height_m());
+  if (const auto status = imu_lab::parse_tool_options("fit_thermal", app, argc, argv)) return *status;
   if (c.order > 0) c.fit.polynomial_order = c.order;
   if (c.no_scale_factor) c.fit.accelerometer_scale_factor = c.fit.gyro_scale_factor = false;
   c.fit.second_sensor_term = !c.topics.second_temperature.empty();
@@ -107,17 +113,37 @@ int main(int argc, char** argv) {
                                                                      c.fit.earth.latitude_rad, c.height_m);
   if (c.csv_path.empty()) c.csv_path = default_csv_path(c.out_path);
 
-  return imu_lab::run_tool_main("fit_thermal", [&] {
+  imu_lab::ToolInput input{"bag", c.bag_path, c.topics.imu};
+  return imu_lab::run_tool_main("fit_thermal", input, [&] {
+    // The scale-factor terms compare each orientation's output with its known input, gravity and
+    // the Earth rate at the site; the bias terms do not depend on it.
+    if (latitude_option->count() == 0 && (c.fit.accelerometer_scale_factor || c.fit.gyro_scale_factor)) {
+      throw imu_lab::ConfigError("fit_thermal", "--latitude-deg",
+                                 "give the test site's latitude (and --height-m): the scale-factor terms are "
+                                 "relative to gravity and the Earth rate there; or fit the bias only "
+                                 "(--no-scale-factor), which does not depend on the site");
+    }
     const auto data = imu_lab::ros_io::read_thermal_windows(c.bag_path, c.topics, c.windows);
+    input.topic = data.imu_topic;
     std::printf("fit_thermal: %zu IMU samples on %s, %zu temperature readings, %zu windows of %.6g s\n",
                 data.imu_messages, data.imu_topic.c_str(), data.temperature_messages, data.windows.size(),
                 c.windows.window_s);
     const auto result = imu_lab::thermal::fit_thermal_model(data.windows, c.windows.rate_window_s, c.fit);
     print_summary(result);
-    imu_lab::thermal::save_thermal_model(c.out_path, result.model, &result);
-    imu_lab::thermal::write_thermal_residual_csv(c.csv_path, result);
-    std::printf("fit_thermal: wrote %s and %s\n", c.out_path.c_str(), c.csv_path.c_str());
-    if (!c.plot_path.empty()) plot(c.csv_path, c.plot_path);
+    for (const std::string& warning : result.warnings) std::fprintf(stderr, "fit_thermal: warning: %s\n", warning.c_str());
+    // Model, residuals and plot are one set: all new, or (on any failure) all as they were.
+    imu_lab::OutputSet outputs;
+    imu_lab::thermal::save_thermal_model(outputs.stage(c.out_path), result.model, &result);
+    const std::string staged_csv = outputs.stage(c.csv_path);
+    imu_lab::thermal::write_thermal_residual_csv(staged_csv, result);
+    if (!c.plot_path.empty()) {
+      const std::string problem =
+          imu_lab::ros_io::run_plot_script("plot_thermal.py", {staged_csv, outputs.stage(c.plot_path)});
+      if (!problem.empty()) throw imu_lab::OutputError("cannot plot " + c.plot_path + ": " + problem + "; nothing written");
+    }
+    outputs.commit();
+    std::printf("fit_thermal: wrote %s and %s%s\n", c.out_path.c_str(), c.csv_path.c_str(),
+                c.plot_path.empty() ? "" : (" and " + c.plot_path).c_str());
     return 0;
   });
 }

@@ -7,10 +7,10 @@
 
 #include <cstdio>
 #include <iostream>
-#include <sstream>
 
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/tool_main.h"
+#include "imu_lab/common/tool_options.h"
 #include "imu_lab/io/csv_import_config.h"
 #include "imu_lab/ros/imu_csv_bag.h"
 
@@ -38,11 +38,18 @@ std::array<std::string, 3> triad(const std::vector<std::string>& columns, const 
 imu_lab::io::CsvImportOptions import_options(const CommandLine& c) {
   using namespace imu_lab::io;
   CsvImportOptions options = c.config_path.empty() ? CsvImportOptions{} : load_csv_import_options(c.config_path);
+  options.infer_from_file = true;  // what the options leave open, from the header and the time column
   if (!c.delimiter.empty()) options.delimiter = parse_delimiter(c.delimiter, kCommandLine, "--delimiter");
   if (c.no_header) options.has_header = false;
   if (c.decimal_comma) options.decimal_comma = true;
   if (!c.time_column.empty()) options.time_column = c.time_column;
   if (!c.time_unit.empty()) options.time_unit = parse_time_unit(c.time_unit, kCommandLine, "--time-unit");
+  options.given.columns |= !c.time_column.empty() || !c.gyro_columns.empty() || !c.accel_columns.empty();
+  options.given.time_unit |= !c.time_unit.empty();
+  options.given.gyro_unit |= !c.gyro_unit.empty();
+  options.given.accel_unit |= !c.accel_unit.empty();
+  options.given.temperature_column |= !c.temperature_column.empty();
+  options.given.time_offset |= !c.time_offset_s.empty();
   if (!c.time_offset_s.empty()) {
     const auto offset_ns = parse_decimal_time_ns(c.time_offset_s, TimeUnit::kSecond);
     if (!offset_ns) throw imu_lab::ConfigError(kCommandLine, "--time-offset-s", "'" + c.time_offset_s + "' is not a number");
@@ -56,14 +63,6 @@ imu_lab::io::CsvImportOptions import_options(const CommandLine& c) {
   options.bad_rows = parse_bad_row_policy(c.on_bad_row, kCommandLine, "--on-bad-row");
   options.max_reported_rows = c.max_reported_rows;
   return options;
-}
-
-std::string describe_units(const imu_lab::io::CsvImportOptions& options) {
-  const char* time_units[] = {"s", "ms", "us", "ns"};
-  std::ostringstream text;
-  text << "time " << time_units[static_cast<int>(options.time_unit)] << ", gyro " << unit_name(options.gyro_unit)
-       << ", accel " << unit_name(options.accel_unit);
-  return text.str();
 }
 
 }  // namespace
@@ -91,9 +90,10 @@ int main(int argc, char** argv) {
   app.add_option("--imu-topic", c.topics.imu, "sensor_msgs/Imu topic")->capture_default_str();
   app.add_option("--temperature-topic", c.topics.temperature, "sensor_msgs/Temperature topic")->capture_default_str();
   app.add_option("--frame-id", c.topics.frame_id, "frame_id of the messages")->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  if (const auto status = imu_lab::parse_tool_options("import_csv", app, argc, argv)) return *status;
 
-  return imu_lab::run_tool_main(kTool, [&] {
+  const imu_lab::ToolInput input{"CSV file", c.csv_path, ""};
+  return imu_lab::run_tool_main(kTool, input, [&] {
     const auto options = import_options(c);
     const auto report = imu_lab::ros_io::import_csv_to_bag(c.csv_path, options, c.topics, c.out_path);
     const auto& summary = report.summary;
@@ -101,10 +101,18 @@ int main(int argc, char** argv) {
       std::cerr << kTool << ": skipped " << summary.describe_rejections(c.csv_path) << "\n";
     }
     const double span_s = 1e-9 * static_cast<double>(summary.last_stamp_ns - summary.first_stamp_ns);
+    if (!summary.recognised.empty()) std::printf("%s: %s: %s\n", kTool, c.csv_path.c_str(), summary.recognised.c_str());
+    if (summary.relative_time_offset_ns != 0) {
+      using imu_lab::io::format_stamp_s;
+      std::printf("%s: %s: the time column is relative (it starts at %s s, before any epoch ROS time can hold): "
+                  "%s s added to every stamp (--time-offset-s gives another offset, 0 keeps it)\n",
+                  kTool, c.csv_path.c_str(), format_stamp_s(summary.first_stamp_ns - summary.relative_time_offset_ns).c_str(),
+                  format_stamp_s(summary.relative_time_offset_ns).c_str());
+    }
     std::printf("%s: wrote %s: %zu samples on %s (%s), %.3f s", kTool, c.out_path.c_str(), summary.accepted_rows,
-                c.topics.imu.c_str(), describe_units(options).c_str(), span_s);
+                c.topics.imu.c_str(), summary.units.c_str(), span_s);
     if (summary.accepted_rows > 1) std::printf(" at %.6g Hz mean", static_cast<double>(summary.accepted_rows - 1) / span_s);
-    if (!options.temperature_column.empty()) {
+    if (!summary.temperature_column.empty()) {
       std::printf(", %zu temperatures on %s (%zu rows without one)", report.temperature_messages,
                   c.topics.temperature.c_str(), summary.rows_without_temperature);
     }

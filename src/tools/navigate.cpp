@@ -3,7 +3,6 @@
 // written as a CSV beside the trajectory and, on request, plotted). The same NavigationSession as
 // the strapdown_navigator node, so both give the same solution on the same bag.
 #include <CLI/CLI.hpp>
-#include <ros/package.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,10 +11,13 @@
 #include <iostream>
 #include <limits>
 
+#include "imu_lab/common/atomic_file.h"
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/format_number.h"
 #include "imu_lab/common/tool_main.h"
+#include "imu_lab/common/tool_options.h"
 #include "imu_lab/ros/bag_navigation.h"
+#include "imu_lab/ros/config_paths.h"
 #include "imu_lab/ros/navigation_csv.h"
 
 namespace {
@@ -59,7 +61,8 @@ void add_options(CLI::App& app, CommandLine& c) {
   app.add_option("--gap-factor", c.settings.gap_factor, "interval over this many typical ones is a gap")
       ->capture_default_str();
   app.add_option("--every-s", c.bag.output_interval_s, "write a row at most this often [s] (0: every sample)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(imu_lab::option_range::non_negative());
   app.add_flag("--skip-bad-samples", c.skip_bad_samples, "skip NaN/unordered samples instead of refusing the bag");
 }
 
@@ -138,11 +141,9 @@ std::string default_errors_path(const std::string& out_path) {
   return (has_suffix ? out_path.substr(0, out_path.size() - suffix.size()) : out_path) + "_errors.csv";
 }
 
-void plot(const std::string& errors_path, const std::string& png_path) {
-  const std::string script = ros::package::getPath("imu_lab") + "/scripts/plot_navigation.py";
-  const std::string command = "/usr/bin/python3 '" + script + "' '" + errors_path + "' '" + png_path + "'";
-  if (std::system(command.c_str()) != 0) throw std::runtime_error("plotting failed: " + command);
-  std::printf("navigate: wrote %s\n", png_path.c_str());
+void plot(const std::string& errors_path, const std::string& png_path, const std::string& final_png_path) {
+  const std::string problem = imu_lab::ros_io::run_plot_script("plot_navigation.py", {errors_path, png_path});
+  if (!problem.empty()) throw imu_lab::OutputError("cannot plot " + final_png_path + ": " + problem + "; nothing written");
 }
 
 }  // namespace
@@ -151,8 +152,9 @@ int main(int argc, char** argv) {
   CLI::App app{"Strapdown navigation of an IMU bag: trajectory CSV, and errors against the truth if the bag has it."};
   CommandLine c;
   add_options(app, c);
-  CLI11_PARSE(app, argc, argv);
-  return imu_lab::run_tool_main("navigate", [&] {
+  if (const auto status = imu_lab::parse_tool_options("navigate", app, argc, argv)) return *status;
+  imu_lab::ToolInput input{"bag", c.bag_path, c.bag.topic};
+  return imu_lab::run_tool_main("navigate", input, [&] {
     fill_settings(c);
     const auto result = imu_lab::ros_io::navigate_bag(c.bag_path, c.bag, c.settings);
     const auto& n = result.counters;
@@ -163,16 +165,22 @@ int main(int argc, char** argv) {
                                 "; nothing written (repair the bag, or pass --skip-bad-samples to skip them)");
     }
     print_summary(c, result);
-    imu_lab::ros_io::write_trajectory_csv(c.out_path, result.solutions);
-    std::printf("navigate: wrote %s (%zu rows)\n", c.out_path.c_str(), result.solutions.size());
+    // Trajectory, errors and plot are one set: all new, or (on any failure) all as they were.
+    imu_lab::OutputSet outputs;
+    imu_lab::ros_io::write_trajectory_csv(outputs.stage(c.out_path), result.solutions);
+    const std::string errors_path = c.errors_path.empty() ? default_errors_path(c.out_path) : c.errors_path;
     if (result.has_truth) {
-      const std::string errors_path = c.errors_path.empty() ? default_errors_path(c.out_path) : c.errors_path;
-      imu_lab::ros_io::write_error_csv(errors_path, result.errors);
-      std::printf("navigate: wrote %s (%zu rows)\n", errors_path.c_str(), result.errors.size());
-      if (!c.plot_path.empty()) plot(errors_path, c.plot_path);
-    } else if (!c.plot_path.empty()) {
-      std::cerr << "navigate: no " << c.bag.truth_topic << " in the bag, so no error to plot\n";
+      const std::string staged_errors = outputs.stage(errors_path);
+      imu_lab::ros_io::write_error_csv(staged_errors, result.errors);
+      if (!c.plot_path.empty()) plot(staged_errors, outputs.stage(c.plot_path), c.plot_path);
+    } else {
+      outputs.remove_at_commit(errors_path);  // an earlier run's, which would not belong to this trajectory
+      if (!c.plot_path.empty()) std::cerr << "navigate: no " << c.bag.truth_topic << " in the bag, so no error to plot\n";
     }
+    outputs.commit();
+    std::printf("navigate: wrote %s (%zu rows)\n", c.out_path.c_str(), result.solutions.size());
+    if (result.has_truth) std::printf("navigate: wrote %s (%zu rows)\n", errors_path.c_str(), result.errors.size());
+    if (result.has_truth && !c.plot_path.empty()) std::printf("navigate: wrote %s\n", c.plot_path.c_str());
     return 0;
   });
 }

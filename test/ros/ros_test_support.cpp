@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <iterator>
@@ -29,8 +30,19 @@ std::string scratch_directory() {
   return made;
 }
 
+// IMU_LAB_TOOLS_DIR runs the tests against another build's tools (e.g. an older commit's, to see
+// which tests fail before a fix); by default the tools of this build.
+std::string tool_path(const std::string& tool) {
+  const char* other = std::getenv("IMU_LAB_TOOLS_DIR");
+  return std::string(other != nullptr && *other != '\0' ? other : IMU_LAB_BIN_DIR) + "/" + tool;
+}
+
 CommandResult run_tool(const std::string& tool, const std::string& arguments) {
-  const std::string command = std::string(IMU_LAB_BIN_DIR) + "/" + tool + " " + arguments + " 2>&1";
+  return run_command(tool_path(tool) + " " + arguments);
+}
+
+CommandResult run_command(const std::string& command_line) {
+  const std::string command = "{ " + command_line + " ; } 2>&1";
   CommandResult result;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) throw std::runtime_error("cannot run " + command);

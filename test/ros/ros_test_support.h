@@ -17,6 +17,10 @@ struct CommandResult {
 
 // Runs one of the package's executables (from the devel space) with arguments, shell-quoted.
 CommandResult run_tool(const std::string& tool, const std::string& arguments);
+// The path of one of the package's executables.
+std::string tool_path(const std::string& tool);
+// Runs a shell command line (/bin/sh -c), its stderr with its stdout.
+CommandResult run_command(const std::string& command);
 
 std::string read_file(const std::string& path);
 // Writes the first `fraction` of source's bytes to destination (a recording cut short by a crash);

@@ -71,7 +71,7 @@ TEST(FitCalibrationTool, UnknownOrientationsWithHeldOutRests) {
 
 TEST(FitCalibrationTool, RefusesBadInputWithAMessage) {
   const QuickBag& b = quick_bag();
-  const auto too_few = run_tool("fit_calibration", b.bag + " --latitude-deg 50 --held-out-last 6 --out " +
+  const auto too_few = run_tool("fit_calibration", b.bag + " --latitude-deg 50 --height-m 0 --held-out-last 6 --out " +
                                                        b.directory + "/few.yaml");
   EXPECT_EQ(too_few.exit_code, 1) << too_few.output;
   EXPECT_NE(too_few.output.find("needs at least 9: record 3 more positions"), std::string::npos) << too_few.output;

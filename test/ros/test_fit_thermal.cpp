@@ -45,7 +45,7 @@ TEST(FitThermalTool, FitsAMultiPositionTestAndWritesModelCsvAndPlot) {
 TEST(FitThermalTool, RefusesScaleFactorFromOneOrientationButFitsTheBias) {
   const std::string bag = emulated_bag("chamber", "--scenario thermal_chamber --rate-hz 1 --seed 12");
   const std::string out = test_support::scratch_directory() + "/model.yaml";
-  const auto refused = run_tool("fit_thermal", bag + " --out " + out);
+  const auto refused = run_tool("fit_thermal", bag + " --out " + out + " --latitude-deg 45");
   EXPECT_EQ(refused.exit_code, 1) << refused.output;
   EXPECT_NE(refused.output.find("two opposite orientations"), std::string::npos) << refused.output;
   EXPECT_NE(refused.output.find("thermal_multiposition.yaml"), std::string::npos) << refused.output;
@@ -62,7 +62,7 @@ TEST(FitThermalTool, RefusesTooSmallASpanAndAMissingTopic) {
   EXPECT_EQ(span.exit_code, 1) << span.output;
   EXPECT_NE(span.output.find("span only 0.0 degC"), std::string::npos) << span.output;
   EXPECT_NE(span.output.find("wider range"), std::string::npos) << span.output;
-  const auto missing = run_tool("fit_thermal", bag + " --out " + out + " --temperature-topic /imu/board_temperature");
+  const auto missing = run_tool("fit_thermal", bag + " --out " + out + " --no-scale-factor --temperature-topic /imu/board_temperature");
   EXPECT_EQ(missing.exit_code, 1) << missing.output;
   EXPECT_NE(missing.output.find("has no topic /imu/board_temperature"), std::string::npos) << missing.output;
   EXPECT_NE(missing.output.find("/imu/temperature (sensor_msgs/Temperature"), std::string::npos) << missing.output;
@@ -88,7 +88,7 @@ TEST(FitThermalTool, RefusesATemperatureTopicThatStops) {
       bag.write("/imu/temperature", stamp, temperature);
     }
   }
-  const auto result = run_tool("fit_thermal", bag_path + " --out " + test_support::scratch_directory() + "/m.yaml");
+  const auto result = run_tool("fit_thermal", bag_path + " --no-scale-factor --out " + test_support::scratch_directory() + "/m.yaml");
   EXPECT_EQ(result.exit_code, 1) << result.output;
   EXPECT_NE(result.output.find("temperature is stale at IMU stamp 1101.100 s: the nearest reading is 1.100 s away"), std::string::npos) << result.output;
   EXPECT_NE(result.output.find("recorded through the whole test"), std::string::npos) << result.output;

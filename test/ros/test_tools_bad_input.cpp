@@ -29,7 +29,9 @@ struct Tool {
     if (tool == "allan") return bag + " --no-plot --out " + out_directory + "/report";
     if (tool == "bag_summary") return bag;
     if (tool == "fit_thermal") return bag + " --no-scale-factor --out " + out_directory + "/model.yaml";
-    if (tool == "fit_calibration") return bag + " --latitude-deg 50 --out " + out_directory + "/calibration.yaml";
+    if (tool == "fit_calibration") {
+      return bag + " --latitude-deg 50 --height-m 0 --out " + out_directory + "/calibration.yaml";
+    }
     if (tool == "correct") {
       return bag + " --calibration " + std::string(IMU_LAB_TEST_DATA_DIR) + "/calibration_example.yaml --out " +
              out_directory + "/corrected.bag";
