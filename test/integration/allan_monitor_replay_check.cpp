@@ -1,10 +1,15 @@
 // rostest checker for allan_monitor (launched by allan_monitor_replay.test): plays an emulated bag
 // with `rosbag play --clock` into the node, checks the node counted every message, asks for its
 // report (~write_report) and compares every curve with the allan tool's on the same bag.
+#include <diagnostic_msgs/DiagnosticArray.h>
+#include <sensor_msgs/Imu.h>
 #include <std_srvs/Trigger.h>
 #include <yaml-cpp/yaml.h>
 
+#include <map>
+
 #include "allan_replay_support.h"
+#include "connection_support.h"
 
 namespace {
 
@@ -50,6 +55,55 @@ TEST(AllanMonitorReplay, CurvesEqualTheToolsOnTheSameBag) {
   EXPECT_EQ(summary["samples"].as<std::size_t>(), messages);
   EXPECT_EQ(summary["out_of_order"]["count"].as<int>(), 0);
   EXPECT_EQ(summary["duplicates"]["count"].as<int>(), 0);
+}
+
+// A node never dies on its input. Finite values beyond +-1e100 (1e308 rad/s made the snapshot's
+// noise-type estimate throw through spin(): FATAL) and samples whose gyro triad is marked as not
+// provided are left out of their channels, counted and reported on /diagnostics; the curves keep
+// coming. Runs after the replay above, on stamps after the bag's.
+TEST(AllanMonitorReplay, ExtremeValuesAndMissingTriadsAreLeftOutAndReported) {
+  ros::NodeHandle node;
+  LatestCurves curves(node);
+  std::map<std::string, std::string> totals;  // the monitor's diagnostic values
+  auto diagnostics = node.subscribe<diagnostic_msgs::DiagnosticArray>(
+      "/diagnostics", 100, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& array) {
+        for (const auto& status : array->status) {
+          if (status.hardware_id != "allan_monitor") continue;
+          for (const auto& pair : status.values) totals[pair.key] = pair.value;
+        }
+      });
+  auto publisher = node.advertise<sensor_msgs::Imu>("/imu/raw", 10000);
+  ASSERT_TRUE(imu_lab::connection_check::wait_until([&] { return publisher.getNumSubscribers() > 0; }, 60.0));
+  ASSERT_TRUE(imu_lab::connection_check::wait_until(
+      [&] {
+        ros::spinOnce();
+        return curves.latest().samples > 0;
+      },
+      60.0));
+  const std::uint64_t before = curves.latest().samples;
+  constexpr int kSamples = 2000;
+  for (int k = 1; k <= kSamples; ++k) {
+    sensor_msgs::Imu message;
+    message.header.stamp = ros::Time(kEmulatedStart_s + static_cast<double>(before + k) / kEmulatedRate_hz);
+    message.angular_velocity.x = 1e-4 * ((k % 7) - 3);
+    message.linear_acceleration.z = 9.81 + 1e-3 * ((k % 5) - 2);
+    if (k == 500) message.angular_velocity.y = 1e308;
+    if (k == 1500) message.linear_acceleration.x = -1e308;
+    if (k == 1000) message.angular_velocity_covariance[0] = -1.0;
+    publisher.publish(message);
+  }
+  ASSERT_TRUE(curves.wait_for_samples(before + kSamples, 60.0))
+      << "the node stopped at " << curves.latest().samples << " samples (it used to die on 1e308)";
+  ASSERT_TRUE(imu_lab::connection_check::wait_until(
+      [&] {
+        ros::spinOnce();
+        return totals["samples with a value beyond +-1e100 (excluded from its channel)"] == "2" &&
+               totals["samples without a triad (covariance[0] = -1)"] == "1";
+      },
+      30.0))
+      << "beyond 1e100: " << totals["samples with a value beyond +-1e100 (excluded from its channel)"]
+      << ", without a triad: " << totals["samples without a triad (covariance[0] = -1)"];
+  for (double deviation : curves.latest().axes[1].deviation) EXPECT_TRUE(std::isfinite(deviation));
 }
 
 }  // namespace

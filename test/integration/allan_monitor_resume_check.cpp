@@ -25,7 +25,8 @@ std::vector<std::string> monitor_parameters(const std::string& directory, const 
           std::string("_resume:=") + (resume ? "true" : "false")};
 }
 
-// The checkpoint once one holds at least `samples` (the node saves it every half second).
+// Waits (on the file, up to a generous limit) for a checkpoint holding at least `samples` (the node
+// saves one every half second).
 std::int64_t wait_for_checkpoint(const std::string& path, std::int64_t samples, std::int64_t* last_stamp_ns) {
   const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(30.0);
   while (ros::WallTime::now() < deadline) {
@@ -54,10 +55,15 @@ TEST(AllanMonitorResume, RestartFromTheCheckpointEndsWithTheUninterruptedResult)
   ASSERT_EQ(play_bag(bag, "--rate=25 --duration=" + std::to_string(kFirstPart_s)), 0);
   const auto first_part = static_cast<std::int64_t>(kFirstPart_s * kEmulatedRate_hz * 0.9);
   std::int64_t checkpoint_stamp_ns = 0;
-  const std::int64_t checkpoint_samples =
-      wait_for_checkpoint(directory + "/allan.checkpoint", first_part, &checkpoint_stamp_ns);
+  ASSERT_GT(wait_for_checkpoint(directory + "/allan.checkpoint", first_part, &checkpoint_stamp_ns), 0)
+      << "no checkpoint with " << first_part << " samples";
   first.stop(SIGKILL);  // a crash: whatever came after the last checkpoint is lost
-  ASSERT_GT(checkpoint_samples, 0) << "no checkpoint with " << first_part << " samples";
+  // The second node resumes from the checkpoint on disk now, which a loaded node may have written
+  // after the one seen above (it was still working through its queue): the replay starts from its
+  // stamp, whenever it was written.
+  const auto checkpoint = imu_lab::allan::StreamingAllan::load_checkpoint(directory + "/allan.checkpoint");
+  const std::int64_t checkpoint_samples = checkpoint.input_sample_count();
+  checkpoint_stamp_ns = checkpoint.last_stamp_ns();
 
   const std::string report = directory + "/second";
   MonitorProcess second("allan_monitor_second", monitor_parameters(directory, report, true));

@@ -11,6 +11,7 @@
 #include <map>
 #include <string>
 
+#include "connection_support.h"
 #include "imu_lab/calib/calibration_file.h"
 #include "imu_lab/ros/imu_bag_reader.h"
 
@@ -42,6 +43,11 @@ TEST(CalibrationCorrectorNode, PublishesTheCoreCorrectionOfEverySample) {
   auto subscriber = node.subscribe<sensor_msgs::Imu>("/imu/corrected", 100000, [&](const sensor_msgs::Imu::ConstPtr& m) {
     outputs[static_cast<std::int64_t>(m->header.stamp.toNSec())] = *m;
   });
+  // The node's output reaches this checker only once their connection exists (registration
+  // comes first): the playback waits for it, not for a pause a busy machine could outlast.
+  ASSERT_TRUE(imu_lab::connection_check::wait_until(
+      [] { return imu_lab::connection_check::sends("/calibration_corrector", "/imu/corrected", ros::this_node::getName()); }, 60.0))
+      << "/calibration_corrector never connected to this checker";
   const std::string play = "rosbag play --clock --wait-for-subscribers --quiet --queue=100000 " + bag + " " +
                            private_string("play_arguments") + " > " + directory + "/play.log 2>&1";
   FILE* player = ::popen(play.c_str(), "r");
@@ -73,6 +79,50 @@ TEST(CalibrationCorrectorNode, PublishesTheCoreCorrectionOfEverySample) {
   EXPECT_LT(worst_rate_rad_s, 1e-15);
   EXPECT_LT(worst_force_m_s2, 1e-13);
   EXPECT_GT(largest_change_m_s2, 1e-3);  // the calibration really changes the data
+}
+
+// Like every node of the chain, the corrector drops a sample whose stamp is not after the previous
+// one (it used to republish duplicates and out-of-order samples), and one whose gyro triad is
+// marked as not provided (angular_velocity_covariance[0] = -1) instead of correcting its zeros.
+TEST(CalibrationCorrectorNode, DropsDuplicateOutOfOrderAndIncompleteSamples) {
+  ros::NodeHandle node;
+  std::map<std::int64_t, int> published;  // stamp -> times published
+  auto subscriber = node.subscribe<sensor_msgs::Imu>("/imu/corrected", 100, [&](const sensor_msgs::Imu::ConstPtr& m) {
+    ++published[static_cast<std::int64_t>(m->header.stamp.toNSec())];
+  });
+  auto publisher = node.advertise<sensor_msgs::Imu>("/imu/raw", 100);
+  using imu_lab::connection_check::sends;
+  ASSERT_TRUE(imu_lab::connection_check::wait_until(
+      [&] {
+        return publisher.getNumSubscribers() > 0 && sends("/calibration_corrector", "/imu/corrected", ros::this_node::getName());
+      },
+      60.0));
+  // After the bag of the test before (the node's stamps only move forward).
+  const std::int64_t start_ns = 2'000'000'000LL * 1'000'000'000LL;
+  const std::int64_t step_ns = 10'000'000;
+  const auto send = [&](std::int64_t stamp_ns, bool with_gyro) {
+    sensor_msgs::Imu message;
+    message.header.stamp.fromNSec(static_cast<std::uint64_t>(stamp_ns));
+    message.angular_velocity.x = 1e-3;
+    message.linear_acceleration.z = 9.81;
+    if (!with_gyro) message.angular_velocity_covariance[0] = -1.0;
+    publisher.publish(message);
+  };
+  send(start_ns, true);
+  send(start_ns, true);                 // duplicate
+  send(start_ns - 50 * step_ns, true);  // out of order
+  send(start_ns + step_ns, false);      // no gyro data
+  send(start_ns + 2 * step_ns, true);   // the last: once it is in, everything before it is
+  ASSERT_TRUE(imu_lab::connection_check::wait_until(
+      [&] {
+        ros::spinOnce();
+        return published.count(start_ns + 2 * step_ns) > 0;
+      },
+      60.0));
+  EXPECT_EQ(published[start_ns], 1) << "a duplicate stamp was republished";
+  EXPECT_EQ(published.count(start_ns - 50 * step_ns), 0u) << "an out-of-order sample was republished";
+  EXPECT_EQ(published.count(start_ns + step_ns), 0u) << "a sample without gyro data was corrected and republished";
+  EXPECT_EQ(published[start_ns + 2 * step_ns], 1);
 }
 
 }  // namespace

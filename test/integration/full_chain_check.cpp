@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "../unit/test_noise_avar_check.h"
+#include "connection_support.h"
 #include "imu_lab/calib/calibration_file.h"
 #include "imu_lab/emulator/analytic_profile_avar.h"
 #include "imu_lab/emulator/sensor_profile.h"
@@ -220,7 +221,23 @@ TEST(FullChain, CorrectedNavigationIsTenTimesBetterAndItsNoiseIsTheProfiles) {
   if (!connected()) {
     FAIL() << "the chain did not come up within 90 s; see " << directory << "/launch.log";
   }
-  ros::WallDuration(2.0).sleep();  // the stages' own connections follow their registrations
+  // The stages' own connections follow their registrations: wait until every link of the chain is
+  // connected on its publisher's side (a pause of a fixed length was outlasted on a busy machine).
+  using imu_lab::connection_check::sends;
+  const std::string checker = ros::this_node::getName();
+  const bool linked = imu_lab::connection_check::wait_until(
+      [&] {
+        return sends("/player", "/imu/raw", "/thermal_compensator") &&
+               sends("/player", "/imu/temperature", "/thermal_compensator") &&
+               sends("/player", "/imu/raw", "/allan_monitor") &&
+               sends("/thermal_compensator", "/imu/thermal", "/calibration_corrector") &&
+               sends("/calibration_corrector", "/imu/corrected", "/strapdown_navigator") &&
+               sends("/calibration_corrector", "/imu/corrected", checker) &&
+               sends("/strapdown_navigator", "/nav/odometry", checker);
+      },
+      90.0);
+  ASSERT_TRUE(linked) << "the chain's stages did not connect to each other within 90 s; see " << directory
+                      << "/launch.log";
   std_srvs::SetBool resume;
   resume.request.data = false;
   ASSERT_TRUE(ros::service::call("/player/pause_playback", resume)) << "could not start the playback";

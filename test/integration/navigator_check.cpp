@@ -14,6 +14,7 @@
 #include <map>
 #include <string>
 
+#include "connection_support.h"
 #include "imu_lab/ros/navigation_csv.h"
 #include "imu_lab/ros/navigation_messages.h"
 
@@ -53,6 +54,11 @@ TEST(StrapdownNavigatorNode, PublishesTheNavigateToolsSolutionAndTheTransform) {
 
   // The node's input subscription makes --wait-for-subscribers start the playback.
   // The bag before the options: --topics takes every argument after it.
+  // The node's output reaches this checker only once their connection exists (registration
+  // comes first): the playback waits for it, not for a pause a busy machine could outlast.
+  ASSERT_TRUE(imu_lab::connection_check::wait_until(
+      [] { return imu_lab::connection_check::sends("/strapdown_navigator", "/nav/odometry", ros::this_node::getName()); }, 60.0))
+      << "/strapdown_navigator never connected to this checker";
   const std::string play = "rosbag play --clock --wait-for-subscribers --quiet --queue=100000 " + bag + " " +
                            private_string("play_arguments") + " > " + directory + "/play.log 2>&1";
   FILE* player = ::popen(play.c_str(), "r");

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "connection_support.h"
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/ros/node_parameters.h"
 
@@ -258,7 +259,9 @@ TEST(NodeletManager, AWrongTypedParameterRefusesTheNodeletAndTheManagerLivesOn) 
   spinner.start();
   RosoutWatch rosout(node);
   ASSERT_TRUE(ros::service::waitForService("/parameter_manager/load_nodelet", ros::Duration(60.0)));
-  ros::WallDuration(1.0).sleep();  // the /rosout connection to the manager
+  // The manager's log reaches this checker only once its /rosout connection to it exists.
+  ASSERT_TRUE(imu_lab::connection_check::wait_until(
+      [] { return imu_lab::connection_check::sends("/parameter_manager", "/rosout", ros::this_node::getName()); }, 60.0));
 
   const ProcessResult result = finish(start("rosrun nodelet nodelet load imu_lab/ImuEmulatorNodelet /parameter_manager "
                          "__name:=bad_rate_nodelet _rate_hz:=fast"));

@@ -12,6 +12,7 @@
 #include <map>
 #include <string>
 
+#include "connection_support.h"
 #include "imu_lab/ros/imu_bag_reader.h"
 #include "imu_lab/thermal/thermal_compensator.h"
 #include "imu_lab/thermal/thermal_model_yaml.h"
@@ -71,6 +72,11 @@ TEST(ThermalCompensatorNode, PublishesTheCoreLibrarysCorrectionOfEverySample) {
       "imu/thermal", 100000, [&](const sensor_msgs::Imu::ConstPtr& m) { received[m->header.stamp.toNSec()] = *m; });
   // The node's subscriptions make --wait-for-subscribers start the playback; the bag goes before
   // the options because --topics takes every argument after it.
+  // The node's output reaches this checker only once their connection exists (registration
+  // comes first): the playback waits for it, not for a pause a busy machine could outlast.
+  ASSERT_TRUE(imu_lab::connection_check::wait_until(
+      [] { return imu_lab::connection_check::sends("/thermal_compensator", "/imu/thermal", ros::this_node::getName()); }, 60.0))
+      << "/thermal_compensator never connected to this checker";
   const std::string play = "rosbag play --clock --wait-for-subscribers --quiet --queue=100000 " + bag + " " +
                            private_string("play_arguments") + " > " + directory + "/play.log 2>&1";
   FILE* player = ::popen(play.c_str(), "r");
