@@ -6,6 +6,7 @@
 #include <string>
 
 #include "imu_lab/common/format_number.h"
+#include "imu_lab/common/site_limits.h"
 
 namespace imu_lab {
 namespace {
@@ -95,8 +96,8 @@ CLI::Validator between(double minimum, double maximum) {
 }
 
 CLI::Validator latitude_deg() { return between(-90.0, 90.0); }
-CLI::Validator longitude_deg() { return between(-180.0, 360.0); }
-CLI::Validator height_m() { return between(-11000.0, 100000.0); }
+CLI::Validator longitude_deg() { return between(site_limits::kLowestLongitudeDeg, site_limits::kHighestLongitudeDeg); }
+CLI::Validator height_m() { return between(site_limits::kLowestHeightM, site_limits::kHighestHeightM); }
 
 }  // namespace option_range
 }  // namespace imu_lab

@@ -73,10 +73,8 @@ CsvImportOptions parse_csv_import_options(const std::string& yaml_text, const st
     options.given.time_unit |= bool(time["unit"]);
     options.given.time_offset |= bool(time["offset_s"]);
     if (time["offset_s"]) {
-      const std::string text = scalar(time["offset_s"], source, "time.offset_s");
-      const auto offset_ns = parse_decimal_time_ns(text, TimeUnit::kSecond);
-      if (!offset_ns) throw ConfigError(source, "time.offset_s", "'" + text + "' is not a number of seconds");
-      options.time_offset_ns = *offset_ns;
+      options.time_offset_ns =
+          parse_time_offset_ns(scalar(time["offset_s"], source, "time.offset_s"), source, "time.offset_s");
     }
   }
   if (const YAML::Node gyro = root["gyro"]) {

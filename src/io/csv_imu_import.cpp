@@ -382,6 +382,14 @@ char parse_delimiter(const std::string& name, const std::string& source, const s
   throw ConfigError(source, key, "unknown delimiter '" + name + "' (',', ';' or tab)");
 }
 
+std::int64_t parse_time_offset_ns(const std::string& text, const std::string& source, const std::string& key) {
+  const auto offset_ns = parse_decimal_time_ns(text, TimeUnit::kSecond);
+  if (!offset_ns) {
+    throw ConfigError(source, key, "'" + text + "' is not a number of seconds within +-9.2e9 s (stamps are int64 ns)");
+  }
+  return *offset_ns;
+}
+
 std::string unit_name(AngularRateUnit unit) { return unit == AngularRateUnit::kDegreePerSecond ? "deg_s" : "rad_s"; }
 std::string unit_name(SpecificForceUnit unit) { return unit == SpecificForceUnit::kStandardGravity ? "g" : "m_s2"; }
 

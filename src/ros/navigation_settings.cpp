@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/format_number.h"
+#include "imu_lab/common/site_limits.h"
 
 namespace imu_lab {
 namespace ros_io {
@@ -37,14 +39,34 @@ void validate(const NavigationSettings& settings, const std::string& source) {
   };
   require(std::abs(settings.latitude_rad) < 0.5 * M_PI, "latitude_deg",
           "must be strictly between -90 and 90 degrees (the ENU mechanisation is singular at the poles)");
-  require(std::isfinite(settings.longitude_rad), "longitude_deg", "must be a finite angle in degrees");
-  require(std::isfinite(settings.height_m), "height_m", "must be a finite height in metres");
+  // NaN fails every comparison below, so each check also refuses it.
+  const auto within = [](double value, double low, double high) { return value >= low && value <= high; };
+  const auto in_degrees = [](double angle_rad) { return angle_rad / kDegToRad; };
+  using namespace site_limits;
+  require(within(in_degrees(settings.longitude_rad), kLowestLongitudeDeg, kHighestLongitudeDeg), "longitude_deg",
+          "must be in [" + format_number(kLowestLongitudeDeg, 6) + ", " + format_number(kHighestLongitudeDeg, 6) +
+              "] degrees, got " + format_number(in_degrees(settings.longitude_rad), 6));
+  const std::string heights =
+      "[" + format_number(kLowestHeightM, 6) + ", " + format_number(kHighestHeightM, 6) + "] m (the deepest trench to "
+      "the edge of space), got ";
+  require(within(settings.height_m, kLowestHeightM, kHighestHeightM), "height_m",
+          "must be in " + heights + format_number(settings.height_m, 6));
+  const auto& reference_height_m = settings.navigator.vertical.fixed_reference_height_m;
+  require(!reference_height_m || within(*reference_height_m, kLowestHeightM, kHighestHeightM), "reference_height_m",
+          "must be in " + heights + format_number(reference_height_m.value_or(0.0), 6));
   require(!settings.align || settings.alignment.duration_s > 0.0, "alignment_duration_s",
           "must be a positive number of seconds");
-  require(std::isfinite(settings.initial_roll_rad), "initial_roll_deg", "must be a finite angle in degrees");
-  require(std::isfinite(settings.initial_pitch_rad), "initial_pitch_deg", "must be a finite angle in degrees");
-  require(std::isfinite(settings.initial_yaw_rad) && std::isfinite(settings.alignment.given_yaw_rad),
-          "initial_yaw_deg", "must be a finite angle in degrees");
+  // One turn either way covers every way of writing an angle; beyond that a number is a mistake
+  // (and sin/cos of 1e300 rad is no angle at all). Pitch is within [-90, 90] by definition.
+  const auto angle = [&](double angle_rad, double limit_deg, const std::string& key) {
+    require(within(in_degrees(angle_rad), -limit_deg, limit_deg), key,
+            "must be in [" + format_number(-limit_deg, 6) + ", " + format_number(limit_deg, 6) + "] degrees, got " +
+                format_number(in_degrees(angle_rad), 6));
+  };
+  angle(settings.initial_roll_rad, 360.0, "initial_roll_deg");
+  angle(settings.initial_pitch_rad, 90.0, "initial_pitch_deg");
+  angle(settings.initial_yaw_rad, 360.0, "initial_yaw_deg");
+  angle(settings.alignment.given_yaw_rad, 360.0, "initial_yaw_deg");
   require(settings.gap_factor > 1.0, "gap_factor", "must be greater than 1 (a gap is that many typical intervals)");
   const auto& expected = settings.expected_errors;
   require(expected.gyro_bias_rad_s >= 0.0 && expected.accel_bias_m_s2 >= 0.0 &&

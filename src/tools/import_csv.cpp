@@ -50,11 +50,7 @@ imu_lab::io::CsvImportOptions import_options(const CommandLine& c) {
   options.given.accel_unit |= !c.accel_unit.empty();
   options.given.temperature_column |= !c.temperature_column.empty();
   options.given.time_offset |= !c.time_offset_s.empty();
-  if (!c.time_offset_s.empty()) {
-    const auto offset_ns = parse_decimal_time_ns(c.time_offset_s, TimeUnit::kSecond);
-    if (!offset_ns) throw imu_lab::ConfigError(kCommandLine, "--time-offset-s", "'" + c.time_offset_s + "' is not a number");
-    options.time_offset_ns = *offset_ns;
-  }
+  if (!c.time_offset_s.empty()) options.time_offset_ns = parse_time_offset_ns(c.time_offset_s, kCommandLine, "--time-offset-s");
   if (!c.gyro_columns.empty()) options.gyro_columns = triad(c.gyro_columns, "--gyro-columns");
   if (!c.accel_columns.empty()) options.accel_columns = triad(c.accel_columns, "--accel-columns");
   if (!c.gyro_unit.empty()) options.gyro_unit = parse_angular_rate_unit(c.gyro_unit, kCommandLine, "--gyro-unit");

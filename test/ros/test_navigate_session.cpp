@@ -6,7 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <string>
 #include <vector>
+
+#include "imu_lab/common/config_error.h"
 
 namespace {
 
@@ -111,6 +115,47 @@ TEST(NavigateSession, GivenAttitudeStartsAtTheFirstSample) {
   EXPECT_NEAR(session.alignment()->roll_pitch_yaw_rad.x(), 0.1, 1e-12);
   EXPECT_NEAR(session.alignment()->roll_pitch_yaw_rad.y(), -0.2, 1e-12);
   EXPECT_NEAR(session.alignment()->roll_pitch_yaw_rad.z(), 1.0, 1e-12);
+}
+
+// The node's parameters and the tool's options meet this one check. A height of 1e12 m, a
+// longitude of 1e6 deg or a yaw of 1e300 deg used to be navigated with exit 0.
+TEST(NavigationSettingsCheck, ASiteOrAnAttitudeNoSensorCanHaveIsRefusedByKey) {
+  const auto refusal = [](const std::function<void(NavigationSettings&)>& change) -> std::string {
+    NavigationSettings s = settings();
+    change(s);
+    try {
+      imu_lab::ros_io::validate(s, "test");
+    } catch (const imu_lab::ConfigError& error) {
+      return error.what();
+    }
+    return "";
+  };
+  constexpr double kDeg = M_PI / 180.0;
+  EXPECT_EQ(refusal([](NavigationSettings&) {}), "");
+  EXPECT_EQ(refusal([&](NavigationSettings& s) {
+              s.longitude_rad = 359.0 * kDeg;
+              s.height_m = -400.0;
+              s.initial_roll_rad = -180.0 * kDeg;
+              s.initial_pitch_rad = 90.0 * kDeg;
+              s.initial_yaw_rad = s.alignment.given_yaw_rad = 350.0 * kDeg;
+              s.navigator.vertical.fixed_reference_height_m = 8848.0;
+            }),
+            "")
+      << "every way of writing a real site and attitude passes";
+  const auto refused = [&](const std::function<void(NavigationSettings&)>& change, const std::string& words) {
+    const std::string message = refusal(change);
+    EXPECT_NE(message.find(words), std::string::npos) << "'" << words << "' not in '" << message << "'";
+  };
+  refused([&](NavigationSettings& s) { s.longitude_rad = 1e6 * kDeg; }, "longitude_deg: must be in [-180, 360] degrees, got 1e+06");
+  refused([&](NavigationSettings& s) { s.longitude_rad = NAN; }, "longitude_deg");
+  refused([](NavigationSettings& s) { s.height_m = 1e12; }, "height_m: must be in [-11000, 100000] m");
+  refused([](NavigationSettings& s) { s.height_m = -1e8; }, "height_m");
+  refused([](NavigationSettings& s) { s.height_m = NAN; }, "height_m");
+  refused([](NavigationSettings& s) { s.navigator.vertical.fixed_reference_height_m = 1e30; }, "reference_height_m");
+  refused([&](NavigationSettings& s) { s.initial_pitch_rad = 100.0 * kDeg; }, "initial_pitch_deg: must be in [-90, 90]");
+  refused([&](NavigationSettings& s) { s.initial_roll_rad = 1e5 * kDeg; }, "initial_roll_deg");
+  refused([&](NavigationSettings& s) { s.initial_yaw_rad = 1e300 * kDeg; }, "initial_yaw_deg");
+  refused([&](NavigationSettings& s) { s.alignment.given_yaw_rad = -400.0 * kDeg; }, "initial_yaw_deg");
 }
 
 }  // namespace

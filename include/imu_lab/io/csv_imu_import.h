@@ -31,6 +31,9 @@ TimeUnit parse_time_unit(const std::string& name, const std::string& source, con
 BadRowPolicy parse_bad_row_policy(const std::string& name, const std::string& source, const std::string& key);
 // "," ";" "tab" (or a literal tab) -> the character.
 char parse_delimiter(const std::string& name, const std::string& source, const std::string& key);
+// A time offset in seconds as exact decimal text -> nanoseconds; text that is not a number, or
+// one beyond what int64 nanoseconds hold (+-9.2e9 s) -> ConfigError naming `source` and `key`.
+std::int64_t parse_time_offset_ns(const std::string& text, const std::string& source, const std::string& key);
 std::string unit_name(AngularRateUnit unit);
 std::string unit_name(SpecificForceUnit unit);
 
