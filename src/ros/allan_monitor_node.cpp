@@ -58,8 +58,6 @@ AllanMonitorNode::AllanMonitorNode(ros::NodeHandle& node, ros::NodeHandle& priva
   // run on worker threads as soon as it exists (one found health_ still empty and crashed it).
   health_.emplace(node.resolveName(settings_.input == AllanInput::kRate ? "imu/raw" : "imu/increment"),
                   load_input_health_settings(private_node, settings_.engine.gap_factor));
-  too_large_condition_ = health_->define_condition("samples with a value beyond +-1e100 (excluded from its channel)",
-                                                   diagnostic_msgs::DiagnosticStatus::WARN);
   snapshot_failed_condition_ = health_->define_condition("snapshots that failed (no curves published)",
                                                          diagnostic_msgs::DiagnosticStatus::ERROR);
   if (settings_.input == AllanInput::kRate) {
@@ -120,7 +118,7 @@ void AllanMonitorNode::add(const AllanSample& sample, const std_msgs::Header& he
     ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: NaN/Inf value at %.9f s excluded (counted in diagnostics)",
                       sample.stamp_ns * 1e-9);
   } else if (!std::all_of(sample.values.begin(), sample.values.end(), is_usable_imu_value)) {
-    health_->count(too_large_condition_);
+    health_->count_too_large();
     ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: a value beyond +-%.0e at %.9f s excluded from its channel "
                       "(counted in diagnostics)", kLargestUsableImuValue, sample.stamp_ns * 1e-9);
   }

@@ -71,8 +71,8 @@ void CalibrationCorrectorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message)
     return;
   }
   if (!health_->check_values(to_imu_record(*message))) {
-    ROS_WARN_THROTTLE(kLogThrottle_s, "calibration_corrector: dropped a sample with NaN/Inf or a triad not provided at "
-                      "%.9f (counted in diagnostics)", message->header.stamp.toSec());
+    ROS_WARN_THROTTLE(kLogThrottle_s, "calibration_corrector: dropped a sample with NaN/Inf, a value beyond +-1e100 or "
+                      "a triad not provided at %.9f (counted in diagnostics)", message->header.stamp.toSec());
     return;
   }
   // A shared message: nodelets downstream in the same manager receive this pointer, not a copy.

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "imu_lab/common/imu_sample.h"
 #include "imu_lab/ros/node_parameters.h"
 
 namespace imu_lab {
@@ -13,6 +14,7 @@ namespace {
 
 // Enough intervals for a median that one late sample cannot move.
 constexpr std::size_t kLearningIntervals = 32;
+const char* const kTooLargeDescription = "samples with a value beyond +-1e100";
 
 std::string format(const char* pattern, double value) {
   char text[64];
@@ -93,9 +95,19 @@ bool InputHealth::check_values(const ImuRecord& record) {
     ++absent_triad_.total;
     return false;
   }
-  if (record.angular_rate_rad_s.allFinite() && record.specific_force_m_s2.allFinite()) return true;
-  ++non_finite_.total;
-  return false;
+  return check_triads(record.angular_rate_rad_s, record.specific_force_m_s2);
+}
+
+bool InputHealth::check_triads(const Eigen::Vector3d& first, const Eigen::Vector3d& second) {
+  if (!first.allFinite() || !second.allFinite()) {
+    ++non_finite_.total;
+    return false;
+  }
+  if (!is_usable_imu_vector(first) || !is_usable_imu_vector(second)) {
+    ++too_large_.total;
+    return false;
+  }
+  return true;
 }
 
 void InputHealth::fill(diagnostic_updater::DiagnosticStatusWrapper& status, const std::string& ok_message) {
@@ -108,6 +120,9 @@ void InputHealth::fill(diagnostic_updater::DiagnosticStatusWrapper& status, cons
   };
   if (samples_.fresh() == 0) note(DiagnosticStatus::WARN, "no input on " + input_ + " since the last report");
   if (non_finite_.fresh() > 0) note(DiagnosticStatus::WARN, std::to_string(non_finite_.fresh()) + " samples with NaN/Inf");
+  if (too_large_.fresh() > 0) {
+    note(DiagnosticStatus::WARN, std::to_string(too_large_.fresh()) + " " + kTooLargeDescription);
+  }
   if (absent_triad_.fresh() > 0) {
     note(DiagnosticStatus::WARN, std::to_string(absent_triad_.fresh()) + " samples without angular rate or specific "
                                  "force (covariance[0] = -1)");
@@ -137,6 +152,7 @@ void InputHealth::fill(diagnostic_updater::DiagnosticStatusWrapper& status, cons
                                                 : std::string("learning"));
   status.add("samples", samples_.total);
   status.add("NaN/Inf samples", non_finite_.total);
+  status.add(kTooLargeDescription, too_large_.total);
   status.add("samples without a triad (covariance[0] = -1)", absent_triad_.total);
   status.add("gaps", gaps_.total);
   status.add("longest gap [s]", longest_gap_s_);
@@ -144,7 +160,7 @@ void InputHealth::fill(diagnostic_updater::DiagnosticStatusWrapper& status, cons
   status.add("out-of-order stamps", out_of_order_.total);
   for (const Condition& condition : conditions_) status.add(condition.description, condition.count.total);
 
-  for (Count* count : {&samples_, &non_finite_, &absent_triad_, &gaps_, &duplicates_, &out_of_order_}) {
+  for (Count* count : {&samples_, &non_finite_, &too_large_, &absent_triad_, &gaps_, &duplicates_, &out_of_order_}) {
     count->reported = count->total;
   }
   for (Condition& condition : conditions_) condition.count.reported = condition.count.total;

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/imu_sample.h"
 #include "imu_lab/emulator/static_motion.h"
 #include "imu_lab/nav/alignment_error_budget.h"
 
@@ -86,8 +87,9 @@ SampleOutcome NavigationSession::add_rates(std::int64_t stamp_ns, const Eigen::V
                                            const Eigen::Vector3d& specific_force_m_s2) {
   std::optional<std::int64_t> start_ns;
   if (!begin_sample(stamp_ns, start_ns)) return SampleOutcome::kSkippedUnordered;
-  if (!angular_rate_rad_s.allFinite() || !specific_force_m_s2.allFinite()) {
-    return skip(SampleOutcome::kSkippedInvalid, counters_.invalid, "NaN or Inf in the angular rate or specific force");
+  if (!is_usable_imu_vector(angular_rate_rad_s) || !is_usable_imu_vector(specific_force_m_s2)) {
+    return skip(SampleOutcome::kSkippedInvalid, counters_.invalid,
+                "NaN, Inf or a value beyond +-1e100 in the angular rate or specific force");
   }
   if (!start_ns) {
     if (!settings_.align) start_navigation(stamp_ns, given_attitude(settings_));
@@ -109,10 +111,10 @@ SampleOutcome NavigationSession::add_rates(std::int64_t stamp_ns, const Eigen::V
 SampleOutcome NavigationSession::add_increment(std::int64_t stamp_ns, const nav::ImuIncrement& increment) {
   std::optional<std::int64_t> start_ns;
   if (!begin_sample(stamp_ns, start_ns)) return SampleOutcome::kSkippedUnordered;
-  if (!increment.delta_angle_rad.allFinite() || !increment.delta_velocity_m_s.allFinite() ||
+  if (!is_usable_imu_vector(increment.delta_angle_rad) || !is_usable_imu_vector(increment.delta_velocity_m_s) ||
       !(increment.dt_s > 0.0) || !std::isfinite(increment.dt_s)) {
     return skip(SampleOutcome::kSkippedInvalid, counters_.invalid,
-                "NaN or Inf in the increment, or a non-positive interval_s");
+                "NaN, Inf or a value beyond +-1e100 in the increment, or a non-positive interval_s");
   }
   if (!start_ns) {
     // The increment covers its own interval: navigation (with a given attitude) starts before it.

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "imu_lab/common/site_limits.h"
 #include "imu_lab/ros/navigation_parameters.h"
 #include "imu_lab/ros/node_parameters.h"
 
@@ -82,25 +83,21 @@ void StrapdownNavigatorNode::on_increment(const imu_lab::ImuIncrement::ConstPtr&
   increment.delta_angle_rad = Eigen::Vector3d(a.x, a.y, a.z);
   increment.delta_velocity_m_s = Eigen::Vector3d(v.x, v.y, v.z);
   increment.dt_s = message->interval_s;
-  const bool values_finite = increment.delta_angle_rad.allFinite() && increment.delta_velocity_m_s.allFinite();
-  check_input(message->header.stamp, values_finite);
-  if (values_finite && !(increment.dt_s > 0.0)) health_->count(bad_interval_condition_);
+  health_->check_stamp(static_cast<std::int64_t>(message->header.stamp.toNSec()));
+  const bool values_usable = health_->check_triads(increment.delta_angle_rad, increment.delta_velocity_m_s);
+  if (values_usable && !(increment.dt_s > 0.0)) health_->count(bad_interval_condition_);
   after_sample(session_->add_increment(static_cast<std::int64_t>(message->header.stamp.toNSec()), increment),
                message->header.stamp);
 }
 
 void StrapdownNavigatorNode::on_reference_height(const std_msgs::Float64::ConstPtr& message) {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (std::isfinite(message->data)) {
+  if (message->data >= site_limits::kLowestHeightM && message->data <= site_limits::kHighestHeightM) {
     session_->set_reference_height(message->data);
-  } else {
-    ROS_WARN_THROTTLE(kLogThrottle_s, "strapdown_navigator: ignoring a non-finite reference height");
+  } else {  // NaN too
+    ROS_WARN_THROTTLE(kLogThrottle_s, "strapdown_navigator: ignoring a reference height of %g m (outside [%g, %g] m)",
+                      message->data, site_limits::kLowestHeightM, site_limits::kHighestHeightM);
   }
-}
-
-void StrapdownNavigatorNode::check_input(const ros::Time& stamp, bool values_finite) {
-  health_->check_stamp(static_cast<std::int64_t>(stamp.toNSec()));
-  if (!values_finite) health_->count_non_finite();
 }
 
 void StrapdownNavigatorNode::after_sample(SampleOutcome outcome, const ros::Time& stamp) {

@@ -24,11 +24,8 @@ StrictImuCheck::StrictImuCheck(ImuTriadsNeeded needed) : needed_(needed) {}
 
 bool StrictImuCheck::accept(const ImuRecord& record) {
   // An absent triad's values are NaN by design: it is judged by its flag, not its values.
-  const auto usable = [](const Eigen::Vector3d& values) {
-    return is_usable_imu_value(values.x()) && is_usable_imu_value(values.y()) && is_usable_imu_value(values.z());
-  };
-  const bool finite = (!record.has_angular_rate || usable(record.angular_rate_rad_s)) &&
-                      (!record.has_specific_force || usable(record.specific_force_m_s2));
+  const bool finite = (!record.has_angular_rate || is_usable_imu_vector(record.angular_rate_rad_s)) &&
+                      (!record.has_specific_force || is_usable_imu_vector(record.specific_force_m_s2));
   const bool in_order = !latest_stamp_ns_ || record.stamp_ns > *latest_stamp_ns_;
   const bool needed_missing =
       (!record.has_angular_rate && needed_.angular_rate) || (!record.has_specific_force && needed_.specific_force);

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "imu_lab/common/imu_sample.h"
+
 namespace imu_lab {
 namespace thermal {
 
@@ -22,8 +24,8 @@ bool ThermalCompensator::add_second_temperature(double stamp_s, double temperatu
 }
 
 bool ThermalCompensator::add_imu(const ImuReading& reading, std::vector<CompensatedSample>* ready) {
-  if (!(reading.stamp_s > newest_imu_stamp_s_) || !reading.angular_rate_rad_s.allFinite() ||
-      !reading.specific_force_m_s2.allFinite()) {
+  if (!(reading.stamp_s > newest_imu_stamp_s_) || !is_usable_imu_vector(reading.angular_rate_rad_s) ||
+      !is_usable_imu_vector(reading.specific_force_m_s2)) {
     return false;
   }
   newest_imu_stamp_s_ = reading.stamp_s;

@@ -160,7 +160,7 @@ int main(int argc, char** argv) {
     const auto& n = result.counters;
     if (!c.skip_bad_samples && n.invalid + n.unordered > 0) {
       throw imu_lab::InputError("bag " + c.bag_path + ", topic " + result.topic + ": " + std::to_string(n.invalid) +
-                                " samples with NaN/Inf or bad intervals and " + std::to_string(n.unordered) +
+                                " samples with NaN/Inf, a value beyond +-1e100 or a bad interval and " + std::to_string(n.unordered) +
                                 " unordered stamps, first " + result.first_problem +
                                 "; nothing written (repair the bag, or pass --skip-bad-samples to skip them)");
     }

@@ -83,7 +83,8 @@ TEST(CalibrationCorrectorNode, PublishesTheCoreCorrectionOfEverySample) {
 
 // Like every node of the chain, the corrector drops a sample whose stamp is not after the previous
 // one (it used to republish duplicates and out-of-order samples), and one whose gyro triad is
-// marked as not provided (angular_velocity_covariance[0] = -1) instead of correcting its zeros.
+// marked as not provided (angular_velocity_covariance[0] = -1) instead of correcting its zeros, or
+// whose value is beyond +-1e100 (1e308 m/s^2 was corrected and passed on).
 TEST(CalibrationCorrectorNode, DropsDuplicateOutOfOrderAndIncompleteSamples) {
   ros::NodeHandle node;
   std::map<std::int64_t, int> published;  // stamp -> times published
@@ -100,11 +101,11 @@ TEST(CalibrationCorrectorNode, DropsDuplicateOutOfOrderAndIncompleteSamples) {
   // After the bag of the test before (the node's stamps only move forward).
   const std::int64_t start_ns = 2'000'000'000LL * 1'000'000'000LL;
   const std::int64_t step_ns = 10'000'000;
-  const auto send = [&](std::int64_t stamp_ns, bool with_gyro) {
+  const auto send = [&](std::int64_t stamp_ns, bool with_gyro, double force_z_m_s2 = 9.81) {
     sensor_msgs::Imu message;
     message.header.stamp.fromNSec(static_cast<std::uint64_t>(stamp_ns));
     message.angular_velocity.x = 1e-3;
-    message.linear_acceleration.z = 9.81;
+    message.linear_acceleration.z = force_z_m_s2;
     if (!with_gyro) message.angular_velocity_covariance[0] = -1.0;
     publisher.publish(message);
   };
@@ -112,17 +113,19 @@ TEST(CalibrationCorrectorNode, DropsDuplicateOutOfOrderAndIncompleteSamples) {
   send(start_ns, true);                 // duplicate
   send(start_ns - 50 * step_ns, true);  // out of order
   send(start_ns + step_ns, false);      // no gyro data
-  send(start_ns + 2 * step_ns, true);   // the last: once it is in, everything before it is
+  send(start_ns + 2 * step_ns, true, 1e308);  // beyond +-1e100
+  send(start_ns + 3 * step_ns, true);         // the last: once it is in, everything before it is
   ASSERT_TRUE(imu_lab::connection_check::wait_until(
       [&] {
         ros::spinOnce();
-        return published.count(start_ns + 2 * step_ns) > 0;
+        return published.count(start_ns + 3 * step_ns) > 0;
       },
       60.0));
   EXPECT_EQ(published[start_ns], 1) << "a duplicate stamp was republished";
   EXPECT_EQ(published.count(start_ns - 50 * step_ns), 0u) << "an out-of-order sample was republished";
   EXPECT_EQ(published.count(start_ns + step_ns), 0u) << "a sample without gyro data was corrected and republished";
-  EXPECT_EQ(published[start_ns + 2 * step_ns], 1);
+  EXPECT_EQ(published.count(start_ns + 2 * step_ns), 0u) << "a sample with 1e308 m/s^2 was corrected and republished";
+  EXPECT_EQ(published[start_ns + 3 * step_ns], 1);
 }
 
 }  // namespace

@@ -95,6 +95,27 @@ TEST(InputHealth, ASampleWithoutATriadIsCountedApartFromNaN) {
   EXPECT_EQ(status.message, "1 samples with NaN/Inf; 1 samples without angular rate or specific force (covariance[0] = -1)");
 }
 
+// Finite but absurd values (1e308 rad/s) overflow whatever a node computes from them: the nodes
+// drop them like NaN (they passed calibration_corrector, thermal_compensator and the navigator),
+// counted apart so the report says what was wrong.
+TEST(InputHealth, AValueBeyond1e100IsUnusableAndCountedApartFromNaN) {
+  Stream stream;
+  stream.feed(100);
+  sensor_msgs::Imu message;
+  message.header.stamp.fromNSec(static_cast<std::uint64_t>(stream.stamp_ns));
+  message.linear_acceleration.z = 9.8;
+  message.angular_velocity.y = 1e100;  // the largest usable value
+  EXPECT_TRUE(stream.health.check_values(imu_lab::ros_io::to_imu_record(message)));
+  message.angular_velocity.y = 1e308;
+  EXPECT_FALSE(stream.health.check_values(imu_lab::ros_io::to_imu_record(message)));
+  EXPECT_FALSE(stream.health.check_triads(Eigen::Vector3d(0.0, 0.0, -1e101), Eigen::Vector3d::Zero()));
+  EXPECT_FALSE(stream.health.check_triads(Eigen::Vector3d::Zero(), Eigen::Vector3d(std::nan(""), 0.0, 0.0)));
+  const auto status = stream.report();
+  EXPECT_EQ(status.level, DiagnosticStatus::WARN);
+  EXPECT_EQ(status.message, "1 samples with NaN/Inf; 2 samples with a value beyond +-1e100");
+  EXPECT_EQ(value_of(status, "samples with a value beyond +-1e100"), "2");
+}
+
 TEST(InputHealth, AGapIsCountedWithTheMissingTimeAndDoesNotLookLikeASlowRate) {
   Stream stream;
   stream.feed(100);

@@ -79,6 +79,7 @@ TEST(NavigateSession, SkipsAndCountsNaNUnorderedAndGapSamplesAndKeepsNavigating)
   for (std::size_t k = 0; k < samples.size(); ++k) {
     Sample s = samples[k];
     if (k == 300) s.rate_rad_s.x() = std::nan("");
+    if (k == 350) s.force_m_s2.z() = 1e308;  // finite, but it would overflow the velocity: as unusable as NaN
     if (k >= 400) s.stamp_ns += 10 * kInterval_ns;  // a gap of ten intervals before sample 400
     outcomes.push_back(session.add_rates(s.stamp_ns, s.rate_rad_s, s.force_m_s2));
     if (k == 500) outcomes.push_back(session.add_rates(s.stamp_ns, s.rate_rad_s, s.force_m_s2));  // duplicate
@@ -86,14 +87,15 @@ TEST(NavigateSession, SkipsAndCountsNaNUnorderedAndGapSamplesAndKeepsNavigating)
   }
   EXPECT_EQ(outcomes[300], SampleOutcome::kSkippedInvalid);
   EXPECT_EQ(outcomes[301], SampleOutcome::kNavigated);  // its own interval only: the NaN's stamp ended the last
+  EXPECT_EQ(outcomes[350], SampleOutcome::kSkippedInvalid);
   EXPECT_EQ(outcomes[400], SampleOutcome::kSkippedGap);
   EXPECT_EQ(outcomes[401], SampleOutcome::kNavigated);
   EXPECT_EQ(outcomes[501], SampleOutcome::kSkippedUnordered);
   EXPECT_EQ(outcomes[503], SampleOutcome::kSkippedUnordered);
-  EXPECT_EQ(session.counters().invalid, 1u);
+  EXPECT_EQ(session.counters().invalid, 2u);
   EXPECT_EQ(session.counters().gaps, 1u);
   EXPECT_EQ(session.counters().unordered, 2u);
-  EXPECT_EQ(session.counters().used, 600u - 2u);
+  EXPECT_EQ(session.counters().used, 600u - 3u);
   EXPECT_TRUE(session.navigating());
   EXPECT_TRUE(session.state().velocity_enu_m_s.allFinite());
   EXPECT_EQ(session.stamp_ns(), samples.back().stamp_ns + 10 * kInterval_ns);

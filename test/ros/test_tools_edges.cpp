@@ -300,6 +300,12 @@ TEST(ToolsUnusableValues, AllanLeavesExtremeValuesOutAndRefusesABagWithoutAnyUsa
   EXPECT_EQ(summary.exit_code, 1) << summary.output;
   EXPECT_TRUE(contains(summary.output, extreme + ", topic /imu/raw: 3 samples with NaN/Inf (or beyond +-1e100)"))
       << summary.output;
+  // navigate integrated them (exit 0, a trajectory of overflowed numbers); now refused like NaN.
+  const CommandResult navigate = run_tool("navigate", extreme + " --latitude-deg 50 --longitude-deg 30 --height-m 0 "
+                                                      "--alignment-duration-s 1 -o " + outputs + "/trajectory.csv");
+  EXPECT_EQ(navigate.exit_code, 1) << navigate.output;
+  EXPECT_TRUE(contains(navigate.output, "3 samples with NaN/Inf, a value beyond +-1e100")) << navigate.output;
+  EXPECT_FALSE(file_exists(outputs + "/trajectory.csv"));
 
   for (auto& sample : samples) {
     for (double& value : sample.values) value = std::numeric_limits<double>::quiet_NaN();

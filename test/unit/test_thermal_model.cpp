@@ -2,6 +2,8 @@
 // stamp, never by arrival), the live compensator's ordering, and the YAML files.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <cstdio>
 #include <fstream>
 #include <random>
@@ -113,6 +115,22 @@ TEST(ThermalModel, CompensatorReportsStaleTemperature) {
   EXPECT_NE(out[10].status, thermal::CompensatedSample::Status::kStale);   // 0.11 s old: held
   EXPECT_EQ(out[100].status, thermal::CompensatedSample::Status::kStale);  // 1.01 s old
   EXPECT_EQ(out[100].corrected.specific_force_m_s2, Eigen::Vector3d::UnitZ());
+}
+
+// What the node would publish must be usable: NaN, Inf and finite values beyond +-1e100 (1e308
+// passed and came out corrected) are refused, like a stamp that is not after the previous one.
+TEST(ThermalModel, CompensatorRefusesUnusableSamples) {
+  thermal::ThermalCompensator compensator(example_model(), 0.5);
+  std::vector<thermal::CompensatedSample> out;
+  compensator.add_temperature(0.0, 25.0, &out);
+  EXPECT_TRUE(compensator.add_imu({0.01, Eigen::Vector3d(1e100, 0.0, 0.0), Eigen::Vector3d::UnitZ()}, &out));
+  EXPECT_FALSE(compensator.add_imu({0.02, Eigen::Vector3d(1e308, 0.0, 0.0), Eigen::Vector3d::UnitZ()}, &out));
+  EXPECT_FALSE(compensator.add_imu({0.03, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, -1e300, 9.8)}, &out));
+  EXPECT_FALSE(compensator.add_imu({0.04, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, std::nan(""), 9.8)}, &out));
+  EXPECT_FALSE(compensator.add_imu({0.01, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()}, &out));
+  EXPECT_TRUE(compensator.add_imu({0.05, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()}, &out));
+  compensator.flush(&out);
+  EXPECT_EQ(out.size(), 2u);
 }
 
 TEST(ThermalModel, YamlRoundTripAndStrictKeys) {

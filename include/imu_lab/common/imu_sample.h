@@ -14,6 +14,9 @@ namespace imu_lab {
 // engine leaves such values out of their channel; tools that use every sample refuse them.
 constexpr double kLargestUsableImuValue = 1e100;
 inline bool is_usable_imu_value(double value) { return std::abs(value) <= kLargestUsableImuValue; }  // false for NaN
+inline bool is_usable_imu_vector(const Eigen::Vector3d& values) {
+  return is_usable_imu_value(values.x()) && is_usable_imu_value(values.y()) && is_usable_imu_value(values.z());
+}
 
 struct ImuSample {
   double stamp_s = 0.0;

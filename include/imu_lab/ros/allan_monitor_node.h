@@ -76,7 +76,6 @@ class AllanMonitorNode {
   ros::WallTimer diagnostics_timer_;
 
   std::optional<InputHealth> health_;
-  std::size_t too_large_condition_ = 0;
   std::size_t snapshot_failed_condition_ = 0;
 };
 

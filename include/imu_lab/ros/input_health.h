@@ -48,10 +48,15 @@ class InputHealth {
 
   // One sample by its header stamp: ordering and gaps; the previous stamp only moves forward.
   StampVerdict check_stamp(std::int64_t stamp_ns);
-  // A sample with a NaN/Inf value (counted; the node drops or excludes it).
+  // A sample with a NaN/Inf value, or one beyond +-1e100 (is_usable_imu_value), counted apart;
+  // the node drops or excludes it.
   void count_non_finite() { ++non_finite_.total; }
+  void count_too_large() { ++too_large_.total; }
+  // Two triads of one sample (rates, or an increment's angle and velocity): counts NaN/Inf or a
+  // value beyond +-1e100; true when every value is usable.
+  bool check_triads(const Eigen::Vector3d& first, const Eigen::Vector3d& second);
   // A sensor_msgs/Imu sample's values: counts one lacking a triad (covariance[0] = -1, the driver
-  // does not provide it) or holding NaN/Inf; true when both triads are there and finite.
+  // does not provide it), else as check_triads; true when both triads are there and usable.
   bool check_values(const ImuRecord& record);
 
   // The node's own conditions: define once (returns its id), count per occurrence.
@@ -85,7 +90,7 @@ class InputHealth {
   std::vector<double> learning_intervals_s_;
   bool have_previous_ = false;
   std::int64_t previous_stamp_ns_ = 0;
-  Count samples_, non_finite_, absent_triad_, gaps_, duplicates_, out_of_order_;
+  Count samples_, non_finite_, too_large_, absent_triad_, gaps_, duplicates_, out_of_order_;
   double window_gap_s_ = 0.0, longest_gap_s_ = 0.0;
   // Rate from the in-order intervals that are not gaps, so a gap does not look like a slow rate.
   double window_interval_sum_s_ = 0.0;

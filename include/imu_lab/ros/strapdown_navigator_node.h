@@ -51,8 +51,6 @@ class StrapdownNavigatorNode {
   void on_imu(const sensor_msgs::Imu::ConstPtr& message);
   void on_increment(const imu_lab::ImuIncrement::ConstPtr& message);
   void on_reference_height(const std_msgs::Float64::ConstPtr& message);
-  // Counts the sample's stamp and values in the diagnostics before the session sees it.
-  void check_input(const ros::Time& stamp, bool values_finite);
   void after_sample(SampleOutcome outcome, const ros::Time& stamp);
   void publish_solution();
   void report(diagnostic_updater::DiagnosticStatusWrapper& status);
