@@ -6,6 +6,7 @@
 #include "imu_lab/emulator/static_motion.h"
 #include "imu_lab/emulator/thermal_motion.h"
 #include "scenario_blocks.h"
+#include "imu_lab/common/site_limits.h"
 #include "imu_lab/common/yaml_fields.h"
 
 namespace imu_lab {
@@ -57,7 +58,14 @@ ScenarioConfig scenario_from_yaml(const YAML::Node& root, const std::string& sou
   scenario.latitude_rad = f.number("latitude_deg") * kDegToRad;
   if (std::abs(scenario.latitude_rad) > 90.0 * kDegToRad) f.fail("latitude_deg", "must lie in [-90, 90]");
   scenario.longitude_rad = f.number("longitude_deg") * kDegToRad;
+  const double longitude_deg = scenario.longitude_rad / kDegToRad;
+  if (!(longitude_deg >= site_limits::kLowestLongitudeDeg && longitude_deg <= site_limits::kHighestLongitudeDeg)) {
+    f.fail("longitude_deg", "must lie in [-180, 360]");
+  }
   scenario.height_m = f.number("height_m");
+  if (!(scenario.height_m >= site_limits::kLowestHeightM && scenario.height_m <= site_limits::kHighestHeightM)) {
+    f.fail("height_m", "must lie in [-11000, 100000] m (the deepest trench to the edge of space)");
+  }
   if (f.has("thermal")) {
     if (f.has("temperature_c")) f.fail("temperature_c", "the thermal block sets the temperature; remove this key");
     scenario.thermal = read_thermal(f.child("thermal"));

@@ -136,6 +136,11 @@ TEST(EmulatorProfiles, ScenarioRefusalsNamed) {
   EXPECT_EQ(key_of([](YAML::Node&) {}), "");
   EXPECT_EQ(key_of([](YAML::Node& r) { r["earth_model"] = "flat"; }), "earth_model");
   EXPECT_EQ(key_of([](YAML::Node& r) { r.remove("latitude_deg"); }), "latitude_deg");
+  // A site no sensor can be at used to be emulated (gravity and Earth rate of a height of 1e12 m).
+  EXPECT_EQ(key_of([](YAML::Node& r) { r["height_m"] = 1e12; }), "height_m");
+  EXPECT_EQ(key_of([](YAML::Node& r) { r["height_m"] = -20000.0; }), "height_m");
+  EXPECT_EQ(key_of([](YAML::Node& r) { r["longitude_deg"] = 1e6; }), "longitude_deg");
+  EXPECT_EQ(key_of([](YAML::Node& r) { r["longitude_deg"] = 359.0; }), "") << "east-only longitudes are common";
   EXPECT_EQ(key_of([](YAML::Node& r) { r["yaw_deg"] = "north"; }), "yaw_deg");
   EXPECT_EQ(key_of([](YAML::Node& r) { r["speed_m_s"] = 3.0; }), "speed_m_s");
 }
