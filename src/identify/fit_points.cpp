@@ -9,8 +9,7 @@
 namespace imu_lab {
 namespace identify {
 
-std::vector<FitPoint> select_octave_points(const std::vector<allan::StabilityPoint>& points,
-                                           double min_ratio) {
+std::vector<FitPoint> select_fit_points(const std::vector<allan::StabilityPoint>& points, double min_ratio) {
   std::vector<FitPoint> kept;
   double previous_tau_s = 0.0;
   for (const auto& point : points) {
@@ -20,20 +19,14 @@ std::vector<FitPoint> select_octave_points(const std::vector<allan::StabilityPoi
                        std::to_string(previous_tau_s) + " s)");
     }
     previous_tau_s = point.tau_s;
-    const bool usable = std::isfinite(point.deviation) && point.deviation > 0.0 &&
-                        std::isfinite(point.edf) && point.edf > 0.0;
+    const bool usable = std::isfinite(point.deviation) && point.deviation > 0.0 && point.averaging_factor >= 1;
     if (!usable) continue;
     if (!kept.empty() && point.tau_s < min_ratio * kept.back().tau_s) continue;
-    // The EDF of one record's overlapping AVAR falls with tau for every noise type; a rise means
-    // the noise-type estimate behind it failed on the few long-tau samples (a flicker-PM call
-    // at 65 s in a Markov + white record gave 10x the EDF of its neighbours). Cap it.
-    const double edf = kept.empty() ? point.edf : std::min(point.edf, kept.back().edf);
-    kept.push_back({point.tau_s, point.deviation * point.deviation, edf});
+    kept.push_back({point.tau_s, point.averaging_factor, point.deviation * point.deviation});
   }
   if (kept.size() < 3) {
-    throw InputError("noise identification: need at least 3 usable stability points an octave "
-                     "apart (positive deviation and EDF), got " + std::to_string(kept.size()) +
-                     "; record a longer series or pass more averaging factors");
+    throw InputError("noise identification: need at least 3 usable stability points (positive deviation), got " +
+                     std::to_string(kept.size()) + "; record a longer series or pass more averaging factors");
   }
   return kept;
 }

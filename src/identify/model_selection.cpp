@@ -15,8 +15,8 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // The same parameters with every amplitude multiplied by `factor` (shapes untouched).
-std::vector<double> scaled_amplitudes(const ModelStructure& structure,
-                                      std::vector<double> log_parameters, double factor) {
+std::vector<double> scaled_amplitudes(const ModelStructure& structure, std::vector<double> log_parameters,
+                                      double factor) {
   for (size_t i = 0; i < structure.slots.size(); ++i) {
     log_parameters[parameter_offset(structure, static_cast<int>(i))] += std::log(factor);
   }
@@ -24,35 +24,42 @@ std::vector<double> scaled_amplitudes(const ModelStructure& structure,
 }
 
 SolveOutcome best_of(const std::vector<FitPoint>& points, const ModelStructure& structure,
-                     std::vector<std::vector<double>> starts, int max_solves,
-                     const DataSpan& span, const SolverSettings& settings) {
+                     const std::vector<std::vector<double>>& starts, int max_solves, const DataSpan& span,
+                     const MomentWeights& weights) {
   std::vector<std::pair<double, size_t>> ranked;
-  for (size_t i = 0; i < starts.size(); ++i) {
-    ranked.push_back({model_cost(points, structure, starts[i], settings), i});
-  }
+  for (size_t i = 0; i < starts.size(); ++i) ranked.push_back({model_cost(points, structure, starts[i], weights), i});
   std::sort(ranked.begin(), ranked.end());
   SolveOutcome best;
   best.cost = kInfinity;
   const size_t solves = std::min(ranked.size(), static_cast<size_t>(max_solves));
   for (size_t r = 0; r < solves; ++r) {
     if (!std::isfinite(ranked[r].first)) continue;
-    SolveOutcome outcome =
-        solve_model(points, structure, starts[ranked[r].second], span, settings);
+    SolveOutcome outcome = solve_model(points, structure, starts[ranked[r].second], span, weights);
     if (outcome.usable && outcome.cost < best.cost) best = outcome;
   }
   return best;
 }
 
-SolveOutcome fit_with_new_slot(const std::vector<FitPoint>& points, const ModelStructure& base,
+bool is_extra_term(TermKind kind) {
+  return kind == TermKind::kMarkov || kind == TermKind::kSinusoid || kind == TermKind::kZeroDcFamily ||
+         kind == TermKind::kResonance;
+}
+
+struct SelectionContext {
+  const std::vector<FitPoint>& points;
+  const DataSpan& span;
+  const FitOptions& options;
+  const MomentWeights& weights;
+  int point_count;
+};
+
+SolveOutcome fit_with_new_slot(const SelectionContext& context, const ModelStructure& base,
                                const std::vector<double>& base_parameters, const TermSlot& slot,
-                               const DataSpan& span, const FitOptions& options,
-                               const SolverSettings& settings, ModelStructure* extended) {
+                               const MomentWeights& weights, ModelStructure* extended) {
   *extended = base;
   extended->slots.push_back(slot);
   std::vector<std::vector<double>> starts;
-  const auto slot_starts = new_slot_starts(slot, points, span, base.white_rate_corner_hz,
-                                           options.envelope_fractions);
-  for (const auto& slot_start : slot_starts) {
+  for (const auto& slot_start : new_slot_starts(slot, context.points, context.span, context.options.envelope_fractions)) {
     for (double base_factor : {1.0, 0.5}) {
       if (base.slots.empty() && base_factor != 1.0) continue;
       std::vector<double> start = scaled_amplitudes(base, base_parameters, base_factor);
@@ -60,20 +67,18 @@ SolveOutcome fit_with_new_slot(const std::vector<FitPoint>& points, const ModelS
       starts.push_back(start);
     }
   }
-  return best_of(points, *extended, starts, options.solves_per_candidate, span, settings);
+  return best_of(context.points, *extended, starts, context.options.solves_per_candidate, context.span, weights);
 }
 
 // A term driven to a negligible amplitude has no gradient left and stays there (a local
 // optimum the next step inherits). Restart each term in turn from fractions of its envelope.
-SolveOutcome polish(const std::vector<FitPoint>& points, const ModelStructure& structure,
-                    const SolveOutcome& fitted, const DataSpan& span,
-                    const SolverSettings& settings) {
+SolveOutcome polish(const SelectionContext& context, const ModelStructure& structure, const SolveOutcome& fitted,
+                    const MomentWeights& weights) {
   SolveOutcome best = fitted;
   const NoiseModel model = model_from_log_parameters(structure, fitted.log_parameters);
   std::vector<std::vector<double>> starts;
   for (size_t i = 0; i < structure.slots.size(); ++i) {
-    const double envelope = envelope_amplitude(model.terms[i].kind, model.terms[i].shape, points,
-                                               structure.white_rate_corner_hz);
+    const double envelope = envelope_amplitude(model.terms[i], context.points);
     if (!(envelope > 0.0) || !std::isfinite(envelope)) continue;
     for (double fraction : {0.3, 0.1}) {
       std::vector<double> start = fitted.log_parameters;
@@ -82,23 +87,10 @@ SolveOutcome polish(const std::vector<FitPoint>& points, const ModelStructure& s
     }
   }
   const SolveOutcome restarted =
-      best_of(points, structure, starts, static_cast<int>(starts.size()), span, settings);
+      best_of(context.points, structure, starts, static_cast<int>(starts.size()), context.span, weights);
   if (restarted.usable && restarted.cost < best.cost - 1e-9) best = restarted;
   return best;
 }
-
-bool is_extra_term(TermKind kind) {
-  return kind == TermKind::kMarkov || kind == TermKind::kSinusoid ||
-         kind == TermKind::kZeroDcFamily;
-}
-
-struct SelectionContext {
-  const std::vector<FitPoint>& points;
-  const DataSpan& span;
-  const FitOptions& options;
-  SolverSettings settings;
-  int point_count;
-};
 
 struct Addition {
   SolveOutcome outcome;  // cost infinity when no candidate could be fitted
@@ -108,17 +100,23 @@ struct Addition {
 
 // The candidate whose addition to `base` fits best (extra terms only if allowed).
 Addition best_addition(const SelectionContext& context, const ModelStructure& base,
-                       const std::vector<double>& base_parameters,
-                       const std::vector<TermSlot>& candidates, bool allow_extras) {
+                       const std::vector<double>& base_parameters, const std::vector<TermSlot>& candidates,
+                       bool allow_extras, const MomentWeights& weights) {
   Addition best;
   best.outcome.cost = kInfinity;
+  double best_score = kInfinity;
   for (size_t c = 0; c < candidates.size(); ++c) {
     if (is_extra_term(candidates[c].kind) && !allow_extras) continue;
     ModelStructure extended;
     const SolveOutcome outcome =
-        fit_with_new_slot(context.points, base, base_parameters, candidates[c], context.span,
-                          context.options, context.settings, &extended);
-    if (outcome.usable && outcome.cost < best.outcome.cost) {
+        fit_with_new_slot(context, base, base_parameters, candidates[c], weights, &extended);
+    if (!outcome.usable) continue;
+    // The distance left plus half the candidate's threshold: among candidates of different
+    // parameter counts (a sinusoid or a resonance for one peak) the one whose fall of J clears
+    // its own threshold by most wins.
+    const double score = outcome.cost + 0.5 * slot_lr_threshold(context.options, candidates[c], context.point_count);
+    if (score < best_score) {
+      best_score = score;
       best.outcome = outcome;
       best.structure = extended;
       best.index = c;
@@ -127,88 +125,114 @@ Addition best_addition(const SelectionContext& context, const ModelStructure& ba
   return best;
 }
 
-// Forward, in two tiers: the standards' power-law terms first (the hypothesis a reader
-// expects), then Markov, sinusoid and zero-DC terms when the data still ask for them. A
-// flexible two-parameter term admitted first would otherwise absorb a mixture of simple terms
-// (a long Markov mimicking B + K) and block them.
-void forward_pass(const SelectionContext& context, std::vector<TermSlot>* remaining,
-                  SelectedModel* current) {
+void accept(const ModelStructure& structure, const SolveOutcome& outcome, SelectedModel* current) {
+  current->structure = structure;
+  current->log_parameters = outcome.log_parameters;
+  current->cost = outcome.cost;
+}
+
+// Forward, in two tiers: the standards' power-law terms first (the hypothesis a reader expects),
+// then Markov, sinusoid, resonance and zero-DC terms when the data still ask for them. A flexible
+// term admitted first would otherwise absorb a mixture of simple terms and block them.
+bool front_end_pass(const SelectionContext& context, SelectedModel* current);
+
+void forward_pass(const SelectionContext& context, std::vector<TermSlot>* remaining, SelectedModel* current) {
   for (bool extras : {false, true}) {
+    // The front end belongs to the white noise: decided before a Markov term can stand in for it.
+    if (extras) front_end_pass(context, current);
     while (true) {
-      const Addition addition = best_addition(context, current->structure, current->log_parameters,
-                                        *remaining, extras);
+      const Addition addition = best_addition(context, current->structure, current->log_parameters, *remaining,
+                                              extras, context.weights);
       if (!std::isfinite(addition.outcome.cost)) break;
-      const SolveOutcome best = polish(context.points, addition.structure, addition.outcome,
-                                       context.span, context.settings);
-      const ModelStructure& best_structure = addition.structure;
-      const size_t best_index = addition.index;
-      const TermSlot& added = (*remaining)[best_index];
-      SelectionStep step{current->structure.slots.empty() ? "start" : "add",
-                         term_kind_name(added.kind), 0.0, 0.0};
+      const SolveOutcome best = polish(context, addition.structure, addition.outcome, context.weights);
+      const TermSlot& added = (*remaining)[addition.index];
+      SelectionStep step{current->structure.slots.empty() ? "start" : "add", term_kind_name(added.kind), 0.0, 0.0};
       if (!current->structure.slots.empty()) {
         step.lr_statistic = 2.0 * (current->cost - best.cost);
         step.threshold = slot_lr_threshold(context.options, added, context.point_count);
         if (!(step.lr_statistic > step.threshold)) break;
       }
       current->steps.push_back(step);
-      current->structure = best_structure;
-      current->log_parameters = best.log_parameters;
-      current->cost = best.cost;
-      remaining->erase(remaining->begin() + best_index);
+      remaining->erase(remaining->begin() + addition.index);
+      accept(addition.structure, best, current);
+      // A peak or hump just modelled may have been hiding the front end's roll-off.
+      if (extras) front_end_pass(context, current);
     }
   }
 }
 
+// The white rate noise seen through a first-order front end (its corner fitted), if that lowers
+// J significantly: the anti-alias filter that pulls the leftmost points down.
+bool front_end_pass(const SelectionContext& context, SelectedModel* current) {
+  if (!context.options.allow_front_end || context.options.front_end_corner_hz > 0.0) return false;
+  for (size_t i = 0; i < current->structure.slots.size(); ++i) {
+    const TermSlot& slot = current->structure.slots[i];
+    if (slot.kind != TermKind::kWhiteRate || slot.shape_free) continue;
+    ModelStructure upgraded = current->structure;
+    upgraded.slots[i].shape_free = true;
+    const int offset = parameter_offset(current->structure, static_cast<int>(i));
+    std::vector<std::vector<double>> starts;
+    for (const Term& shape : start_shapes(upgraded.slots[i], context.points, context.span)) {
+      std::vector<double> start = current->log_parameters;
+      start.insert(start.begin() + offset + 1, std::log(shape.shape));
+      starts.push_back(start);
+    }
+    const SolveOutcome outcome = best_of(context.points, upgraded, starts, static_cast<int>(starts.size()),
+                                         context.span, context.weights);
+    if (!outcome.usable) return false;
+    const double statistic = 2.0 * (current->cost - outcome.cost);
+    const double threshold = slot_lr_threshold(context.options, upgraded.slots[i], context.point_count);
+    if (!(statistic > threshold)) return false;
+    current->steps.push_back({"front end", term_kind_name(slot.kind), statistic, threshold});
+    accept(upgraded, outcome, current);
+    return true;
+  }
+  return false;
+}
+
 // Backward: drop the least significant term while its removal is not significant; the dropped
-// slots go back to `remaining`. Leaves each kept slot's removal statistic; true if any dropped.
-bool backward_pass(const SelectionContext& context, std::vector<TermSlot>* remaining,
-                   SelectedModel* current) {
+// slots go back to `remaining`. True if any was dropped.
+bool backward_pass(const SelectionContext& context, std::vector<TermSlot>* remaining, SelectedModel* current) {
   bool removed_any = false;
-  while (true) {
+  while (current->structure.slots.size() > 1) {
     const int slot_count = static_cast<int>(current->structure.slots.size());
-    current->removal_lr_statistics.assign(slot_count, kInfinity);
-    if (slot_count <= 1) break;
     double worst_margin = kInfinity;
     int worst_slot = -1;
+    double worst_statistic = 0.0;
     SolveOutcome worst_outcome;
     ModelStructure worst_structure;
     for (int i = 0; i < slot_count; ++i) {
       ModelStructure reduced = current->structure;
       std::vector<double> reduced_parameters = current->log_parameters;
       remove_slot(reduced, reduced_parameters, i);
-      const SolveOutcome outcome = refit_structure(context.points, reduced, reduced_parameters,
-                                                   context.span, context.settings);
+      const SolveOutcome outcome =
+          refit_structure(context.points, reduced, reduced_parameters, context.span, context.weights);
       if (!outcome.usable) continue;
-      const double lr = 2.0 * (outcome.cost - current->cost);
-      current->removal_lr_statistics[i] = lr;
-      const double margin = lr - slot_lr_threshold(context.options, current->structure.slots[i],
-                                                   context.point_count);
+      const double statistic = 2.0 * (outcome.cost - current->cost);
+      const double margin =
+          statistic - slot_lr_threshold(context.options, current->structure.slots[i], context.point_count);
       if (margin < worst_margin) {
         worst_margin = margin;
         worst_slot = i;
+        worst_statistic = statistic;
         worst_outcome = outcome;
         worst_structure = reduced;
       }
     }
     if (worst_slot < 0 || worst_margin >= 0.0) break;
     const TermSlot removed = current->structure.slots[worst_slot];
-    current->steps.push_back(
-        {"remove", term_kind_name(removed.kind), current->removal_lr_statistics[worst_slot],
-         slot_lr_threshold(context.options, removed, context.point_count)});
+    current->steps.push_back({"remove", term_kind_name(removed.kind), worst_statistic,
+                              slot_lr_threshold(context.options, removed, context.point_count)});
     remaining->push_back(removed);
-    current->structure = worst_structure;
-    current->log_parameters = worst_outcome.log_parameters;
-    current->cost = worst_outcome.cost;
+    accept(worst_structure, worst_outcome, current);
     removed_any = true;
   }
   return removed_any;
 }
 
-// Swap: an extra term (Markov, sinusoid, zero-DC) stays only if no absent standard term does
-// its job nearly as well (within its own threshold): a sinusoid near Nyquist can stand in for
-// white noise on the first points, and the standard term is the reading a user expects.
-bool swap_pass(const SelectionContext& context, std::vector<TermSlot>* remaining,
-               SelectedModel* current) {
+// Swap: an extra term stays only if no absent standard term does its job nearly as well (within
+// its own threshold): the standard term is the reading a user expects.
+bool swap_pass(const SelectionContext& context, std::vector<TermSlot>* remaining, SelectedModel* current) {
   for (size_t i = 0; i < current->structure.slots.size(); ++i) {
     const TermSlot extra = current->structure.slots[i];
     if (!is_extra_term(extra.kind)) continue;
@@ -216,26 +240,44 @@ bool swap_pass(const SelectionContext& context, std::vector<TermSlot>* remaining
     std::vector<double> reduced_parameters = current->log_parameters;
     remove_slot(reduced, reduced_parameters, static_cast<int>(i));
     const Addition addition =
-        best_addition(context, reduced, reduced_parameters, *remaining, false);
-    const SolveOutcome& best = addition.outcome;
-    const ModelStructure& best_structure = addition.structure;
-    const size_t best_index = addition.index;
-    const double lr = 2.0 * (best.cost - current->cost);
+        best_addition(context, reduced, reduced_parameters, *remaining, false, context.weights);
+    if (!std::isfinite(addition.outcome.cost)) continue;
+    const double statistic = 2.0 * (addition.outcome.cost - current->cost);
     const double threshold = slot_lr_threshold(context.options, extra, context.point_count);
-    if (!(lr < threshold)) continue;
+    if (!(statistic < threshold)) continue;
     current->steps.push_back({"swap " + term_kind_name(extra.kind) + " for",
-                              term_kind_name((*remaining)[best_index].kind), lr, threshold});
-    remaining->erase(remaining->begin() + best_index);
+                              term_kind_name((*remaining)[addition.index].kind), statistic, threshold});
+    remaining->erase(remaining->begin() + addition.index);
     remaining->push_back(extra);
-    current->structure = best_structure;
-    current->log_parameters = best.log_parameters;
-    current->cost = best.cost;
+    accept(addition.structure, addition.outcome, current);
     return true;
   }
   return false;
 }
 
+// Each slot's removal statistic in the final model, under its final weights.
+void removal_statistics(const SelectionContext& context, SelectedModel* current) {
+  const int slot_count = static_cast<int>(current->structure.slots.size());
+  current->removal_lr_statistics.assign(slot_count, kInfinity);
+  current->removal_thresholds.assign(slot_count, 0.0);
+  for (int i = 0; i < slot_count; ++i) {
+    current->removal_thresholds[i] =
+        slot_lr_threshold(context.options, current->structure.slots[i], context.point_count);
+    if (slot_count == 1) continue;
+    ModelStructure reduced = current->structure;
+    std::vector<double> reduced_parameters = current->log_parameters;
+    remove_slot(reduced, reduced_parameters, i);
+    const SolveOutcome outcome =
+        refit_structure(context.points, reduced, reduced_parameters, context.span, context.weights);
+    if (outcome.usable) current->removal_lr_statistics[i] = 2.0 * (outcome.cost - current->cost);
+  }
+}
+
 }  // namespace
+
+bool is_borderline(double statistic, double threshold) {
+  return std::isfinite(statistic) && statistic > 0.5 * threshold && statistic < 2.0 * threshold;
+}
 
 std::vector<TermSlot> candidate_slots(const FitOptions& options, const DataSpan& span) {
   std::vector<TermSlot> slots;
@@ -243,25 +285,24 @@ std::vector<TermSlot> candidate_slots(const FitOptions& options, const DataSpan&
     if (allowed) slots.push_back({kind, has_shape(kind), 0.0});
   };
   add(options.allow_white_angle, TermKind::kWhiteAngle);
-  add(options.allow_white_rate, TermKind::kWhiteRate);
+  if (options.allow_white_rate) {
+    // Plain white noise first; the front end is a step of its own (front_end_pass), unless its
+    // corner is known.
+    slots.push_back({TermKind::kWhiteRate, false, options.front_end_corner_hz});
+  }
   if (options.allow_bias_instability) {
     TermSlot bias{TermKind::kBiasInstability, options.bias_cutoff == BiasCutoff::kFitted, 0.0};
-    bias.fixed_shape = options.bias_cutoff == BiasCutoff::kGiven ? options.bias_cutoff_hz
-                                                                 : 1.0 / (2.0 * span.tau0_s);
+    bias.fixed_shape =
+        options.bias_cutoff == BiasCutoff::kGiven ? options.bias_cutoff_hz : 1.0 / (2.0 * span.tau0_s);
     slots.push_back(bias);
   }
   add(options.allow_random_walk, TermKind::kRandomWalk);
   add(options.allow_rate_ramp, TermKind::kRateRamp);
   for (int i = 0; i < options.max_markov_terms; ++i) add(true, TermKind::kMarkov);
-  add(options.allow_sinusoid, TermKind::kSinusoid);
+  for (int i = 0; i < options.max_sinusoids; ++i) add(true, TermKind::kSinusoid);
+  for (int i = 0; i < options.max_resonances; ++i) add(true, TermKind::kResonance);
   add(options.allow_zero_dc_family, TermKind::kZeroDcFamily);
   return slots;
-}
-
-SolverSettings solver_settings(const FitOptions& options) {
-  SolverSettings settings;
-  settings.robust_loss_scale = options.robust_loss_scale;
-  return settings;
 }
 
 double slot_lr_threshold(const FitOptions& options, const TermSlot& slot, int point_count) {
@@ -270,23 +311,34 @@ double slot_lr_threshold(const FitOptions& options, const TermSlot& slot, int po
 }
 
 SolveOutcome refit_structure(const std::vector<FitPoint>& points, const ModelStructure& structure,
-                             const std::vector<double>& start, const DataSpan& span,
-                             const SolverSettings& settings) {
+                             const std::vector<double>& start, const DataSpan& span, const MomentWeights& weights) {
   std::vector<std::vector<double>> starts;
   for (double factor : {1.0, 0.7, 1.4}) starts.push_back(scaled_amplitudes(structure, start, factor));
-  return best_of(points, structure, starts, static_cast<int>(starts.size()), span, settings);
+  return best_of(points, structure, starts, static_cast<int>(starts.size()), span, weights);
 }
 
-SelectedModel select_model(const std::vector<FitPoint>& points, const DataSpan& span,
-                           const FitOptions& options) {
-  const SelectionContext context{points, span, options, solver_settings(options),
-                                 static_cast<int>(points.size())};
+SelectedModel select_model(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
+                           const MomentWeights& weights, double output_quantization_density,
+                           const SelectedModel* start) {
+  const SelectionContext context{points, span, options, weights, static_cast<int>(points.size())};
   std::vector<TermSlot> remaining = candidate_slots(options, span);
   SelectedModel current;
-  current.structure.white_rate_corner_hz = options.white_rate_corner_hz;
+  current.structure.output_quantization_density = output_quantization_density;
   current.cost = kInfinity;
-  // Greedy forward selection depends on the order terms enter (a sinusoid admitted before a
-  // second Markov can stand in for white noise); after a removal or swap, search again.
+  if (start != nullptr) {
+    current.structure = start->structure;
+    current.steps = start->steps;
+    for (const TermSlot& used : current.structure.slots) {
+      const auto match = std::find_if(remaining.begin(), remaining.end(),
+                                      [&](const TermSlot& slot) { return slot.kind == used.kind; });
+      if (match != remaining.end()) remaining.erase(match);
+    }
+    const SolveOutcome refit = refit_structure(points, current.structure, start->log_parameters, span, weights);
+    current.log_parameters = refit.usable ? refit.log_parameters : start->log_parameters;
+    current.cost = model_cost(points, current.structure, current.log_parameters, weights);
+  }
+  // Greedy forward selection depends on the order terms enter; after a removal or swap, search
+  // again.
   constexpr int kMaxRounds = 3;
   for (int round = 0; round < kMaxRounds; ++round) {
     forward_pass(context, &remaining, &current);
@@ -295,18 +347,34 @@ SelectedModel select_model(const std::vector<FitPoint>& points, const DataSpan& 
     if (swapped) backward_pass(context, &remaining, &current);
     if (!removed && !swapped) break;
   }
-
-  // Canonical order, carrying the removal statistics along.
-  NoiseModel tagged = model_from_log_parameters(current.structure, current.log_parameters);
-  std::vector<std::pair<Term, double>> pairs;
-  for (size_t i = 0; i < tagged.terms.size(); ++i) {
-    pairs.push_back({tagged.terms[i], current.removal_lr_statistics[i]});
-  }
-  std::stable_sort(pairs.begin(), pairs.end(),
-                   [](const auto& a, const auto& b) { return term_order_less(a.first, b.first); });
   canonical_order(current.structure, current.log_parameters);
-  for (size_t i = 0; i < pairs.size(); ++i) current.removal_lr_statistics[i] = pairs[i].second;
+  current.weights = weights;
+  removal_statistics(context, &current);
   return current;
+}
+
+void settle_weights(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
+                    OavarCovariance& covariance, double discrepancy, SelectedModel* selected) {
+  constexpr int kMaxIterations = 4;
+  constexpr double kSettled = 0.05;
+  for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
+    const NoiseModel model = model_from_log_parameters(selected->structure, selected->log_parameters);
+    selected->weights = moment_weights(points, model, covariance, discrepancy);
+    const SolveOutcome refit =
+        refit_structure(points, selected->structure, selected->log_parameters, span, selected->weights);
+    if (!refit.usable) break;
+    const NoiseModel refitted = model_from_log_parameters(selected->structure, refit.log_parameters);
+    double largest_change = 0.0;
+    for (const FitPoint& point : points) {
+      largest_change =
+          std::max(largest_change, std::abs(model_avar(refitted, point.tau_s) / model_avar(model, point.tau_s) - 1.0));
+    }
+    selected->log_parameters = refit.log_parameters;
+    if (largest_change < kSettled) break;
+  }
+  selected->cost = model_cost(points, selected->structure, selected->log_parameters, selected->weights);
+  const SelectionContext context{points, span, options, selected->weights, static_cast<int>(points.size())};
+  removal_statistics(context, selected);
 }
 
 }  // namespace identify

@@ -19,7 +19,7 @@ PartialCurves partial_curves(const FitResult& fit,
     curves.total_deviation.push_back(std::sqrt(model_avar(fit.model, point.tau_s)));
     for (size_t i = 0; i < fit.model.terms.size(); ++i) {
       curves.term_deviations[i].push_back(std::sqrt(
-          term_avar(fit.model.terms[i], point.tau_s, fit.model.white_rate_corner_hz)));
+          term_avar(fit.model.terms[i], point.tau_s)));
     }
   }
   return curves;

@@ -1,11 +1,19 @@
-// One maximum-likelihood fit of a fixed model structure with Ceres: residuals are the signed
-// deviance roots of the octave points (avar_likelihood.h), parameters their logarithms, a Huber
-// loss limits what a few bad points can do. Shapes are bounded to what the data can express.
+// One fit of a fixed model structure by the generalized method of wavelet moments (Guerrier,
+// Skaloud, Stebler and Victoria-Feser, JASA 2013; doc/models.md): the measured AVARs nu are
+// matched to the model's nu(theta) in the distance
+//   J(theta) = (nu - nu(theta))' Omega^-1 (nu - nu(theta)),
+// where Omega is the covariance of the estimates (avar_covariance.h) at a previous model, plus a
+// relative discrepancy variance for what no model of this family describes (a real front end
+// that is not exactly first order, for instance). With Omega fixed, J is a plain weighted least
+// squares: nu(theta) enters linearly in the residual, so the estimator is unbiased, and the
+// difference of J between nested models is a chi-squared statistic (the GMM distance test).
+// Parameters are logarithms; shapes are bounded to what the data can express.
 #pragma once
 
 #include <Eigen/Core>
 #include <vector>
 
+#include "imu_lab/identify/avar_covariance.h"
 #include "imu_lab/identify/fit_points.h"
 #include "imu_lab/identify/model_structure.h"
 
@@ -16,43 +24,59 @@ namespace identify {
 struct DataSpan {
   double tau0_s = 0.0;
   double record_length_s = 0.0;
-  double tau_min_s = 0.0;  // smallest fitted tau
-  double tau_max_s = 0.0;  // largest fitted tau
+  long long sample_count = 0;  // samples behind the curve
+  double tau_min_s = 0.0;      // smallest fitted tau
+  double tau_max_s = 0.0;      // largest fitted tau
+  double smallest_avar = 0.0;  // of the fitted points
+  double largest_avar = 0.0;
 };
 
-struct SolverSettings {
-  // Huber threshold on the deviance residual (a standard-normal-like quantity); 0 = no loss.
-  double robust_loss_scale = 3.0;
-  int max_iterations = 100;
+// Omega^-1/2 for the fit points: residuals r = L^-1 (nu - nu(theta)) with Omega = L L'.
+struct MomentWeights {
+  Eigen::MatrixXd whitening;  // L^-1
+  double discrepancy = 0.0;   // relative standard deviation added to every point
 };
+
+// The weights under `model` (its covariance of the estimates, from `covariance`, which holds the
+// fit points' averaging factors, plus (discrepancy * nu_model)^2 on the diagonal). If the
+// covariance is numerically singular a ridge of 1e-9 of its diagonal is added. Throws
+// std::runtime_error if even that fails.
+MomentWeights moment_weights(const std::vector<FitPoint>& points, const NoiseModel& model,
+                             OavarCovariance& covariance, double discrepancy);
+
+// The averaging factors of the points, in order (what an OavarCovariance for them needs).
+std::vector<int> averaging_factors(const std::vector<FitPoint>& points);
 
 struct SolveOutcome {
   std::vector<double> log_parameters;
-  double cost = 0.0;  // 1/2 sum rho(r^2): the robustified negative log-likelihood + const
+  double cost = 0.0;  // J / 2
   bool usable = false;
 };
 
-// Bounds of each ln-parameter: amplitudes free, Markov T_c in [tau_min / 4, 2 T], sinusoid and
-// bias cutoff frequencies in [1 / T, 1 / (2 tau0)], zero-DC beta in [tau0, T].
+// A resonance narrower than this (relative to f_n) is a line: a sinusoid describes it.
+constexpr double kSmallestResonanceRelativeWidth = 0.02;
+
+// Bounds of each ln-parameter: amplitudes in a wide finite box (see the source); Markov T_c in
+// [tau_min / 4, 2 T]; sinusoid and bias cutoff frequencies in [1 / T, 1 / (2 tau0)]; resonance
+// f_n in [0.05 / tau0, 1 / (2 tau0)] and width / f_n in [0.02, 1.9]; a white rate's front-end
+// corner in [0.01 / tau0, 5 / tau0]; zero-DC beta in [tau0, T].
 void log_parameter_bounds(const ModelStructure& structure, const DataSpan& span,
                           std::vector<double>* lower, std::vector<double>* upper);
 
-// Solves from `start` (clamped into the bounds); parameters listed in held_fixed keep their
-// start values (profile likelihood).
+// Minimises J from `start` (clamped into the bounds); parameters listed in held_fixed keep their
+// start values (profiles).
 SolveOutcome solve_model(const std::vector<FitPoint>& points, const ModelStructure& structure,
                          const std::vector<double>& start, const DataSpan& span,
-                         const SolverSettings& settings,
-                         const std::vector<int>& held_fixed = {});
+                         const MomentWeights& weights, const std::vector<int>& held_fixed = {});
 
-// The robustified cost at given parameters, as solve_model() reports it.
+// J / 2 at given parameters.
 double model_cost(const std::vector<FitPoint>& points, const ModelStructure& structure,
-                  const std::vector<double>& log_parameters, const SolverSettings& settings);
+                  const std::vector<double>& log_parameters, const MomentWeights& weights);
 
-// Ceres' covariance of the ln-parameters at `log_parameters` (inverse Gauss-Newton Hessian of
-// the likelihood on the octave points, pseudo-inverse when rank deficient). False if Ceres fails.
-bool log_parameter_covariance(const std::vector<FitPoint>& points, const ModelStructure& structure,
-                              const std::vector<double>& log_parameters,
-                              const SolverSettings& settings, Eigen::MatrixXd* covariance);
+// Covariance of the ln-parameters, (G' G)^-1 with G the whitened Jacobian (the GMM sandwich
+// collapses to this with the optimal weights); pseudo-inverse when rank deficient.
+Eigen::MatrixXd log_parameter_covariance(const std::vector<FitPoint>& points, const ModelStructure& structure,
+                                         const std::vector<double>& log_parameters, const MomentWeights& weights);
 
 }  // namespace identify
 }  // namespace imu_lab
