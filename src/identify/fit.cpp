@@ -9,6 +9,7 @@
 
 #include "imu_lab/identify/avar_covariance.h"
 #include "imu_lab/identify/avar_likelihood.h"
+#include "imu_lab/identify/descriptive_model.h"
 #include "imu_lab/identify/fit_warnings.h"
 #include "imu_lab/identify/profile_likelihood.h"
 #include "imu_lab/identify/start_values.h"
@@ -21,38 +22,19 @@ namespace {
 // The first selection assumes the model describes the curve to 1 % in variance (the band's
 // +-1 % floor in deviation is twice that); later rounds use the estimated discrepancy.
 constexpr double kInitialDiscrepancy = 0.01;
-constexpr int kMaxSelectionRounds = 3;
 constexpr double kLargestDiscrepancy = 0.1;
-
-// A rough description of the curve that gives the first weights: the five standard terms under
-// weights from white-noise-like degrees of freedom, 1.5 T / tau.
-NoiseModel rough_model(const std::vector<FitPoint>& points, const DataSpan& span, double quantization) {
-  ModelStructure structure;
-  structure.output_quantization_density = quantization;
-  std::vector<double> start;
-  for (TermKind kind : {TermKind::kWhiteAngle, TermKind::kWhiteRate, TermKind::kBiasInstability,
-                        TermKind::kRandomWalk, TermKind::kRateRamp}) {
-    const double shape = kind == TermKind::kBiasInstability ? 1.0 / (2.0 * span.tau0_s) : 0.0;
-    structure.slots.push_back({kind, false, shape});
-    start.push_back(std::log(0.3 * envelope_amplitude(Term{kind, 1.0, shape, 0.0}, points)));
-  }
-  MomentWeights weights;
-  weights.whitening = Eigen::MatrixXd::Zero(points.size(), points.size());
-  for (size_t k = 0; k < points.size(); ++k) {
-    const double edf = std::max(2.0, 1.5 * span.record_length_s / points[k].tau_s);
-    weights.whitening(k, k) = 1.0 / (points[k].avar * std::sqrt(2.0 / edf));
-  }
-  const SolveOutcome outcome = solve_model(points, structure, start, span, weights);
-  return model_from_log_parameters(structure, outcome.usable ? outcome.log_parameters : start);
-}
 
 double distance_at(const std::vector<FitPoint>& points, const Eigen::MatrixXd& model_covariance,
                    const Eigen::VectorXd& model_values, double discrepancy) {
-  Eigen::MatrixXd covariance = model_covariance;
+  Eigen::MatrixXd covariance(points.size(), points.size());
   Eigen::VectorXd residual(points.size());
   for (size_t k = 0; k < points.size(); ++k) {
-    covariance(k, k) += std::pow(discrepancy * model_values(k), 2);
-    residual(k) = points[k].avar - model_values(k);
+    for (size_t j = 0; j < points.size(); ++j) {
+      covariance(k, j) = model_covariance(k, j) / (model_values(k) * model_values(j));
+    }
+    residual(k) = std::log(points[k].avar) - mean_log_scaled_chi_squared(2.0 / covariance(k, k)) -
+                  std::log(model_values(k));
+    covariance(k, k) += discrepancy * discrepancy;
   }
   const Eigen::LDLT<Eigen::MatrixXd> factor(covariance);
   return residual.dot(factor.solve(residual));
@@ -66,37 +48,21 @@ double estimate_discrepancy(const std::vector<FitPoint>& points, const NoiseMode
   Eigen::VectorXd values(points.size());
   for (size_t k = 0; k < points.size(); ++k) values(k) = model_avar(model, points[k].tau_s);
   const Eigen::MatrixXd covariance = model_covariance.covariance(model);
+  const auto distance = [&](double discrepancy) { return distance_at(points, covariance, values, discrepancy); };
   const double dof = std::max(1, degrees_of_freedom);
-  if (distance_at(points, covariance, values, 0.0) <= dof + 2.0 * std::sqrt(2.0 * dof)) return 0.0;
+  if (distance(0.0) <= dof + 2.0 * std::sqrt(2.0 * dof)) return 0.0;
   // Beyond 10 % in AVAR the model does not describe the curve at all; the band check says where.
   double low = std::log(1e-6), high = std::log(kLargestDiscrepancy);
-  if (distance_at(points, covariance, values, std::exp(high)) > dof) return std::exp(high);
+  if (distance(std::exp(high)) > dof) return std::exp(high);
   for (int iteration = 0; iteration < 40; ++iteration) {
     const double middle = 0.5 * (low + high);
-    if (distance_at(points, covariance, values, std::exp(middle)) > dof) {
+    if (distance(std::exp(middle)) > dof) {
       low = middle;
     } else {
       high = middle;
     }
   }
   return std::exp(high);
-}
-
-bool same_kinds(std::vector<TermSlot> a, std::vector<TermSlot> b) {
-  if (a.size() != b.size()) return false;
-  const auto by_kind = [](const TermSlot& x, const TermSlot& y) { return x.kind < y.kind; };
-  std::sort(a.begin(), a.end(), by_kind);
-  std::sort(b.begin(), b.end(), by_kind);
-  for (size_t i = 0; i < a.size(); ++i) {
-    if (a[i].kind != b[i].kind || a[i].shape_free != b[i].shape_free) return false;
-  }
-  return true;
-}
-
-bool same_discrepancy(double a, double b) {
-  constexpr double kNegligible = 1e-4;
-  if (a < kNegligible && b < kNegligible) return true;
-  return a > 0.0 && b > 0.0 && std::abs(std::log(a / b)) < std::log(1.5);
 }
 
 FitQuality assess_quality(double cost, int points, int parameters, double discrepancy) {
@@ -282,29 +248,23 @@ FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, doub
   const double quantization = quantization_density(options.output_quantization_step, tau0_s);
 
   OavarCovariance covariance(averaging_factors(fit.points), tau0_s, span.sample_count);
-  // Rounds: select under weights from the previous round's model (the rough one first) and the
-  // discrepancy it leaves, until neither the terms nor the discrepancy change.
-  NoiseModel weight_model = rough_model(fit.points, span, quantization);
-  double discrepancy = kInitialDiscrepancy;
-  SelectedModel selected;
-  for (int round = 0; round < kMaxSelectionRounds; ++round) {
-    const MomentWeights weights = moment_weights(fit.points, weight_model, covariance, discrepancy);
-    const std::vector<TermSlot> previous = selected.structure.slots;
-    selected = select_model(fit.points, span, options, weights, quantization, round == 0 ? nullptr : &selected);
-    weight_model = model_from_log_parameters(selected.structure, selected.log_parameters);
-    const int dof = static_cast<int>(fit.points.size()) - parameter_count(selected.structure);
-    const double estimated = estimate_discrepancy(fit.points, weight_model, covariance, dof);
-    if (std::getenv("IMU_LAB_DEBUG_FIT")) {
-      std::fprintf(stderr, "DEBUG round %d d=%g cost=%g -> estimated %g; model:", round, discrepancy, selected.cost, estimated);
-      for (const Term& t : weight_model.terms) std::fprintf(stderr, " %s(%g,%g,%g)", term_kind_name(t.kind).c_str(), t.amplitude, t.shape, t.width);
-      std::fprintf(stderr, "\n");
-    }
-    const bool same_terms = round > 0 && same_kinds(previous, selected.structure.slots);
-    const bool settled = same_discrepancy(estimated, discrepancy);
-    discrepancy = estimated;
-    if (same_terms && settled) break;
+  // The weights stand on a description of the data (descriptive_model.h). The selection first
+  // asks the model to describe the curve to 1 % in AVAR (the band's floor is +-1 % in
+  // deviation); the discrepancy the selected model then leaves is estimated. Below 1 % (a model
+  // that is right, as on the emulator) the selection runs again with it, so the estimates'
+  // full precision decides; above, the terms stay as selected and only their fit and sigmas take
+  // the larger spread (selecting again under it would drop terms, raise the spread, and spiral).
+  const NoiseModel first_weight_model = descriptive_model(fit.points, span, quantization);
+  SelectedModel selected =
+      select_model(fit.points, span, options, covariance, kInitialDiscrepancy, first_weight_model);
+  const int dof = static_cast<int>(fit.points.size()) - parameter_count(selected.structure);
+  const NoiseModel selected_model = model_from_log_parameters(selected.structure, selected.log_parameters);
+  const double discrepancy = estimate_discrepancy(fit.points, selected_model, covariance, dof);
+  if (discrepancy < kInitialDiscrepancy) {
+    selected = select_model(fit.points, span, options, covariance, discrepancy, selected_model, &selected);
+  } else {
+    refit_selected(fit.points, span, options, covariance, discrepancy, &selected);
   }
-  settle_weights(fit.points, span, options, covariance, discrepancy, &selected);
   fit.structure = selected.structure;
   fit.log_parameters = selected.log_parameters;
   fit.selection_steps = selected.steps;

@@ -1,5 +1,6 @@
 #include "imu_lab/identify/fit_problem.h"
 
+#include <boost/math/special_functions/digamma.hpp>
 #include <ceres/ceres.h>
 
 #include <Eigen/Dense>
@@ -45,16 +46,18 @@ void model_and_jacobian(const std::vector<FitPoint>& points, const ModelStructur
   }
 }
 
-Eigen::VectorXd measured_avar(const std::vector<FitPoint>& points) {
+// The moments: ln of each measured AVAR less the mean of ln(chi2_edf / edf) at its EDF, so that
+// they are unbiased for ln of the true AVAR.
+Eigen::VectorXd log_moments(const std::vector<FitPoint>& points, const MomentWeights& weights) {
   Eigen::VectorXd values(points.size());
-  for (size_t k = 0; k < points.size(); ++k) values(k) = points[k].avar;
+  for (size_t k = 0; k < points.size(); ++k) values(k) = std::log(points[k].avar) - weights.log_bias(k);
   return values;
 }
 
 class MomentCost : public ceres::CostFunction {
  public:
   MomentCost(const std::vector<FitPoint>& points, const ModelStructure& structure, const MomentWeights& weights)
-      : points_(points), structure_(structure), whitening_(weights.whitening), measured_(measured_avar(points)) {
+      : points_(points), structure_(structure), whitening_(weights.whitening), moments_(log_moments(points, weights)) {
     set_num_residuals(static_cast<int>(points.size()));
     mutable_parameter_block_sizes()->push_back(parameter_count(structure));
   }
@@ -67,11 +70,12 @@ class MomentCost : public ceres::CostFunction {
     Eigen::MatrixXd jacobian;
     model_and_jacobian(points_, structure_, log_parameters, &model, want_jacobian ? &jacobian : nullptr);
     if (!model.allFinite()) return false;
-    Eigen::Map<Eigen::VectorXd>(residuals, model.size()) = whitening_ * (measured_ - model);
+    if (!(model.minCoeff() > 0.0)) return false;
+    Eigen::Map<Eigen::VectorXd>(residuals, model.size()) = whitening_ * (moments_ - model.array().log().matrix());
     if (want_jacobian) {
       if (!jacobian.allFinite()) return false;
       Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-          jacobians[0], model.size(), count) = -whitening_ * jacobian;
+          jacobians[0], model.size(), count) = -whitening_ * (model.cwiseInverse().asDiagonal() * jacobian);
     }
     return true;
   }
@@ -80,10 +84,17 @@ class MomentCost : public ceres::CostFunction {
   const std::vector<FitPoint>& points_;
   ModelStructure structure_;
   Eigen::MatrixXd whitening_;
-  Eigen::VectorXd measured_;
+  Eigen::VectorXd moments_;
 };
 
 }  // namespace
+
+double mean_log_scaled_chi_squared(double edf) {
+  if (!(edf > 0.0)) return 0.0;
+  // E ln(chi2_e / e) = digamma(e / 2) - ln(e / 2); its asymptotic series beyond e = 200.
+  if (edf > 200.0) return -1.0 / edf - 1.0 / (3.0 * edf * edf);
+  return boost::math::digamma(0.5 * edf) - std::log(0.5 * edf);
+}
 
 std::vector<int> averaging_factors(const std::vector<FitPoint>& points) {
   std::vector<int> factors;
@@ -93,10 +104,17 @@ std::vector<int> averaging_factors(const std::vector<FitPoint>& points) {
 
 MomentWeights moment_weights(const std::vector<FitPoint>& points, const NoiseModel& model,
                              OavarCovariance& model_covariance, double discrepancy) {
-  Eigen::MatrixXd covariance = model_covariance.covariance(model);
+  // Relative covariance: cov(nu_i, nu_j) / (nu_i nu_j) is the covariance of ln nu to first order;
+  // it depends on the model's shape only, not on how far its level is from the data's.
+  Eigen::VectorXd level(points.size());
+  for (size_t k = 0; k < points.size(); ++k) level(k) = model_avar(model, points[k].tau_s);
+  Eigen::MatrixXd covariance =
+      level.cwiseInverse().asDiagonal() * model_covariance.covariance(model) * level.cwiseInverse().asDiagonal();
+  MomentWeights weights;
+  weights.log_bias = Eigen::VectorXd(points.size());
   for (size_t k = 0; k < points.size(); ++k) {
-    const double spread = discrepancy * model_avar(model, points[k].tau_s);
-    covariance(k, k) += spread * spread;
+    weights.log_bias(k) = mean_log_scaled_chi_squared(2.0 / covariance(k, k));
+    covariance(k, k) += discrepancy * discrepancy;
   }
   Eigen::LLT<Eigen::MatrixXd> factor(covariance);
   if (factor.info() != Eigen::Success) {
@@ -118,7 +136,6 @@ MomentWeights moment_weights(const std::vector<FitPoint>& points, const NoiseMod
       throw std::runtime_error("noise identification: the model's covariance of the AVAR estimates is singular");
     }
   }
-  MomentWeights weights;
   weights.discrepancy = discrepancy;
   const Eigen::MatrixXd lower = factor.matrixL();
   weights.whitening = lower.triangularView<Eigen::Lower>().solve(
@@ -219,8 +236,8 @@ double model_cost(const std::vector<FitPoint>& points, const ModelStructure& str
                   const std::vector<double>& log_parameters, const MomentWeights& weights) {
   Eigen::VectorXd model;
   model_and_jacobian(points, structure, log_parameters, &model, nullptr);
-  if (!model.allFinite()) return std::numeric_limits<double>::infinity();
-  return 0.5 * (weights.whitening * (measured_avar(points) - model)).squaredNorm();
+  if (!model.allFinite() || !(model.minCoeff() > 0.0)) return std::numeric_limits<double>::infinity();
+  return 0.5 * (weights.whitening * (log_moments(points, weights) - model.array().log().matrix())).squaredNorm();
 }
 
 Eigen::MatrixXd log_parameter_covariance(const std::vector<FitPoint>& points, const ModelStructure& structure,
@@ -228,7 +245,7 @@ Eigen::MatrixXd log_parameter_covariance(const std::vector<FitPoint>& points, co
   Eigen::VectorXd model;
   Eigen::MatrixXd jacobian;
   model_and_jacobian(points, structure, log_parameters, &model, &jacobian);
-  const Eigen::MatrixXd whitened = weights.whitening * jacobian;
+  const Eigen::MatrixXd whitened = weights.whitening * (model.cwiseInverse().asDiagonal() * jacobian);
   const Eigen::MatrixXd information = whitened.transpose() * whitened;
   return information.completeOrthogonalDecomposition().pseudoInverse();
 }

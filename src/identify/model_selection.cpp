@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <cstdio>
+#include <cstdlib>
 
 #include "imu_lab/identify/avar_likelihood.h"
 #include "imu_lab/identify/start_values.h"
@@ -49,9 +51,33 @@ struct SelectionContext {
   const std::vector<FitPoint>& points;
   const DataSpan& span;
   const FitOptions& options;
-  const MomentWeights& weights;
+  OavarCovariance& covariance;
+  double discrepancy;
   int point_count;
 };
+
+// The current model under weights of its own: the weights follow the model and the model the
+// weights until the model's AVAR at every point moves by less than 5 % (iterated GMM).
+void reweigh(const SelectionContext& context, SelectedModel* current) {
+  constexpr int kMaxIterations = 4;
+  constexpr double kSettled = 0.05;
+  for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
+    const NoiseModel model = model_from_log_parameters(current->structure, current->log_parameters);
+    current->weights = moment_weights(context.points, model, context.covariance, context.discrepancy);
+    const SolveOutcome refit =
+        refit_structure(context.points, current->structure, current->log_parameters, context.span, current->weights);
+    if (!refit.usable) break;
+    const NoiseModel refitted = model_from_log_parameters(current->structure, refit.log_parameters);
+    double largest_change = 0.0;
+    for (const FitPoint& point : context.points) {
+      largest_change = std::max(largest_change,
+                                std::abs(model_avar(refitted, point.tau_s) / model_avar(model, point.tau_s) - 1.0));
+    }
+    current->log_parameters = refit.log_parameters;
+    if (largest_change < kSettled) break;
+  }
+  current->cost = model_cost(context.points, current->structure, current->log_parameters, current->weights);
+}
 
 SolveOutcome fit_with_new_slot(const SelectionContext& context, const ModelStructure& base,
                                const std::vector<double>& base_parameters, const TermSlot& slot,
@@ -110,6 +136,7 @@ Addition best_addition(const SelectionContext& context, const ModelStructure& ba
     ModelStructure extended;
     const SolveOutcome outcome =
         fit_with_new_slot(context, base, base_parameters, candidates[c], weights, &extended);
+    if (std::getenv("IMU_LAB_DEBUG_FIT")) std::fprintf(stderr, "DEBUG   candidate %s usable %d cost %g (base %zu slots)\n", term_kind_name(candidates[c].kind).c_str(), outcome.usable, outcome.cost, base.slots.size());
     if (!outcome.usable) continue;
     // The distance left plus half the candidate's threshold: among candidates of different
     // parameter counts (a sinusoid or a resonance for one peak) the one whose fall of J clears
@@ -125,10 +152,13 @@ Addition best_addition(const SelectionContext& context, const ModelStructure& ba
   return best;
 }
 
-void accept(const ModelStructure& structure, const SolveOutcome& outcome, SelectedModel* current) {
+// The weights change with the model: every comparison is made under the current model's (the
+// null hypothesis's) weights, scaled to the measured curve (moment_weights).
+void accept(const SelectionContext& context, const ModelStructure& structure, const SolveOutcome& outcome,
+            SelectedModel* current) {
   current->structure = structure;
   current->log_parameters = outcome.log_parameters;
-  current->cost = outcome.cost;
+  reweigh(context, current);
 }
 
 // Forward, in two tiers: the standards' power-law terms first (the hypothesis a reader expects),
@@ -136,27 +166,68 @@ void accept(const ModelStructure& structure, const SolveOutcome& outcome, Select
 // term admitted first would otherwise absorb a mixture of simple terms and block them.
 bool front_end_pass(const SelectionContext& context, SelectedModel* current);
 
+// An extension judged as the backward pass will judge it, so that a term added is not dropped
+// again at once: under the extended model's own weights, the rise of J when the current
+// structure is refitted there.
+struct Extension {
+  SelectedModel model;
+  double statistic = 0.0;
+};
+
+Extension weigh_extension(const SelectionContext& context, const SelectedModel& current,
+                          const ModelStructure& structure, const SolveOutcome& outcome) {
+  Extension extension;
+  extension.model = current;
+  extension.model.structure = structure;
+  extension.model.log_parameters = outcome.log_parameters;
+  reweigh(context, &extension.model);
+  const SolveOutcome reduced = refit_structure(context.points, current.structure, current.log_parameters,
+                                               context.span, extension.model.weights);
+  extension.statistic = reduced.usable ? 2.0 * (reduced.cost - extension.model.cost) : kInfinity;
+  return extension;
+}
+
+// True if the extension is significant both under the current weights (a cheap screen) and under
+// its own; then it becomes the current model with `step` recorded.
+bool try_extension(const SelectionContext& context, const ModelStructure& structure, const SolveOutcome& outcome,
+                   const TermSlot& slot, SelectionStep step, SelectedModel* current) {
+  step.threshold = slot_lr_threshold(context.options, slot, context.point_count);
+  if (!(2.0 * (current->cost - outcome.cost) > step.threshold)) return false;
+  Extension extension = weigh_extension(context, *current, structure, outcome);
+  step.lr_statistic = extension.statistic;
+  if (!(extension.statistic > step.threshold)) return false;
+  *current = std::move(extension.model);
+  current->steps.push_back(step);
+  return true;
+}
+
 void forward_pass(const SelectionContext& context, std::vector<TermSlot>* remaining, SelectedModel* current) {
-  for (bool extras : {false, true}) {
-    // The front end belongs to the white noise: decided before a Markov term can stand in for it.
-    if (extras) front_end_pass(context, current);
-    while (true) {
-      const Addition addition = best_addition(context, current->structure, current->log_parameters, *remaining,
-                                              extras, context.weights);
-      if (!std::isfinite(addition.outcome.cost)) break;
-      const SolveOutcome best = polish(context, addition.structure, addition.outcome, context.weights);
-      const TermSlot& added = (*remaining)[addition.index];
-      SelectionStep step{current->structure.slots.empty() ? "start" : "add", term_kind_name(added.kind), 0.0, 0.0};
-      if (!current->structure.slots.empty()) {
-        step.lr_statistic = 2.0 * (current->cost - best.cost);
-        step.threshold = slot_lr_threshold(context.options, added, context.point_count);
-        if (!(step.lr_statistic > step.threshold)) break;
+  // Until a whole pass adds nothing: a peak or hump modelled in the second tier can reveal a
+  // standard term the first could not see behind it.
+  bool added_any = true;
+  while (added_any) {
+    added_any = false;
+    for (bool extras : {false, true}) {
+      // The front end belongs to the white noise: decided before a Markov term can stand in.
+      if (extras) added_any |= front_end_pass(context, current);
+      while (true) {
+        const Addition addition = best_addition(context, current->structure, current->log_parameters, *remaining,
+                                                extras, current->weights);
+        if (!std::isfinite(addition.outcome.cost)) break;
+        const SolveOutcome best = polish(context, addition.structure, addition.outcome, current->weights);
+        const TermSlot added = (*remaining)[addition.index];
+        if (current->structure.slots.empty()) {
+          current->steps.push_back({"start", term_kind_name(added.kind), 0.0, 0.0});
+          accept(context, addition.structure, best, current);
+        } else if (!try_extension(context, addition.structure, best, added,
+                                  {"add", term_kind_name(added.kind), 0.0, 0.0}, current)) {
+          break;
+        }
+        remaining->erase(remaining->begin() + addition.index);
+        added_any = true;
+        // A peak or hump just modelled may have been hiding the front end's roll-off.
+        if (extras) front_end_pass(context, current);
       }
-      current->steps.push_back(step);
-      remaining->erase(remaining->begin() + addition.index);
-      accept(addition.structure, best, current);
-      // A peak or hump just modelled may have been hiding the front end's roll-off.
-      if (extras) front_end_pass(context, current);
     }
   }
 }
@@ -178,14 +249,10 @@ bool front_end_pass(const SelectionContext& context, SelectedModel* current) {
       starts.push_back(start);
     }
     const SolveOutcome outcome = best_of(context.points, upgraded, starts, static_cast<int>(starts.size()),
-                                         context.span, context.weights);
+                                         context.span, current->weights);
     if (!outcome.usable) return false;
-    const double statistic = 2.0 * (current->cost - outcome.cost);
-    const double threshold = slot_lr_threshold(context.options, upgraded.slots[i], context.point_count);
-    if (!(statistic > threshold)) return false;
-    current->steps.push_back({"front end", term_kind_name(slot.kind), statistic, threshold});
-    accept(upgraded, outcome, current);
-    return true;
+    return try_extension(context, upgraded, outcome, upgraded.slots[i], {"front end", term_kind_name(slot.kind), 0.0, 0.0},
+                         current);
   }
   return false;
 }
@@ -206,7 +273,7 @@ bool backward_pass(const SelectionContext& context, std::vector<TermSlot>* remai
       std::vector<double> reduced_parameters = current->log_parameters;
       remove_slot(reduced, reduced_parameters, i);
       const SolveOutcome outcome =
-          refit_structure(context.points, reduced, reduced_parameters, context.span, context.weights);
+          refit_structure(context.points, reduced, reduced_parameters, context.span, current->weights);
       if (!outcome.usable) continue;
       const double statistic = 2.0 * (outcome.cost - current->cost);
       const double margin =
@@ -224,7 +291,7 @@ bool backward_pass(const SelectionContext& context, std::vector<TermSlot>* remai
     current->steps.push_back({"remove", term_kind_name(removed.kind), worst_statistic,
                               slot_lr_threshold(context.options, removed, context.point_count)});
     remaining->push_back(removed);
-    accept(worst_structure, worst_outcome, current);
+    accept(context, worst_structure, worst_outcome, current);
     removed_any = true;
   }
   return removed_any;
@@ -240,7 +307,7 @@ bool swap_pass(const SelectionContext& context, std::vector<TermSlot>* remaining
     std::vector<double> reduced_parameters = current->log_parameters;
     remove_slot(reduced, reduced_parameters, static_cast<int>(i));
     const Addition addition =
-        best_addition(context, reduced, reduced_parameters, *remaining, false, context.weights);
+        best_addition(context, reduced, reduced_parameters, *remaining, false, current->weights);
     if (!std::isfinite(addition.outcome.cost)) continue;
     const double statistic = 2.0 * (addition.outcome.cost - current->cost);
     const double threshold = slot_lr_threshold(context.options, extra, context.point_count);
@@ -249,7 +316,7 @@ bool swap_pass(const SelectionContext& context, std::vector<TermSlot>* remaining
                               term_kind_name((*remaining)[addition.index].kind), statistic, threshold});
     remaining->erase(remaining->begin() + addition.index);
     remaining->push_back(extra);
-    accept(addition.structure, addition.outcome, current);
+    accept(context, addition.structure, addition.outcome, current);
     return true;
   }
   return false;
@@ -268,7 +335,7 @@ void removal_statistics(const SelectionContext& context, SelectedModel* current)
     std::vector<double> reduced_parameters = current->log_parameters;
     remove_slot(reduced, reduced_parameters, i);
     const SolveOutcome outcome =
-        refit_structure(context.points, reduced, reduced_parameters, context.span, context.weights);
+        refit_structure(context.points, reduced, reduced_parameters, context.span, current->weights);
     if (outcome.usable) current->removal_lr_statistics[i] = 2.0 * (outcome.cost - current->cost);
   }
 }
@@ -318,24 +385,24 @@ SolveOutcome refit_structure(const std::vector<FitPoint>& points, const ModelStr
 }
 
 SelectedModel select_model(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
-                           const MomentWeights& weights, double output_quantization_density,
+                           OavarCovariance& covariance, double discrepancy, const NoiseModel& first_weight_model,
                            const SelectedModel* start) {
-  const SelectionContext context{points, span, options, weights, static_cast<int>(points.size())};
+  const SelectionContext context{points, span, options, covariance, discrepancy, static_cast<int>(points.size())};
   std::vector<TermSlot> remaining = candidate_slots(options, span);
   SelectedModel current;
-  current.structure.output_quantization_density = output_quantization_density;
+  current.structure.output_quantization_density = first_weight_model.output_quantization_density;
   current.cost = kInfinity;
+  current.weights = moment_weights(points, first_weight_model, covariance, discrepancy);
   if (start != nullptr) {
     current.structure = start->structure;
+    current.log_parameters = start->log_parameters;
     current.steps = start->steps;
     for (const TermSlot& used : current.structure.slots) {
       const auto match = std::find_if(remaining.begin(), remaining.end(),
                                       [&](const TermSlot& slot) { return slot.kind == used.kind; });
       if (match != remaining.end()) remaining.erase(match);
     }
-    const SolveOutcome refit = refit_structure(points, current.structure, start->log_parameters, span, weights);
-    current.log_parameters = refit.usable ? refit.log_parameters : start->log_parameters;
-    current.cost = model_cost(points, current.structure, current.log_parameters, weights);
+    reweigh(context, &current);
   }
   // Greedy forward selection depends on the order terms enter; after a removal or swap, search
   // again.
@@ -348,32 +415,14 @@ SelectedModel select_model(const std::vector<FitPoint>& points, const DataSpan& 
     if (!removed && !swapped) break;
   }
   canonical_order(current.structure, current.log_parameters);
-  current.weights = weights;
   removal_statistics(context, &current);
   return current;
 }
 
-void settle_weights(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
+void refit_selected(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
                     OavarCovariance& covariance, double discrepancy, SelectedModel* selected) {
-  constexpr int kMaxIterations = 4;
-  constexpr double kSettled = 0.05;
-  for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
-    const NoiseModel model = model_from_log_parameters(selected->structure, selected->log_parameters);
-    selected->weights = moment_weights(points, model, covariance, discrepancy);
-    const SolveOutcome refit =
-        refit_structure(points, selected->structure, selected->log_parameters, span, selected->weights);
-    if (!refit.usable) break;
-    const NoiseModel refitted = model_from_log_parameters(selected->structure, refit.log_parameters);
-    double largest_change = 0.0;
-    for (const FitPoint& point : points) {
-      largest_change =
-          std::max(largest_change, std::abs(model_avar(refitted, point.tau_s) / model_avar(model, point.tau_s) - 1.0));
-    }
-    selected->log_parameters = refit.log_parameters;
-    if (largest_change < kSettled) break;
-  }
-  selected->cost = model_cost(points, selected->structure, selected->log_parameters, selected->weights);
-  const SelectionContext context{points, span, options, selected->weights, static_cast<int>(points.size())};
+  const SelectionContext context{points, span, options, covariance, discrepancy, static_cast<int>(points.size())};
+  reweigh(context, selected);
   removal_statistics(context, selected);
 }
 

@@ -41,7 +41,7 @@ struct FitOptions {
   // Selection test level: a term enters, and stays, only if the GMM distance falls by more than
   // the chi2 quantile (1 - significance, its parameter count) (Bonferroni over the searched
   // shapes for terms whose shape is fitted).
-  double significance = 0.001;
+  double significance = 0.01;
   // One-sided profile bound reported for absent and unconstrained terms.
   double upper_bound_confidence = 0.95;
   // A present term whose relative sigma exceeds this is reported unconstrained (+ upper bound).

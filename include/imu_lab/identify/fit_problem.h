@@ -1,11 +1,14 @@
 // One fit of a fixed model structure by the generalized method of wavelet moments (Guerrier,
-// Skaloud, Stebler and Victoria-Feser, JASA 2013; doc/models.md): the measured AVARs nu are
-// matched to the model's nu(theta) in the distance
-//   J(theta) = (nu - nu(theta))' Omega^-1 (nu - nu(theta)),
-// where Omega is the covariance of the estimates (avar_covariance.h) at a previous model, plus a
-// relative discrepancy variance for what no model of this family describes (a real front end
-// that is not exactly first order, for instance). With Omega fixed, J is a plain weighted least
-// squares: nu(theta) enters linearly in the residual, so the estimator is unbiased, and the
+// Skaloud, Stebler and Victoria-Feser, JASA 2013; doc/models.md), on logarithms: the moments are
+// z = ln nu - E ln(chi2_e / e) (each measured AVAR's log, unbiased at its EDF e), matched to
+// ln nu(theta) in the distance
+//   J(theta) = (z - ln nu(theta))' R^-1 (z - ln nu(theta)),
+// where R is the relative covariance of the estimates, cov(nu_i, nu_j) / (nu_i nu_j) under a
+// previous model (avar_covariance.h; it carries the EDFs and the correlations across taus),
+// plus a relative discrepancy variance for what no model of this family describes (a real front
+// end that is not exactly first order, for instance). On logarithms a point far above the model
+// and one far below weigh alike, as in the chi-squared likelihood of each point, and R depends on
+// the model's shape only, never on how far its level is from the data's. With R fixed the
 // difference of J between nested models is a chi-squared statistic (the GMM distance test).
 // Parameters are logarithms; shapes are bounded to what the data can express.
 #pragma once
@@ -31,15 +34,19 @@ struct DataSpan {
   double largest_avar = 0.0;
 };
 
-// Omega^-1/2 for the fit points: residuals r = L^-1 (nu - nu(theta)) with Omega = L L'.
+// R^-1/2 for the fit points: residuals r = L^-1 (z - ln nu(theta)) with R = L L'.
 struct MomentWeights {
   Eigen::MatrixXd whitening;  // L^-1
+  Eigen::VectorXd log_bias;   // E ln(chi2_e / e) at each point's EDF under the weighing model
   double discrepancy = 0.0;   // relative standard deviation added to every point
 };
 
-// The weights under `model` (its covariance of the estimates, from `covariance`, which holds the
-// fit points' averaging factors, plus (discrepancy * nu_model)^2 on the diagonal). If the
-// covariance is numerically singular a ridge of 1e-9 of its diagonal is added. Throws
+// E ln(chi2_e / e) = digamma(e / 2) - ln(e / 2).
+double mean_log_scaled_chi_squared(double edf);
+
+// The weights under `model` (its relative covariance of the estimates, from `covariance`, which
+// holds the fit points' averaging factors, plus discrepancy^2 on the diagonal). A covariance
+// that rounding made indefinite has its correlation eigenvalues clipped. Throws
 // std::runtime_error if even that fails.
 MomentWeights moment_weights(const std::vector<FitPoint>& points, const NoiseModel& model,
                              OavarCovariance& covariance, double discrepancy);

@@ -2,12 +2,11 @@
 // term, adding the candidate that lowers J most while the fall is significant; then backward,
 // dropping any term whose removal does not raise J significantly; an extra term (Markov,
 // sinusoid, resonance, zero-DC) that an absent standard term replaces within its threshold is
-// swapped for it; repeated while anything changes. Every comparison within a selection uses one
-// weight matrix, so each fall of J is a chi-squared statistic with the added parameters as
+// swapped for it; repeated while anything changes. Each comparison uses one weight matrix, that of
+// the current model (the null hypothesis; recomputed whenever the model changes, scaled to the
+// measured curve), so each fall of J is a chi-squared statistic with the added parameters as
 // degrees of freedom (the GMM distance test, Newey and West, International Economic Review 1987)
-// and holds its size whatever the grid. The weights come from a model that already describes the
-// whole curve (the caller's previous round), never from the small model being grown: a model far
-// below the data at some tau would claim a precision there that the data do not have.
+// and holds its size whatever the grid.
 #pragma once
 
 #include <string>
@@ -51,16 +50,16 @@ std::vector<TermSlot> candidate_slots(const FitOptions& options, const DataSpan&
 // statistic is the best of ~point_count tries: Bonferroni, significance / point_count.
 double slot_lr_threshold(const FitOptions& options, const TermSlot& slot, int point_count);
 
-// Selects under fixed weights (every comparison then uses the same distance), from scratch or
-// from `start` (a selection made under other weights).
+// Selects from scratch or from `start`; the first weights come from `first_weight_model` (a
+// description of the whole curve), then from each accepted model. `covariance` holds the
+// points' averaging factors; `discrepancy` is the relative spread added to every point.
 SelectedModel select_model(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
-                           const MomentWeights& weights, double output_quantization_density,
+                           OavarCovariance& covariance, double discrepancy, const NoiseModel& first_weight_model,
                            const SelectedModel* start = nullptr);
 
-// Iterated GMM for the selected structure: the weights follow the model and the model the
-// weights until the model's AVAR at every point moves by less than 5 %; then each term's removal
-// statistic under the settled weights. `covariance` holds the points' averaging factors.
-void settle_weights(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
+// The selected structure refitted under its own weights with another discrepancy (iterated),
+// with its removal statistics there.
+void refit_selected(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
                     OavarCovariance& covariance, double discrepancy, SelectedModel* selected);
 
 // Refits a fixed structure from `start` and from a few perturbations of it; the best solve.
