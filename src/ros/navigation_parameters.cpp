@@ -34,10 +34,11 @@ NavigationSettings load_navigation_settings(const ros::NodeHandle& private_node)
   settings.navigator.corrections.coning_correction = parameter(p, "coning_correction", true);
   settings.navigator.corrections.sculling_correction = parameter(p, "sculling_correction", true);
   settings.gap_factor = parameter(p, "gap_factor", settings.gap_factor);
-  settings.expected_errors.gyro_bias_rad_s = parameter(p, "expected_gyro_bias_rad_s", 0.0);
-  settings.expected_errors.accel_bias_m_s2 = parameter(p, "expected_accel_bias_m_s2", 0.0);
-  settings.expected_errors.gyro_noise_density_rad_s_per_sqrt_hz = parameter(p, "gyro_noise_density_rad_s_per_sqrt_hz", 0.0);
-  settings.expected_errors.accel_noise_density_m_s2_per_sqrt_hz =
+  settings.expected_errors.emplace();
+  settings.expected_errors->gyro_bias_rad_s = parameter(p, "expected_gyro_bias_rad_s", 0.0);
+  settings.expected_errors->accel_bias_m_s2 = parameter(p, "expected_accel_bias_m_s2", 0.0);
+  settings.expected_errors->gyro_noise_density_rad_s_per_sqrt_hz = parameter(p, "gyro_noise_density_rad_s_per_sqrt_hz", 0.0);
+  settings.expected_errors->accel_noise_density_m_s2_per_sqrt_hz =
       parameter(p, "accel_noise_density_m_s2_per_sqrt_hz", 0.0);
   validate(settings, p.getNamespace());
   return settings;
