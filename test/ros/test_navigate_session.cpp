@@ -235,6 +235,7 @@ TEST(NavigateSession, StopsWhenTheHeightLeavesPlusMinus1000Km) {
   session.add_rates(samples[0].stamp_ns, samples[0].rate_rad_s, samples[0].force_m_s2);
   EXPECT_EQ(session.add_rates(samples[1].stamp_ns, samples[1].rate_rad_s, Eigen::Vector3d(0.0, 0.0, 1e12)),
             SampleOutcome::kDiverged);
+  ASSERT_TRUE(session.halted());
   EXPECT_NE(session.divergence()->problem.find("beyond +-1000 km"), std::string::npos) << session.divergence()->problem;
 }
 
