@@ -252,7 +252,7 @@ def navigation_section(report):
         "the gyro terms a position error that grows (R ν (t − sin(w0 t) / w0)) and a heading that drifts (ν_U t). "
         "At this grade the calibration's gyro bias is as uncertain as the bias itself, so the corrected run keeps a "
         "few hundred metres; another power-up brings a new turn-on bias and bias-instability state, more than the "
-        "calibration took out. fit_calibration's gyro white-noise estimate (block means of 1 s) is about ten times "
+        "calibration took out. fit_calibration's gyro white-noise estimate (block means of 0.5 s) is about ten times "
         "the profile's 2.9e-7 rad/s/√Hz because at that length the 1-arcsec pulse quantization looks white; over a "
         "whole rest it averages as 1/T, not 1/√T, so the stated bias sigma, and the bound built on it, are loose.")
     lines += navigation_part(
