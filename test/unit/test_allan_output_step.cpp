@@ -134,6 +134,13 @@ TEST(OutputStep, TheStepIsTheLargestCommonOneAndNeedsEvidence) {
   steps = steps_of({{q}, {2 * q}, {static_cast<double>(allan::kMaxOutputStepMultiple + 1) * q}});
   EXPECT_FALSE(steps[0].quantised);
   EXPECT_EQ(steps[0].step, 0.0);
+  // Multiples near 1e5 with no common factor (an accelerometer at 1 g with a 1e-5 g LSB): the
+  // continued fraction of their ratio has convergents with denominators of some thousands that
+  // come within 1e-9 of it; only the exact one may give the step.
+  steps = steps_of({{-100609 * q}, {-100571 * q}, {-100639 * q}});
+  EXPECT_TRUE(steps[0].quantised);
+  EXPECT_NEAR(steps[0].step / q, 1.0, 1e-14);
+  EXPECT_EQ(steps[0].largest_multiple, 100639);
   // A value a hair off a multiple (1e-6 of a step): not quantised.
   steps = steps_of({{q}, {2 * q}, {7.000001 * q}});
   EXPECT_FALSE(steps[0].quantised);

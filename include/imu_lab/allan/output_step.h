@@ -6,14 +6,17 @@
 //
 // Tolerance, relative and derived from the arithmetic: values converted to SI in double precision
 // (a decimal parsed, times a unit factor) carry a relative error delta of a few ulps (< 1e-15). A
-// value fits the step when |v / step - n| <= kOutputStepTolerance * n (1e-9, a million times
-// delta). When a value does not fit, the step shrinks to step / k with p / k the continued-fraction
-// convergent of v / step within that tolerance; the convergent is recovered exactly while
-// p * k * delta << 1, which holds for every multiple up to kMaxOutputStepMultiple (2^17: an
-// 18-bit output). A value further than that many steps from zero means a step too fine to tell
-// from rounding: the channel is reported unquantised (step 0), as are values that passed through
-// single precision (relative error 6e-8) and unquantised data, for which the step collapses after a
-// few values. The step itself is as exact as the values (relative error about delta).
+// value fits the step when |v / step - n| <= kOutputStepTolerance * n, with the tolerance 1e-12
+// (a thousand times that error). When a value does not fit, v / step = p / k for the true
+// multiples, and the step shrinks to step / k: k is the denominator of the first continued-fraction
+// convergent of v / step that fits within the tolerance. A convergent p_i / k_i before the true one
+// misses v / step by about 1 / (k_i k_(i+1)), so it is never taken for the true one while
+// kOutputStepTolerance * kMaxOutputStepMultiple^2 < 1 (0.017 here: multiples up to 2^17, an 18-bit
+// output). A value further than that many steps from zero means a step too fine to tell from
+// rounding: the channel is reported unquantised (step 0), as are values that passed through single
+// precision (relative error 6e-8) and unquantised data, for which the step collapses after a few
+// values (a continuous value fits a step by chance with probability 2 * 1e-12 * n). The step itself
+// is as exact as the values (relative error about delta).
 #pragma once
 
 #include <cstddef>
@@ -23,7 +26,7 @@
 namespace imu_lab {
 namespace allan {
 
-constexpr double kOutputStepTolerance = 1e-9;
+constexpr double kOutputStepTolerance = 1e-12;
 constexpr std::int64_t kMaxOutputStepMultiple = std::int64_t{1} << 17;
 
 struct ChannelOutputStep {
