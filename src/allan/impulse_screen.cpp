@@ -234,7 +234,6 @@ void ImpulseScreen::process(std::size_t i) {
     if (mean_square > 0.0 && deviation * deviation > threshold_square_ * std::max(mean_square, rounding * rounding)) {
       flagged = true;
     }
-    update_scale(c, deviation);
   }
   if (flagged && !window_open_) open_window(i);
   if (window_open_ && !flagged && stamp_ns - window_.last_flag_stamp_ns > guard_after_ns_ &&
@@ -248,6 +247,10 @@ void ImpulseScreen::process(std::size_t i) {
       window_.last_flag_stamp_ns = stamp_ns;
       ++window_.event.flagged_sample_count;
     }
+  }
+  // After the peaks: a flagged channel's peak is in the scale it was flagged against.
+  for (std::size_t c = 0; c < channel_count_; ++c) {
+    if (std::isfinite(deviations[c])) update_scale(c, deviations[c]);
   }
   latest_processed_stamp_ns_ = stamp_ns;
 }

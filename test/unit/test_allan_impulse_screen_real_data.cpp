@@ -41,6 +41,7 @@ class PipeBuffer : public std::streambuf {
 
 struct UnitResult {
   allan::ImpulseScreenReport screen;
+  allan::ImpulseScreenReport narrow;  // no guards, no merging: each flagged stretch on its own
   std::vector<allan::ChannelOutputStep> steps;
   std::size_t samples = 0;
 };
@@ -63,6 +64,9 @@ UnitResult screen_unit(int unit) {
   options.accel_unit = io::SpecificForceUnit::kStandardGravity;
   options.time_offset_ns = 1000000000;
   allan::ImpulseScreen screen{allan::ImpulseScreenOptions()};
+  allan::ImpulseScreenOptions narrow_options;
+  narrow_options.guard_before_s = narrow_options.guard_after_s = narrow_options.merge_gap_s = 0.0;
+  allan::ImpulseScreen narrow(narrow_options);
   allan::OutputStepDetector steps(6);
   allan::ScreenedSamples passed;
   const auto summary = io::parse_imu_csv(in, options, path, [&](const io::ImuCsvSample& sample) {
@@ -71,11 +75,14 @@ UnitResult screen_unit(int unit) {
                               sample.specific_force_m_s2[1], sample.specific_force_m_s2[2]};
     steps.push(values);
     screen.push(sample.stamp_ns, values, passed);
+    narrow.push(sample.stamp_ns, values, passed);
     passed.clear();
   });
   EXPECT_EQ(::pclose(pipe), 0) << "xzcat " << path;
   screen.finish(passed);
+  narrow.finish(passed);
   result.screen = screen.report();
+  result.narrow = narrow.report();
   result.steps = steps.channels();
   result.samples = summary.accepted_rows;
   return result;
@@ -95,6 +102,17 @@ std::string describe(const allan::ImpulseScreenReport& report) {
     text += line;
   }
   return text;
+}
+
+// Every event names the channels that crossed the threshold, each with a peak beyond it.
+void expect_channels_over_threshold(const allan::ImpulseScreenReport& report) {
+  for (const auto& event : report.events) {
+    const double onset_s = relative_s(report, event.onset_stamp_ns);
+    EXPECT_GE(event.flagged_sample_count, 1) << onset_s;
+    EXPECT_FALSE(event.channels.empty()) << "event at " << onset_s << " s names no channel";
+    for (const auto& peak : event.channels) EXPECT_GT(std::abs(peak.peak_sigma), report.threshold_sigma) << onset_s;
+    EXPECT_GE(std::abs(event.peak_sigma), report.threshold_sigma) << onset_s;
+  }
 }
 
 void expect_adis_steps(const UnitResult& result, int unit) {
@@ -127,6 +145,11 @@ TEST(ImpulseScreenRealData, KnockedUnitFourHasItsKnocksReported) {
     }
     EXPECT_EQ(found, 1) << "knock near " << knock_s << " s\n" << describe(report);
   }
+  expect_channels_over_threshold(report);
+  // Unmerged, the same samples are flagged, in more and shorter events (the first disturbance
+  // alone is three: 117.10, 117.69 and 118.99 s).
+  EXPECT_GT(result.narrow.event_count, report.event_count);
+  expect_channels_over_threshold(result.narrow);
   expect_adis_steps(result, 4);
 }
 

@@ -14,10 +14,9 @@
 // detection is widened into an event window: guard_before_s before the first flagged sample (a
 // delay line holds that much of the input), guard_after_s after the last; a flag inside the
 // window extends it, and two windows less than merge_gap_s apart are one event (with the samples
-// between them). The samples of a window are
-// dropped, so the engine sees a stamp gap there and, under its split-and-pool policy, starts a
-// new segment: a knock that leaves a step in the bias becomes a segment boundary, not only
-// samples missing. A window always drops at least floor(gap_factor) + 2 samples, so the hole
+// between them). The samples of a window are dropped, so the engine sees a stamp gap there and,
+// under its split-and-pool policy, starts a new segment: a knock that leaves a step in the bias
+// becomes a segment boundary, not only samples missing. A window always drops at least floor(gap_factor) + 2 samples, so the hole
 // exceeds the engine's gap_factor * tau0 whatever the rate. Each event is recorded with its
 // stamps, the channels over the threshold and their peaks; nothing is dropped unrecorded.
 //
@@ -54,7 +53,7 @@ struct ImpulseScreenOptions {
   double guard_after_s = 1.0;
   // Between two windows closer than this the few samples left would make a segment too short to
   // matter for any tau, while splitting the event would hide that it was one disturbance (the
-  // knocked unit's first knock flags samples 117.09-117.81 s and again 118.99 s).
+  // knocked unit's first disturbance flags samples at 117.10 s, 117.69 s and 118.99 s).
   double merge_gap_s = 1.0;
 
   std::size_t level_sample_count = 16;          // the local level: mean of this many previous values
