@@ -62,6 +62,11 @@ AllanBagPassResult run_allan_bag_pass(const std::string& bag_path, const AllanBa
   result.engine.input_kind = engine_input_kind(options.input);
   result.engine.warm_up_sample_count = std::min(result.engine.warm_up_sample_count, total);
   allan::StreamingAllan engine(result.engine);
+  allan::ImpulseScreenOptions screen_options = options.screen;
+  screen_options.channel_count = kAllanChannelCount;
+  screen_options.gap_factor = result.engine.gap_factor;
+  allan::ImpulseScreen screen(screen_options);
+  allan::OutputStepDetector steps(kAllanChannelCount);
 
   BoundedQueue<SampleBatch> queue(kQueuedBatches);
   std::exception_ptr reader_error;
@@ -74,22 +79,26 @@ AllanBagPassResult run_allan_bag_pass(const std::string& bag_path, const AllanBa
     }
     queue.close();
   });
-  std::vector<std::int64_t> stamps_ns;
-  std::vector<double> values;
+  // The engine runs each statistic over a whole block in one loop (push_block), several times
+  // cheaper than sample by sample; it wants stamps and row-major values side by side, as the
+  // screen hands them over.
+  allan::ScreenedSamples passed;
+  const auto push_passed = [&] {
+    engine.push_block(passed.stamps_ns.data(), passed.values.data(), passed.size());
+    passed.clear();
+  };
   try {
     while (std::optional<SampleBatch> batch = queue.pop()) {
-      // The engine runs each statistic over a whole block in one loop (push_block), several times
-      // cheaper than sample by sample; it wants stamps and row-major values side by side.
-      stamps_ns.clear();
-      values.clear();
       for (const AllanSample& sample : *batch) {
-        stamps_ns.push_back(sample.stamp_ns);
-        values.insert(values.end(), sample.values.begin(), sample.values.end());
+        steps.push(sample.values.data());
+        screen.push(sample.stamp_ns, sample.values.data(), passed);
       }
-      engine.push_block(stamps_ns.data(), values.data(), batch->size());
+      push_passed();
       result.message_count += batch->size();
       if (options.on_progress) options.on_progress(result.message_count, total);
     }
+    screen.finish(passed);
+    push_passed();
   } catch (const InputError& error) {
     queue.close();
     reader.join();
@@ -105,6 +114,8 @@ AllanBagPassResult run_allan_bag_pass(const std::string& bag_path, const AllanBa
   if (reader_error) std::rethrow_exception(reader_error);
 
   result.snapshot = engine.snapshot();
+  result.impulses = screen.report();
+  result.output_steps = steps.channels();
   if (!result.snapshot.warmed_up) {
     throw InputError(where + ": the " + std::to_string(result.message_count) +
                      " messages have too few regular stamps to estimate the sample period");

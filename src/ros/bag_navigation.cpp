@@ -3,6 +3,7 @@
 #include <unordered_map>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/ros/navigation_csv.h"
 
 namespace imu_lab {
 namespace ros_io {
@@ -89,6 +90,11 @@ BagNavigationResult navigate_bag(const std::string& bag_path, const BagNavigatio
   }
   result.counters = run.session().counters();
   result.alignment = run.session().alignment();
+  if (const auto& divergence = run.session().divergence()) {
+    throw InputError("bag " + bag_path + ", topic " + result.topic + ": the navigation state became unusable at stamp " +
+                     format_stamp(divergence->stamp_ns) + " s (" + divergence->problem +
+                     "); nothing written (check the samples around that stamp and their units)");
+  }
   if (!run.session().navigating()) {
     std::string why = "the alignment needs " + std::to_string(settings.alignment.duration_s) + " s of data and got " +
                       std::to_string(run.session().alignment_progress_s()) + " s";
@@ -110,17 +116,42 @@ BagNavigationResult navigate_bag(const std::string& bag_path, const BagNavigatio
   return result;
 }
 
-std::optional<TruthRecord> first_truth(const std::string& bag_path, const std::string& truth_topic) {
-  if (!bag_has_topic(bag_path, truth_topic, "imu_lab/ImuTruth")) return std::nullopt;
-  struct FirstFound {
+std::optional<TruthRecord> truth_at_start(const std::string& bag_path, const BagNavigationOptions& options) {
+  if (!bag_has_topic(bag_path, options.truth_topic, "imu_lab/ImuTruth")) return std::nullopt;
+  // The readers visit every message; an exception ends the visit at the one sought.
+  struct Found {
+    std::int64_t stamp_ns;
+  };
+  const std::string topic = choose_topic(bag_path, options.topic, datatype_of(options.input_type));
+  std::optional<std::int64_t> start_ns;
+  try {
+    if (options.input_type == InputType::kImu) {
+      for_each_imu(bag_path, topic, [](const ImuRecord& record) {
+        if (record.angular_rate_rad_s.allFinite() && record.specific_force_m_s2.allFinite()) throw Found{record.stamp_ns};
+      });
+    } else {
+      for_each_increment(bag_path, topic, [](const IncrementRecord& record) {
+        if (record.delta_angle_rad.allFinite() && record.delta_velocity_m_s.allFinite() && record.interval_s > 0.0) {
+          throw Found{record.stamp_ns};
+        }
+      });
+    }
+  } catch (const Found& found) {
+    start_ns = found.stamp_ns;
+  }
+  if (!start_ns) return std::nullopt;  // nothing to navigate; navigate_bag says so
+  struct FoundTruth {
     TruthRecord record;
   };
   try {
-    for_each_truth(bag_path, truth_topic, [](const TruthRecord& record) { throw FirstFound{record}; });
-  } catch (const FirstFound& found) {
+    for_each_truth(bag_path, options.truth_topic, [&](const TruthRecord& record) {
+      if (record.stamp_ns == *start_ns) throw FoundTruth{record};
+    });
+  } catch (const FoundTruth& found) {
     return found.record;
   }
-  return std::nullopt;
+  throw InputError("bag " + bag_path + ": " + options.truth_topic + " has no sample at " + format_stamp(*start_ns) +
+                   " s, the first stamp of " + topic + " where the run starts; give the initial state instead");
 }
 
 }  // namespace ros_io

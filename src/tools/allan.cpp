@@ -55,6 +55,9 @@ void print_summary(const imu_lab::ros_io::AllanBagPassResult& result, const imu_
                 static_cast<long long>(timing.duplicate_count), static_cast<long long>(timing.out_of_order_count),
                 non_finite);
   }
+  std::printf("%s", imu_lab::ros_io::format_impulse_events("allan: ", result.impulses).c_str());
+  std::printf("allan: output steps (LSB; none: not quantised): %s\n",
+              imu_lab::ros_io::format_output_steps(result.input, result.output_steps).c_str());
   for (const auto& path : files.written) std::printf("allan: wrote %s\n", path.c_str());
   if (!files.plot_problem.empty()) std::fprintf(stderr, "allan: warning: %s\n", files.plot_problem.c_str());
   for (const auto& problem : files.noise.problems) std::fprintf(stderr, "allan: identification: %s\n", problem.c_str());
@@ -99,6 +102,13 @@ int main(int argc, char** argv) {
   app.add_option("--gap-factor", engine.gap_factor, "an interval above this many tau0 is a gap")->capture_default_str();
   app.add_option("--warm-up-samples", engine.warm_up_sample_count, "samples that fix tau0 and the offsets")
       ->capture_default_str();
+  bool no_impulse_screen = false;
+  app.add_flag("--no-impulse-screen", no_impulse_screen,
+               "keep knocks and spikes in the curves (by default each is reported and its samples dropped, "
+               "which splits the run there)");
+  app.add_option("--impulse-threshold", options.screen.threshold_sigma,
+                 "a sample deviating from its local level by more than this many robust scales is a knock or spike")
+      ->capture_default_str();
   app.add_flag("--progress", progress, "progress bar on stderr even when it is not a terminal");
   app.add_flag("--no-plot", no_plot, "do not write allan.png");
   app.add_flag("--no-identify", no_identify, "do not fit the noise model (no noise.yaml, kalibr_imu.yaml)");
@@ -111,9 +121,13 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   options.input = imu_lab::ros_io::parse_allan_input("--input", input);
   identify.enabled = !no_identify;
+  options.screen.enabled = !no_impulse_screen;
   engine.stamp_policy = on_gap == "stop" ? imu_lab::allan::StampPolicy::kStop : imu_lab::allan::StampPolicy::kSplitAndPool;
 
   return imu_lab::run_tool_main("allan", [&] {
+    if (!(options.screen.threshold_sigma > imu_lab::allan::kScaleClipSigma)) {
+      throw imu_lab::ConfigError("allan", "--impulse-threshold", "must be a number of scales above 3 (default 12)");
+    }
     ProgressBar bar;
     if (progress || ::isatty(STDERR_FILENO)) {
       options.on_progress = [&](std::size_t processed, std::size_t total) { bar.update(processed, total); };
@@ -124,6 +138,8 @@ int main(int argc, char** argv) {
     run.topic = result.topic;
     run.input = result.input;
     run.engine = result.engine;
+    run.impulses = result.impulses;
+    run.output_steps = result.output_steps;
     const auto files = imu_lab::ros_io::write_allan_report(out_directory, run, result.snapshot, !no_plot, identify);
     print_summary(result, files);
     return 0;

@@ -30,7 +30,11 @@ std::string scratch_directory() {
 }
 
 CommandResult run_tool(const std::string& tool, const std::string& arguments) {
-  const std::string command = std::string(IMU_LAB_BIN_DIR) + "/" + tool + " " + arguments + " 2>&1";
+  return run_command(std::string(IMU_LAB_BIN_DIR) + "/" + tool + " " + arguments);
+}
+
+CommandResult run_command(const std::string& shell_command) {
+  const std::string command = shell_command + " 2>&1";
   CommandResult result;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) throw std::runtime_error("cannot run " + command);

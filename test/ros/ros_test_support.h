@@ -17,6 +17,8 @@ struct CommandResult {
 
 // Runs one of the package's executables (from the devel space) with arguments, shell-quoted.
 CommandResult run_tool(const std::string& tool, const std::string& arguments);
+// Runs a shell command (e.g. one of the package's scripts), stdout and stderr together.
+CommandResult run_command(const std::string& shell_command);
 
 std::string read_file(const std::string& path);
 // Writes the first `fraction` of source's bytes to destination (a recording cut short by a crash);

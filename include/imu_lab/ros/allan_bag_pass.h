@@ -1,13 +1,17 @@
 // One streaming Allan pass over a bag: the allan tool's whole computation, also used by the tests,
 // the rostest checkers and the benchmark. A reader thread deserialises messages into batches of
 // samples (a bounded queue, so memory stays bounded for any bag length) while the calling thread
-// pushes them into the streaming engine; nothing is written anywhere.
+// pushes them through the impulse screen (impulse_screen.h: knocks and spikes are recorded and
+// their samples dropped, so the engine splits the run there) into the streaming engine, and
+// watches every value for the output's step (output_step.h); nothing is written anywhere.
 #pragma once
 
 #include <cstddef>
 #include <functional>
 #include <string>
 
+#include "imu_lab/allan/impulse_screen.h"
+#include "imu_lab/allan/output_step.h"
 #include "imu_lab/allan/streaming_allan.h"
 #include "imu_lab/ros/allan_samples.h"
 
@@ -20,6 +24,8 @@ struct AllanBagPassOptions {
   // channel_count and input_kind are set from `input`; a bag shorter than warm_up_sample_count
   // warms up on all of its messages instead.
   allan::StreamingOptions engine;
+  // channel_count and gap_factor are set from the engine's.
+  allan::ImpulseScreenOptions screen;
   // Called on the computing thread after each batch: messages processed and the topic's total.
   std::function<void(std::size_t processed, std::size_t total)> on_progress;
 };
@@ -31,6 +37,8 @@ struct AllanBagPassResult {
   allan::StreamingOptions engine;  // as used
   std::size_t message_count = 0;
   allan::StreamingSnapshot snapshot;
+  allan::ImpulseScreenReport impulses;  // events found (and samples dropped) before the engine
+  std::vector<allan::ChannelOutputStep> output_steps;  // per channel, over every message's values
 };
 
 // Throws InputError naming the bag (and the topic) for an unreadable, truncated or corrupt bag,
