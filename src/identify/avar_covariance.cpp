@@ -236,6 +236,7 @@ struct OavarCovariance::Cache {
   std::vector<int> factors;
   double tau0_s = 0.0;
   long long sample_count = 0;
+  std::vector<double> variance_inflation;  // per factor: 1 / pooled term fraction (>= 1)
   std::vector<UnitTable> units;
   // Lag sums sum_h count c_i c_j (times the normaliser) per unit pair i <= j: the whole matrix
   // over factor pairs, or its diagonal only.
@@ -352,21 +353,40 @@ OavarCovariance::OavarCovariance(std::vector<int> averaging_factors, double tau0
   cache_->factors = std::move(averaging_factors);
   cache_->tau0_s = tau0_s;
   cache_->sample_count = sample_count;
+  cache_->variance_inflation.assign(cache_->factors.size(), 1.0);
 }
 
 OavarCovariance::~OavarCovariance() = default;
+
+void OavarCovariance::set_pooled_term_fractions(const std::vector<double>& fractions) {
+  if (fractions.size() != cache_->factors.size()) {
+    throw std::invalid_argument("OavarCovariance: " + std::to_string(fractions.size()) + " term fractions for " +
+                                std::to_string(cache_->factors.size()) + " averaging factors");
+  }
+  for (size_t i = 0; i < fractions.size(); ++i) {
+    if (!(fractions[i] > 0.0 && fractions[i] <= 1.0)) {
+      throw std::invalid_argument("OavarCovariance: a pooled term fraction must lie in (0, 1], not " +
+                                  std::to_string(fractions[i]));
+    }
+    cache_->variance_inflation[i] = 1.0 / fractions[i];
+  }
+}
 
 Eigen::MatrixXd OavarCovariance::covariance(const NoiseModel& model) {
   const int count = static_cast<int>(cache_->factors.size());
   Eigen::MatrixXd result = Eigen::MatrixXd::Zero(count, count);
   cache_->assemble<Eigen::MatrixXd>(model, false, &result);
-  return result;
+  const Eigen::VectorXd scale =
+      Eigen::Map<const Eigen::VectorXd>(cache_->variance_inflation.data(), count).cwiseSqrt();
+  return scale.asDiagonal() * result * scale.asDiagonal();
 }
 
 std::vector<double> OavarCovariance::variance(const NoiseModel& model) {
   Eigen::VectorXd result = Eigen::VectorXd::Zero(static_cast<int>(cache_->factors.size()));
   cache_->assemble<Eigen::VectorXd>(model, true, &result);
-  return std::vector<double>(result.data(), result.data() + result.size());
+  std::vector<double> variances(result.data(), result.data() + result.size());
+  for (size_t i = 0; i < variances.size(); ++i) variances[i] *= cache_->variance_inflation[i];
+  return variances;
 }
 
 double term_structure_function(const Term& term, double lag_s, double tau0_s) {

@@ -4,11 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <cstdio>
 #include <cstdlib>
 
 #include "imu_lab/identify/avar_covariance.h"
-#include "imu_lab/identify/avar_likelihood.h"
+#include "imu_lab/allan/confidence.h"
+#include "imu_lab/identify/chi_squared.h"
 #include "imu_lab/identify/descriptive_model.h"
 #include "imu_lab/identify/fit_warnings.h"
 #include "imu_lab/identify/profile_likelihood.h"
@@ -160,6 +160,7 @@ void describe_absent_terms(const SelectedModel& selected, const DataSpan& span, 
 std::vector<BandPoint> band_check(const std::vector<allan::StabilityPoint>& curve, const NoiseModel& model,
                                   const DataSpan& span) {
   std::vector<int> factors;
+  std::vector<double> fractions;
   std::vector<const allan::StabilityPoint*> usable;
   for (const auto& point : curve) {
     if (!(std::isfinite(point.deviation) && point.deviation > 0.0) || point.averaging_factor < 1 ||
@@ -167,10 +168,12 @@ std::vector<BandPoint> band_check(const std::vector<allan::StabilityPoint>& curv
       continue;
     }
     factors.push_back(point.averaging_factor);
+    fractions.push_back(point.pooled_term_fraction);
     usable.push_back(&point);
   }
-  const std::vector<double> variance = oavar_variance(model, factors, span.tau0_s, span.sample_count);
-  const double tail = 0.5 * (1.0 - kBandConfidence);
+  OavarCovariance covariance(factors, span.tau0_s, span.sample_count);
+  covariance.set_pooled_term_fractions(fractions);
+  const std::vector<double> variance = covariance.variance(model);
   std::vector<BandPoint> band;
   for (size_t k = 0; k < usable.size(); ++k) {
     BandPoint point;
@@ -179,11 +182,9 @@ std::vector<BandPoint> band_check(const std::vector<allan::StabilityPoint>& curv
     const double fitted_avar = model_avar(model, point.tau_s);
     point.fitted_deviation = std::sqrt(fitted_avar);
     point.edf = variance[k] > 0.0 ? 2.0 * fitted_avar * fitted_avar / variance[k] : 1e12;
-    const double edf = std::min(point.edf, 1e12);
-    point.lower = point.measured_deviation *
-                  std::min(1.0 - kBandMinimumHalfWidth, std::sqrt(edf / chi_squared_quantile(1.0 - tail, edf)));
-    point.upper = point.measured_deviation *
-                  std::max(1.0 + kBandMinimumHalfWidth, std::sqrt(edf / chi_squared_quantile(tail, edf)));
+    const BandLimits limits = band_limits(point.measured_deviation, point.edf);
+    point.lower = limits.lower;
+    point.upper = limits.upper;
     band.push_back(point);
   }
   return band;
@@ -193,6 +194,31 @@ std::vector<BandPoint> band_check(const std::vector<allan::StabilityPoint>& curv
 
 double quantization_density(double output_step, double tau0_s) {
   return output_step > 0.0 ? output_step / std::sqrt(12.0) * std::sqrt(tau0_s) : 0.0;
+}
+
+namespace {
+// One fewer term of this kind may enter: the count of a numbered kind drops below the model's.
+void leave_out_one(TermKind kind, const NoiseModel& model, FitOptions* options) {
+  int in_model = 0;
+  for (const Term& term : model.terms) in_model += term.kind == kind ? 1 : 0;
+  switch (kind) {
+    case TermKind::kWhiteAngle: options->allow_white_angle = false; break;
+    case TermKind::kWhiteRate: break;  // never left out
+    case TermKind::kBiasInstability: options->allow_bias_instability = false; break;
+    case TermKind::kRandomWalk: options->allow_random_walk = false; break;
+    case TermKind::kRateRamp: options->allow_rate_ramp = false; break;
+    case TermKind::kMarkov: options->max_markov_terms = in_model - 1; break;
+    case TermKind::kSinusoid: options->max_sinusoids = in_model - 1; break;
+    case TermKind::kResonance: options->max_resonances = in_model - 1; break;
+    case TermKind::kZeroDcFamily: options->allow_zero_dc_family = false; break;
+  }
+}
+}  // namespace
+
+BandLimits band_limits(double measured_deviation, double edf) {
+  const allan::DeviationBounds bounds = allan::chi_squared_bounds(measured_deviation, std::min(edf, 1e12), kBandConfidence);
+  return {std::min((1.0 - kBandMinimumHalfWidth) * measured_deviation, bounds.lower),
+          std::max((1.0 + kBandMinimumHalfWidth) * measured_deviation, bounds.upper)};
 }
 
 double ParameterEstimate::interval_low(double z) const { return value * std::exp(-z * log_sigma); }
@@ -206,6 +232,20 @@ std::string term_status_name(TermStatus status) {
 std::string sigma_source_name(SigmaSource source) {
   static const char* const kNames[] = {"none", "moment_covariance", "bootstrap"};
   return kNames[static_cast<int>(source)];
+}
+
+std::vector<const TermEstimate*> terms_in_report_order(const FitResult& fit) {
+  std::vector<const TermEstimate*> ordered;
+  for (TermKind kind : {TermKind::kWhiteRate, TermKind::kBiasInstability, TermKind::kRandomWalk,
+                        TermKind::kWhiteAngle, TermKind::kRateRamp}) {
+    for (const TermEstimate& term : fit.terms) {
+      if (term.kind == kind) ordered.push_back(&term);
+    }
+  }
+  for (const TermEstimate& term : fit.terms) {
+    if (std::find(ordered.begin(), ordered.end(), &term) == ordered.end()) ordered.push_back(&term);
+  }
+  return ordered;
 }
 
 const TermEstimate* FitResult::find(const std::string& name) const {
@@ -248,6 +288,7 @@ FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, doub
   const double quantization = quantization_density(options.output_quantization_step, tau0_s);
 
   OavarCovariance covariance(averaging_factors(fit.points), tau0_s, span.sample_count);
+  covariance.set_pooled_term_fractions(pooled_term_fractions(fit.points));
   // The weights stand on a description of the data (descriptive_model.h). The selection first
   // asks the model to describe the curve to 1 % in AVAR (the band's floor is +-1 % in
   // deviation); the discrepancy the selected model then leaves is estimated. Below 1 % (a model
@@ -255,16 +296,33 @@ FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, doub
   // full precision decides; above, the terms stay as selected and only their fit and sigmas take
   // the larger spread (selecting again under it would drop terms, raise the spread, and spiral).
   const NoiseModel first_weight_model = descriptive_model(fit.points, span, quantization);
-  SelectedModel selected =
-      select_model(fit.points, span, options, covariance, kInitialDiscrepancy, first_weight_model);
-  const int dof = static_cast<int>(fit.points.size()) - parameter_count(selected.structure);
-  const NoiseModel selected_model = model_from_log_parameters(selected.structure, selected.log_parameters);
-  const double discrepancy = estimate_discrepancy(fit.points, selected_model, covariance, dof);
-  if (discrepancy < kInitialDiscrepancy) {
-    selected = select_model(fit.points, span, options, covariance, discrepancy, selected_model, &selected);
-  } else {
-    refit_selected(fit.points, span, options, covariance, discrepancy, &selected);
+  const auto select = [&](const FitOptions& allowed) {
+    SelectedModel selected =
+        select_model(fit.points, span, allowed, covariance, kInitialDiscrepancy, first_weight_model);
+    const int dof = static_cast<int>(fit.points.size()) - parameter_count(selected.structure);
+    const NoiseModel selected_model = model_from_log_parameters(selected.structure, selected.log_parameters);
+    const double discrepancy = estimate_discrepancy(fit.points, selected_model, covariance, dof);
+    if (discrepancy < kInitialDiscrepancy) {
+      selected = select_model(fit.points, span, allowed, covariance, discrepancy, selected_model, &selected);
+    } else {
+      refit_selected(fit.points, span, allowed, covariance, discrepancy, &selected);
+    }
+    return selected;
+  };
+  // A term that claims more than the curve holds is not reported present: its kind is left out
+  // and the selection runs again (a few times at most; a model that still claims is warned about).
+  constexpr int kMaxReselections = 3;
+  FitOptions allowed = options;
+  SelectedModel selected = select(allowed);
+  for (int attempt = 0; attempt < kMaxReselections; ++attempt) {
+    const NoiseModel model = model_from_log_parameters(selected.structure, selected.log_parameters);
+    const int claiming = term_claiming_more_than_the_curve(fit.points, model, selected.weights);
+    if (claiming < 0) break;
+    leave_out_one(model.terms[claiming].kind, model, &allowed);
+    selected = select(allowed);
   }
+  fit.span = span;
+  fit.weights = selected.weights;
   fit.structure = selected.structure;
   fit.log_parameters = selected.log_parameters;
   fit.selection_steps = selected.steps;

@@ -102,6 +102,12 @@ std::vector<int> averaging_factors(const std::vector<FitPoint>& points) {
   return factors;
 }
 
+std::vector<double> pooled_term_fractions(const std::vector<FitPoint>& points) {
+  std::vector<double> fractions;
+  for (const FitPoint& point : points) fractions.push_back(point.pooled_term_fraction);
+  return fractions;
+}
+
 MomentWeights moment_weights(const std::vector<FitPoint>& points, const NoiseModel& model,
                              OavarCovariance& model_covariance, double discrepancy) {
   // Relative covariance: cov(nu_i, nu_j) / (nu_i nu_j) is the covariance of ln nu to first order;
@@ -112,8 +118,10 @@ MomentWeights moment_weights(const std::vector<FitPoint>& points, const NoiseMod
       level.cwiseInverse().asDiagonal() * model_covariance.covariance(model) * level.cwiseInverse().asDiagonal();
   MomentWeights weights;
   weights.log_bias = Eigen::VectorXd(points.size());
+  weights.edf = Eigen::VectorXd(points.size());
   for (size_t k = 0; k < points.size(); ++k) {
-    weights.log_bias(k) = mean_log_scaled_chi_squared(2.0 / covariance(k, k));
+    weights.edf(k) = 2.0 / covariance(k, k);
+    weights.log_bias(k) = mean_log_scaled_chi_squared(weights.edf(k));
     covariance(k, k) += discrepancy * discrepancy;
   }
   Eigen::LLT<Eigen::MatrixXd> factor(covariance);
@@ -160,7 +168,9 @@ void log_parameter_bounds(const ModelStructure& structure, const DataSpan& span,
     double low = 0.0, high = 0.0;
     switch (slot.kind) {
       case TermKind::kMarkov:
-        low = span.tau_min_s / 4.0;
+        // Faster than the shortest tau a Markov term is low-passed white noise: the front end's
+        // job (a white rate term with its corner), not a Markov term's.
+        low = span.tau_min_s;
         high = 2.0 * span.record_length_s;
         break;
       case TermKind::kSinusoid:
@@ -175,7 +185,9 @@ void log_parameter_bounds(const ModelStructure& structure, const DataSpan& span,
         high = nyquist_hz;
         break;
       case TermKind::kWhiteRate:
-        low = 0.01 / span.tau0_s;
+        // An anti-alias filter sits near the Nyquist frequency; a corner far inside the band is
+        // a Markov process in the signal, which the Markov term describes.
+        low = 0.1 / span.tau0_s;
         high = 5.0 / span.tau0_s;
         break;
       default:  // zero-DC family beta

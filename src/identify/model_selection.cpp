@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <cstdio>
 #include <cstdlib>
 
-#include "imu_lab/identify/avar_likelihood.h"
+#include "imu_lab/identify/chi_squared.h"
+#include "imu_lab/identify/fit_result.h"
 #include "imu_lab/identify/start_values.h"
 
 namespace imu_lab {
@@ -136,7 +136,6 @@ Addition best_addition(const SelectionContext& context, const ModelStructure& ba
     ModelStructure extended;
     const SolveOutcome outcome =
         fit_with_new_slot(context, base, base_parameters, candidates[c], weights, &extended);
-    if (std::getenv("IMU_LAB_DEBUG_FIT")) std::fprintf(stderr, "DEBUG   candidate %s usable %d cost %g (base %zu slots)\n", term_kind_name(candidates[c].kind).c_str(), outcome.usable, outcome.cost, base.slots.size());
     if (!outcome.usable) continue;
     // The distance left plus half the candidate's threshold: among candidates of different
     // parameter counts (a sinusoid or a resonance for one peak) the one whose fall of J clears
@@ -257,8 +256,8 @@ bool front_end_pass(const SelectionContext& context, SelectedModel* current) {
   return false;
 }
 
-// Backward: drop the least significant term while its removal is not significant; the dropped
-// slots go back to `remaining`. True if any was dropped.
+// Backward: drop the least significant term (never the white rate noise) while its removal is
+// not significant; the dropped slots go back to `remaining`. True if any was dropped.
 bool backward_pass(const SelectionContext& context, std::vector<TermSlot>* remaining, SelectedModel* current) {
   bool removed_any = false;
   while (current->structure.slots.size() > 1) {
@@ -269,6 +268,9 @@ bool backward_pass(const SelectionContext& context, std::vector<TermSlot>* remai
     SolveOutcome worst_outcome;
     ModelStructure worst_structure;
     for (int i = 0; i < slot_count; ++i) {
+      // White rate noise is every sensor's floor: a Markov term or a peak may not stand in for it
+      // (its front end does that job).
+      if (current->structure.slots[i].kind == TermKind::kWhiteRate) continue;
       ModelStructure reduced = current->structure;
       std::vector<double> reduced_parameters = current->log_parameters;
       remove_slot(reduced, reduced_parameters, i);
@@ -382,6 +384,21 @@ SolveOutcome refit_structure(const std::vector<FitPoint>& points, const ModelStr
   std::vector<std::vector<double>> starts;
   for (double factor : {1.0, 0.7, 1.4}) starts.push_back(scaled_amplitudes(structure, start, factor));
   return best_of(points, structure, starts, static_cast<int>(starts.size()), span, weights);
+}
+
+int term_claiming_more_than_the_curve(const std::vector<FitPoint>& points, const NoiseModel& model,
+                                      const MomentWeights& weights) {
+  for (size_t k = 0; k < points.size(); ++k) {
+    const double upper = band_limits(std::sqrt(points[k].avar), weights.edf(k)).upper;
+    for (size_t i = 0; i < model.terms.size(); ++i) {
+      const Term& term = model.terms[i];
+      const bool grows_with_tau = term.kind == TermKind::kRandomWalk || term.kind == TermKind::kRateRamp;
+      if (grows_with_tau && term_avar(term, points[k].tau_s) > upper * upper) {
+        return static_cast<int>(i);
+      }
+    }
+  }
+  return -1;
 }
 
 SelectedModel select_model(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "imu_lab/identify/avar_likelihood.h"
+#include "imu_lab/identify/chi_squared.h"
 #include "imu_lab/identify/start_values.h"
 
 namespace imu_lab {

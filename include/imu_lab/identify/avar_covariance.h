@@ -45,6 +45,14 @@ class OavarCovariance {
   // The diagonal only (each estimate's variance); cheaper for many factors.
   std::vector<double> variance(const NoiseModel& model);
 
+  // Estimates pooled over segments (a gap or a knock split the record) hold a fraction of the
+  // terms one contiguous record would (allan::StabilityPoint::pooled_term_fraction), per factor.
+  // Each variance then grows by its inverse and the correlations are kept: segments much longer
+  // than 2 m average like one record of their summed length, and where a single segment
+  // reaches, the fraction is that segment's share. Throws std::invalid_argument on a size
+  // mismatch or a fraction outside (0, 1].
+  void set_pooled_term_fractions(const std::vector<double>& fractions);
+
  private:
   struct Cache;
   std::unique_ptr<Cache> cache_;

@@ -16,14 +16,21 @@ struct FitPoint {
   double tau_s = 0.0;
   int averaging_factor = 0;  // m = tau / tau0
   double avar = 0.0;         // measured overlapping Allan variance
+  double pooled_term_fraction = 1.0;  // allan::StabilityPoint's: below 1 when pooled over segments
 };
 
 // The default spacing of the fit points: a factor sqrt(2) in tau (two per octave).
 constexpr double kFitPointRatio = 1.41;
+// The ladder of averaging factors round(10^(k / 5)), k = 0, 1, ...: every decade grid of 5, 10,
+// 20, 30 ... points per decade holds it exactly.
+constexpr double kLadderPointsPerDecade = 5.0;
 
-// Keeps, in increasing tau, each usable point (finite, deviation > 0, m >= 1) whose tau is at
-// least `min_ratio` times the last kept one. Throws InputError (common/config_error.h) naming the
-// problem when fewer than 3 points remain or taus are not increasing.
+// When the curve's grid holds at least 80 % of the ladder up to its largest usable factor, the
+// usable points on the ladder: the same points whatever the grid's density, so a denser grid
+// changes neither the estimate nor the selection. Otherwise (octaves, hand-picked taus) each
+// usable point (finite, deviation > 0, m >= 1) whose tau is at least `min_ratio` times the last
+// kept one. Throws InputError (common/config_error.h) naming the problem when fewer than 3
+// points remain or taus are not increasing.
 std::vector<FitPoint> select_fit_points(const std::vector<allan::StabilityPoint>& points,
                                         double min_ratio = kFitPointRatio);
 

@@ -39,6 +39,7 @@ struct MomentWeights {
   Eigen::MatrixXd whitening;  // L^-1
   Eigen::VectorXd log_bias;   // E ln(chi2_e / e) at each point's EDF under the weighing model
   double discrepancy = 0.0;   // relative standard deviation added to every point
+  Eigen::VectorXd edf;        // 2 / relative variance of each estimate under the weighing model
 };
 
 // E ln(chi2_e / e) = digamma(e / 2) - ln(e / 2).
@@ -53,6 +54,8 @@ MomentWeights moment_weights(const std::vector<FitPoint>& points, const NoiseMod
 
 // The averaging factors of the points, in order (what an OavarCovariance for them needs).
 std::vector<int> averaging_factors(const std::vector<FitPoint>& points);
+// Their pooled term fractions (OavarCovariance::set_pooled_term_fractions).
+std::vector<double> pooled_term_fractions(const std::vector<FitPoint>& points);
 
 struct SolveOutcome {
   std::vector<double> log_parameters;
@@ -64,9 +67,9 @@ struct SolveOutcome {
 constexpr double kSmallestResonanceRelativeWidth = 0.02;
 
 // Bounds of each ln-parameter: amplitudes in a wide finite box (see the source); Markov T_c in
-// [tau_min / 4, 2 T]; sinusoid and bias cutoff frequencies in [1 / T, 1 / (2 tau0)]; resonance
+// [tau_min, 2 T]; sinusoid and bias cutoff frequencies in [1 / T, 1 / (2 tau0)]; resonance
 // f_n in [0.05 / tau0, 1 / (2 tau0)] and width / f_n in [0.02, 1.9]; a white rate's front-end
-// corner in [0.01 / tau0, 5 / tau0]; zero-DC beta in [tau0, T].
+// corner in [0.1 / tau0, 5 / tau0]; zero-DC beta in [tau0, T].
 void log_parameter_bounds(const ModelStructure& structure, const DataSpan& span,
                           std::vector<double>* lower, std::vector<double>* upper);
 

@@ -11,6 +11,7 @@
 
 #include "imu_lab/identify/fit_options.h"
 #include "imu_lab/identify/fit_points.h"
+#include "imu_lab/identify/fit_problem.h"
 #include "imu_lab/identify/graphical_readings.h"
 #include "imu_lab/identify/model_selection.h"
 #include "imu_lab/identify/model_structure.h"
@@ -85,6 +86,13 @@ struct BandPoint {
 constexpr double kBandConfidence = 0.95;
 constexpr double kBandMinimumHalfWidth = 0.01;
 
+// The band around a measured deviation estimated with `edf` degrees of freedom.
+struct BandLimits {
+  double lower = 0.0;
+  double upper = 0.0;
+};
+BandLimits band_limits(double measured_deviation, double edf);
+
 struct FitResult {
   NoiseModel model;  // the terms in the model (present and unconstrained), canonical order
   ModelStructure structure;
@@ -99,12 +107,18 @@ struct FitResult {
   std::vector<SelectionStep> selection_steps;
   double tau0_s = 0.0;
   double record_length_s = 0.0;
+  DataSpan span;
+  MomentWeights weights;  // the final fit's (profiles and the bootstrap's refits use them)
   FitOptions options;
 
   // The term with this name, or nullptr.
   const TermEstimate* find(const std::string& name) const;
   TermEstimate* find(const std::string& name);
 };
+
+// The five IEEE Std 952 terms first, N (white rate), B, K, Q, R, then the others in model order:
+// the order of every report.
+std::vector<const TermEstimate*> terms_in_report_order(const FitResult& fit);
 
 }  // namespace identify
 }  // namespace imu_lab

@@ -50,6 +50,14 @@ std::vector<TermSlot> candidate_slots(const FitOptions& options, const DataSpan&
 // statistic is the best of ~point_count tries: Bonferroni, significance / point_count.
 double slot_lr_threshold(const FitOptions& options, const TermSlot& slot, int point_count);
 
+// A rising term (K, R) whose own AVAR exceeds the measured band's upper bound (fit_result.h) at
+// a fit point claims more than the curve holds (a K that runs past a curve turning down): the
+// index of the first such term of `model`, or -1. The other terms are judged by where they
+// dominate, so a partial above the band there is the fit's excursion, named in the warnings
+// (on exact curves the band is +-1 %, and a hump or the white floor may graze it).
+int term_claiming_more_than_the_curve(const std::vector<FitPoint>& points, const NoiseModel& model,
+                                      const MomentWeights& weights);
+
 // Selects from scratch or from `start`; the first weights come from `first_weight_model` (a
 // description of the whole curve), then from each accepted model. `covariance` holds the
 // points' averaging factors; `discrepancy` is the relative spread added to every point.
