@@ -76,5 +76,24 @@ double zero_dc_family_avar(double n, double alpha, double beta, double tau) {
   return alpha * std::tgamma(n - 1.0) / (2.0 * kPi * kPi * tau * tau) * bracket.real();
 }
 
+double resonance_angle_correlation(double natural_frequency_hz, double width_hz, double lag_s) {
+  if (!(width_hz > 0.0) || !(width_hz < 2.0 * natural_frequency_hz)) {
+    throw std::invalid_argument("resonance: need 0 < width < 2 natural frequency (underdamped)");
+  }
+  const double omega_n = 2.0 * kPi * natural_frequency_hz;
+  const double zeta = width_hz / (2.0 * natural_frequency_hz);
+  const double root = std::sqrt(1.0 - zeta * zeta);
+  const double u = std::abs(lag_s);
+  return std::exp(-zeta * omega_n * u) *
+         (std::cos(omega_n * root * u) + zeta / root * std::sin(omega_n * root * u));
+}
+
+double resonance_avar(double rms, double natural_frequency_hz, double width_hz, double tau) {
+  const double angle_sigma = rms / (2.0 * kPi * natural_frequency_hz);
+  const double rho_1 = resonance_angle_correlation(natural_frequency_hz, width_hz, tau);
+  const double rho_2 = resonance_angle_correlation(natural_frequency_hz, width_hz, 2.0 * tau);
+  return angle_sigma * angle_sigma * (3.0 - 4.0 * rho_1 + rho_2) / (tau * tau);
+}
+
 }  // namespace noise
 }  // namespace imu_lab

@@ -26,6 +26,14 @@ double sinusoid_avar(double amplitude, double frequency_hz, double tau_s);
 // (Table 7.2's f^2 row misprints alpha^2 for alpha; its f^3 row disagrees with table 7.1 and
 // with the numerical integral of eq. 5.1 by ~6 %, so it is not used.)
 double zero_dc_family_avar(double exponent_n, double alpha, double beta_s, double tau_s);
+// A damped second-order band-pass resonance in the rate (a mechanical mode: y = dz/dt with
+// z'' + 2 zeta w_n z' + w_n^2 z = white), of RMS rate `rms`, natural frequency f_n and -3 dB width
+// 2 zeta f_n (zeta < 1). Its integral z is stationary with variance (rms / w_n)^2 and
+// correlation rho(u) = e^{-zeta w_n u} (cos w_d u + zeta / sqrt(1 - zeta^2) sin w_d u), so
+// AVAR = (rms / w_n)^2 (3 - 4 rho(tau) + rho(2 tau)) / tau^2.
+double resonance_avar(double rms, double natural_frequency_hz, double width_hz, double tau_s);
+// rho(u) above; throws std::invalid_argument unless 0 < width_hz < 2 natural_frequency_hz.
+double resonance_angle_correlation(double natural_frequency_hz, double width_hz, double lag_s);
 
 }  // namespace noise
 }  // namespace imu_lab
