@@ -64,10 +64,10 @@ struct RunSummary {
 };
 
 // One run's samples (each row gyro x..z, accelerometer x..z) at sample period tau0_s. The mean's
-// uncertainty is the overlapping Allan deviation extrapolated to tau = the run's length along the
-// slope of its last two octave points (slope clamped to [-1/2, +1/2], white rate to rate random
-// walk): for white noise and a random walk from zero, AVAR(tau) is exactly the variance of a
-// tau-average (IEEE Std 952 annex C), so at tau = T it is the variance of the run's mean.
+// uncertainty is the overlapping Allan deviation extrapolated to tau = the run's length T along an
+// EDF-weighted log-log line through its octave points from T/64 on (slope clamped to [-1/2, +1/2],
+// white rate to rate random walk): for white noise and a random walk from zero, AVAR(tau) is
+// exactly the variance of a tau-average (IEEE Std 952 annex C), so at T, that of the run's mean.
 // Throws std::invalid_argument for fewer than 16 samples, tau0_s <= 0 or a non-finite value.
 RunSummary summarise_run(const std::string& name, const std::vector<std::array<double, kChannelCount>>& samples,
                          double tau0_s);
