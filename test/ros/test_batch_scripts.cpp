@@ -73,7 +73,7 @@ TEST(BatchScripts, BatchSlurmArrayAndMergeGiveOneTable) {
   EXPECT_EQ(table, read_file(directory + "/merged_array/results.csv"));
   EXPECT_EQ(count_lines_containing(table, ",all,samples,"), 3u) << table;
   EXPECT_NE(table.find("unit_b_0,all,samples,6000"), std::string::npos) << table;
-  EXPECT_EQ(count_lines_containing(table, "min_oadev_"), 18u) << table;
+  EXPECT_EQ(count_lines_containing(table, "min_oadev_"), 36u) << table;  // value and tau, 6 channels, 3 recordings
   EXPECT_TRUE(file_exists(directory + "/merged_batch/results.md"));
 }
 
