@@ -12,14 +12,10 @@ import csv
 import os
 import sys
 
-import matplotlib
+from plot_thermal import UNITS  # deg/h and micro-g as in the thermal plot; it also selects the Agg backend
 
-matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-DEG_H_PER_RAD_S = 180.0 / 3.141592653589793 * 3600.0
-MICRO_G_PER_M_S2 = 1e6 / 9.80665
-UNITS = {"rad_s": (DEG_H_PER_RAD_S, "deg/h"), "m_s2": (MICRO_G_PER_M_S2, "micro-g")}
 CHANNELS = ["gyro_x", "gyro_y", "gyro_z", "accel_x", "accel_y", "accel_z"]
 
 
@@ -46,6 +42,7 @@ def main(csv_path, png_path):
         axis.set_xlabel("run")
         axis.set_ylabel(f"bias [{unit}]")
         axis.grid(alpha=0.3)
+        axis.ticklabel_format(axis="y", useOffset=False)
         if index == 0:
             axis.legend(fontsize=7)
     figure.tight_layout()

@@ -217,7 +217,8 @@ std::string repeatability_yaml(const RepeatabilityTable& table) {
       for (const IdentifiedTerm& term : run.terms) {
         out << YAML::Flow << YAML::BeginMap << YAML::Key << "channel" << YAML::Value << term.channel << YAML::Key
             << "term" << YAML::Value << term.term << YAML::Key << "value" << YAML::Value << term.value << YAML::Key
-            << "sigma" << YAML::Value << term.sigma << YAML::Key << "unit" << YAML::Value << term.unit << YAML::EndMap;
+            << "sigma" << YAML::Value << term.sigma << YAML::Key << "parameter" << YAML::Value << term.parameter
+            << YAML::EndMap;
       }
       out << YAML::EndSeq;
     }

@@ -45,14 +45,14 @@ struct RunChannel {
 
 // An identified noise term of one run (e.g. channel gyro_x, term bias_instability).
 struct IdentifiedTerm {
-  std::string channel, term, unit;
+  std::string channel, term, parameter;  // parameter: symbol and unit, e.g. N_rad_s_per_sqrt_hz
   double value = 0.0, sigma = 0.0;
 };
 
 // The identified terms of a noise report, from its numeric leaves as
 // identify::read_noise_report_values gives them ("triads.gyro.axes.gyro_x.terms.white_rate.
 // N_rad_s_per_sqrt_hz" with its "..._sigma"): every value that has a sigma, in each unit the
-// report gives (the unit is the parameter's key).
+// report gives.
 std::vector<IdentifiedTerm> identified_terms(const std::map<std::string, double>& report_values);
 
 struct RunSummary {
