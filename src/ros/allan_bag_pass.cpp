@@ -43,15 +43,17 @@ void read_batches(OpenBag& bag, const std::string& topic, AllanInput input, Boun
 
 }  // namespace
 
-AllanBagPassResult run_allan_bag_pass(const std::string& bag_path, const AllanBagPassOptions& options) {
+AllanBagPassResult run_allan_bag_pass(const BagRecording& recording, const AllanBagPassOptions& options) {
   AllanBagPassResult result;
-  result.bag_path = bag_path;
+  result.bag_path = recording.name();
+  result.window = recording.window;
   result.input = options.input;
   // Opened once: each opening reads the bag's whole index again.
-  OpenBag bag(bag_path);
+  OpenBag bag(recording);
+  result.files = bag.ordered_paths();
   const TopicInfo topic = bag.choose_topic(options.topic, allan_input_datatype(options.input));
   result.topic = topic.name;
-  const std::string where = "bag " + bag_path + ", topic " + result.topic;
+  const std::string where = "bag " + recording.name() + ", topic " + result.topic;
   const std::size_t total = topic.message_count;
   if (total < kMinimumMessages) {
     throw InputError(where + " has " + std::to_string(total) + " messages; an Allan analysis needs at least " +
@@ -112,13 +114,22 @@ AllanBagPassResult run_allan_bag_pass(const std::string& bag_path, const AllanBa
   }
   reader.join();
   if (reader_error) std::rethrow_exception(reader_error);
+  result.joins = bag.joins();
+  const std::string window_text = " in the window (" + describe_time_window(result.window) + ")";
+  if (result.message_count < kMinimumMessages) {
+    throw InputError(where + " has " + std::to_string(result.message_count) + " messages" + window_text +
+                     "; an Allan analysis needs at least " + std::to_string(kMinimumMessages));
+  }
+  // A window leaves the progress short of the topic's total; say it is done.
+  if (options.on_progress && result.message_count < total) options.on_progress(total, total);
 
   result.snapshot = engine.snapshot();
   result.impulses = screen.report();
   result.output_steps = steps.channels();
   if (!result.snapshot.warmed_up) {
-    throw InputError(where + ": the " + std::to_string(result.message_count) +
-                     " messages have too few regular stamps to estimate the sample period");
+    throw InputError(where + ": the " + std::to_string(result.message_count) + " messages" +
+                     (result.window.is_whole() ? "" : window_text) +
+                     " have too few regular stamps to estimate the sample period");
   }
   return result;
 }

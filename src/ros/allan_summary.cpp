@@ -130,6 +130,21 @@ void emit_impulses(YAML::Emitter& out, const AllanRunDescription& run) {
   out << YAML::EndMap;
 }
 
+// The files of a split recording in the order read, and the gap at each join (the engine treats
+// it like any gap in the stamps: the timing section counts it).
+void emit_split_files(YAML::Emitter& out, const AllanRunDescription& run) {
+  out << YAML::Key << "files" << YAML::Value << YAML::BeginSeq;
+  for (const std::string& file : run.files) out << file;
+  out << YAML::EndSeq;
+  out << YAML::Key << "file_joins" << YAML::Value << YAML::BeginSeq;
+  for (const FileJoin& join : run.joins) {
+    out << YAML::Flow << YAML::BeginMap << YAML::Key << "before" << YAML::Value << join.before_path << YAML::Key
+        << "after" << YAML::Value << join.after_path << YAML::Key << "gap_s" << YAML::Value << join.gap_s
+        << YAML::EndMap;
+  }
+  out << YAML::EndSeq;
+}
+
 }  // namespace
 
 const allan::StabilityPoint* minimum_point(const std::vector<allan::StabilityPoint>& curve) {
@@ -145,6 +160,14 @@ std::string format_allan_summary(const AllanRunDescription& run, const allan::St
   out << YAML::BeginMap;
   out << YAML::Key << "format" << YAML::Value << "imu_lab_allan_summary";
   if (!run.bag.empty()) out << YAML::Key << "bag" << YAML::Value << run.bag;
+  if (run.files.size() > 1) emit_split_files(out, run);
+  if (!run.bag.empty()) {
+    out << YAML::Key << "time_window" << YAML::Value << YAML::BeginMap;
+    out << YAML::Key << "description" << YAML::Value << describe_time_window(run.window);
+    out << YAML::Key << "start_s" << YAML::Value << run.window.start_s;
+    if (std::isfinite(run.window.end_s)) out << YAML::Key << "end_s" << YAML::Value << run.window.end_s;
+    out << YAML::EndMap;
+  }
   out << YAML::Key << "topic" << YAML::Value << run.topic;
   out << YAML::Key << "input" << YAML::Value << allan_input_name(run.input);
   out << YAML::Key << "message_type" << YAML::Value << allan_input_datatype(run.input);

@@ -27,22 +27,22 @@ bool StrictImuCheck::accept(const ImuRecord& record) {
   return !first_bad_stamp_ns_;
 }
 
-void StrictImuCheck::throw_if_refused(const std::string& bag_path, const std::string& topic) const {
+void StrictImuCheck::throw_if_refused(const BagRecording& recording, const std::string& topic) const {
   if (non_finite_ + unordered_ == 0) return;
-  throw InputError("bag " + bag_path + ", topic " + topic + ": " + std::to_string(non_finite_) +
+  throw InputError("bag " + recording.name() + ", topic " + topic + ": " + std::to_string(non_finite_) +
                    " samples with NaN/Inf and " + std::to_string(unordered_) +
                    " stamps not after the previous one (duplicate or out of order), the first at " +
                    seconds_text(*first_bad_stamp_ns_) + "; this tool uses every sample, so nothing was computed or "
                    "written: repair the recording (or cut the bad part out with `rosbag filter`)");
 }
 
-std::size_t for_each_imu_strictly(const std::string& bag_path, const std::string& topic,
+std::size_t for_each_imu_strictly(const BagRecording& recording, const std::string& topic,
                                   const std::function<void(const ImuRecord&)>& on_record) {
   StrictImuCheck check;
-  const std::size_t count = for_each_imu(bag_path, topic, [&](const ImuRecord& record) {
+  const std::size_t count = for_each_imu(recording, topic, [&](const ImuRecord& record) {
     if (check.accept(record)) on_record(record);
   });
-  check.throw_if_refused(bag_path, topic);
+  check.throw_if_refused(recording, topic);
   return count;
 }
 

@@ -15,6 +15,7 @@
 #include "imu_lab/ros/allan_bag_pass.h"
 #include "imu_lab/ros/allan_report.h"
 #include "imu_lab/ros/noise_table.h"
+#include "imu_lab/ros/recording_arguments.h"
 
 namespace {
 
@@ -46,6 +47,13 @@ void print_summary(const imu_lab::ros_io::AllanBagPassResult& result, const imu_
   std::printf("allan: %s, topic %s: %lld samples, tau0 %.9g s (%.6g Hz), interval jitter rms %.3g s, max %.3g s\n",
               result.bag_path.c_str(), result.topic.c_str(), static_cast<long long>(timing.input_sample_count),
               timing.tau0_s, 1.0 / timing.tau0_s, timing.interval_rms_deviation_s, timing.interval_max_deviation_s);
+  if (!result.window.is_whole()) {
+    std::printf("allan: time window: %s\n", imu_lab::ros_io::describe_time_window(result.window).c_str());
+  }
+  if (result.files.size() > 1) {
+    std::printf("allan: %zu split files read in stamp order as one recording; %s\n", result.files.size(),
+                imu_lab::ros_io::describe_joins(result.joins).c_str());
+  }
   long long non_finite = 0;
   for (const auto& channel : result.snapshot.channels) non_finite += channel.non_finite_count;
   if (timing.gap_count + timing.duplicate_count + timing.out_of_order_count + non_finite > 0) {
@@ -71,7 +79,7 @@ void print_summary(const imu_lab::ros_io::AllanBagPassResult& result, const imu_
 
 int main(int argc, char** argv) {
   CLI::App app{"Allan-family stability curves of an IMU bag: CSV per statistic, YAML summary, plot."};
-  std::string bag_path;
+  imu_lab::ros_io::RecordingArguments recording;
   std::string out_directory = "allan_report";
   std::string on_gap = "split";
   std::string input = "rate";
@@ -81,7 +89,7 @@ int main(int argc, char** argv) {
   imu_lab::ros_io::AllanIdentifyOptions identify;
   imu_lab::ros_io::AllanBagPassOptions options;
   auto& engine = options.engine;
-  app.add_option("bag", bag_path, "bag to read")->required();
+  imu_lab::ros_io::add_recording_arguments(app, recording, "bag to read", true);
   app.add_option("--topic", options.topic, "topic (default: the only one of the input's message type)");
   app.add_option("-o,--out", out_directory, "report directory (created)")->capture_default_str();
   app.add_option("--input", input, "rate (sensor_msgs/Imu) or increment (imu_lab/ImuIncrement)")
@@ -132,9 +140,12 @@ int main(int argc, char** argv) {
     if (progress || ::isatty(STDERR_FILENO)) {
       options.on_progress = [&](std::size_t processed, std::size_t total) { bar.update(processed, total); };
     }
-    const auto result = imu_lab::ros_io::run_allan_bag_pass(bag_path, options);
+    const auto result = imu_lab::ros_io::run_allan_bag_pass(recording.recording(), options);
     imu_lab::ros_io::AllanRunDescription run;
-    run.bag = bag_path;
+    run.bag = result.bag_path;
+    run.files = result.files;
+    run.window = result.window;
+    run.joins = result.joins;
     run.topic = result.topic;
     run.input = result.input;
     run.engine = result.engine;

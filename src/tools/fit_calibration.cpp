@@ -15,6 +15,7 @@
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/ros/config_paths.h"
 #include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/ros/recording_arguments.h"
 #include "imu_lab/ros/strict_imu_reading.h"
 
 namespace {
@@ -39,11 +40,12 @@ imu_lab::emulator::EarthModel earth_model_named(const std::string& name) {
 
 int main(int argc, char** argv) {
   CLI::App app{"Bench calibration of an IMU bag: bias and full scale/misalignment matrix of gyros and accelerometers."};
-  std::string bag_path, topic, schedule_name, out_path, earth_model = "wgs84_rotating";
+  imu_lab::ros_io::RecordingArguments recording;
+  std::string topic, schedule_name, out_path, earth_model = "wgs84_rotating";
   double latitude_deg = 0.0, height_m = 0.0;
   std::size_t held_out_last = 0;
   imu_lab::calib::CalibrationOptions options;
-  app.add_option("bag", bag_path, "calibration bag")->required();
+  imu_lab::ros_io::add_recording_arguments(app, recording, "calibration bag", true);
   app.add_option("--out", out_path, "calibration YAML to write (beside it: *_kalibr_imu_chain.yaml, *_report.txt)")
       ->required();
   app.add_option("--topic", topic, "sensor_msgs/Imu topic (default: the only one in the bag)");
@@ -70,12 +72,14 @@ int main(int argc, char** argv) {
       options.site.height_m = height_m;
       options.site.earth_model = earth_model_named(earth_model);
     }
-    topic = imu_lab::ros_io::choose_imu_topic(bag_path, topic);
+    const imu_lab::ros_io::BagRecording bag = recording.recording();
+    topic = imu_lab::ros_io::choose_imu_topic(bag, topic);
     std::vector<imu_lab::calib::CalibrationSample> samples;
-    imu_lab::ros_io::for_each_imu_strictly(bag_path, topic, [&](const imu_lab::ros_io::ImuRecord& record) {
+    imu_lab::ros_io::for_each_imu_strictly(bag, topic, [&](const imu_lab::ros_io::ImuRecord& record) {
       samples.push_back({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2});
     });
-    if (samples.size() < 2) throw imu_lab::InputError("bag " + bag_path + ": topic " + topic + " has too few messages");
+    if (samples.size() < 2) throw imu_lab::InputError("bag " + bag.name() + ": topic " + topic + " has too few messages (" +
+                                                       imu_lab::ros_io::describe_time_window(bag.window) + ")");
     // Held out at the end, like the thesis's verification run after the calibration run.
     const std::size_t rests = imu_lab::calib::detect_static_intervals(samples, options.static_detection).intervals.size();
     for (std::size_t k = rests > held_out_last ? rests - held_out_last : 0; k < rests; ++k) {
@@ -88,7 +92,8 @@ int main(int argc, char** argv) {
     imu_lab::write_file_atomically(beside(out_path, "_kalibr_imu_chain.yaml"),
                                    imu_lab::calib::kalibr_imu_chain_yaml(result, topic, rate_hz));
     imu_lab::write_file_atomically(beside(out_path, "_report.txt"), report);
-    std::cout << report << "\nwrote " << out_path << ", " << beside(out_path, "_kalibr_imu_chain.yaml") << ", "
+    std::cout << "fit_calibration: " << bag.name() << ", " << imu_lab::ros_io::describe_time_window(bag.window)
+              << "\n" << report << "\nwrote " << out_path << ", " << beside(out_path, "_kalibr_imu_chain.yaml") << ", "
               << beside(out_path, "_report.txt") << "\n";
     return 0;
   });

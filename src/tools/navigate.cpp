@@ -21,6 +21,7 @@
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/ros/bag_navigation.h"
 #include "imu_lab/ros/navigation_csv.h"
+#include "imu_lab/ros/recording_arguments.h"
 
 namespace {
 
@@ -29,7 +30,8 @@ constexpr double kArcsecPerRad = 180.0 / M_PI * 3600.0;
 constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
 
 struct CommandLine {
-  std::string bag_path, out_path, errors_path, plot_path;
+  imu_lab::ros_io::RecordingArguments recording;
+  std::string out_path, errors_path, plot_path;
   std::string input_type = "imu", heading_source = "gyrocompass", earth_model = "wgs84", vertical = "held";
   std::string initial_velocity;  // "east,north,up"
   double alignment_duration_s = 300.0, initial_roll_deg = 0.0, initial_pitch_deg = 0.0, initial_yaw_deg = 0.0;
@@ -72,7 +74,7 @@ Eigen::Vector3d parse_velocity(const std::string& key, const std::string& text) 
 }
 
 void add_options(CLI::App& app, CommandLine& c) {
-  app.add_option("bag", c.bag_path, "bag to navigate")->required();
+  imu_lab::ros_io::add_recording_arguments(app, c.recording, "bag to navigate", false);
   app.add_option("-o,--out", c.out_path, "trajectory CSV to write")->required();
   app.add_option("--errors-out", c.errors_path, "error CSV (default: <out>_errors.csv, only with truth)");
   app.add_option("--plot", c.plot_path, "also plot the errors into this PNG (scripts/plot_navigation.py)");
@@ -133,7 +135,7 @@ void fill_settings(CommandLine& c) {
   const bool position_given = !std::isnan(c.latitude_deg) && !std::isnan(c.longitude_deg) && !std::isnan(c.height_m);
   const bool attitude_given = any_given(c.attitude_options);
   const bool truth_wanted = !position_given || (c.no_align && (!attitude_given || !velocity_given));
-  const auto truth = truth_wanted ? truth_at_start(c.bag_path, c.bag) : std::nullopt;
+  const auto truth = truth_wanted ? truth_at_start(c.recording.recording(), c.bag) : std::nullopt;
   if (!position_given && !truth) {
     throw imu_lab::ConfigError("navigate", "--latitude-deg/--longitude-deg/--height-m",
                                "the bag has no " + c.bag.truth_topic + " to take the initial position from; give all three");
@@ -185,7 +187,7 @@ std::string predicted_error_text(const imu_lab::ros_io::AlignmentResult& a, bool
 void print_summary(const CommandLine& c, const imu_lab::ros_io::BagNavigationResult& result) {
   const auto& n = result.counters;
   std::printf("navigate: %s, topic %s: %zu messages, %llu used, skipped %llu invalid, %llu unordered, %llu after gaps\n",
-              c.bag_path.c_str(), result.topic.c_str(), result.messages, static_cast<unsigned long long>(n.used),
+              c.recording.recording().name().c_str(), result.topic.c_str(), result.messages, static_cast<unsigned long long>(n.used),
               static_cast<unsigned long long>(n.invalid), static_cast<unsigned long long>(n.unordered),
               static_cast<unsigned long long>(n.gaps));
   const auto& a = *result.alignment;
@@ -241,10 +243,10 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   return imu_lab::run_tool_main("navigate", [&] {
     fill_settings(c);
-    const auto result = imu_lab::ros_io::navigate_bag(c.bag_path, c.bag, c.settings);
+    const auto result = imu_lab::ros_io::navigate_bag(c.recording.recording(), c.bag, c.settings);
     const auto& n = result.counters;
     if (!c.skip_bad_samples && n.invalid + n.unordered > 0) {
-      throw imu_lab::InputError("bag " + c.bag_path + ", topic " + result.topic + ": " + std::to_string(n.invalid) +
+      throw imu_lab::InputError("bag " + c.recording.recording().name() + ", topic " + result.topic + ": " + std::to_string(n.invalid) +
                                 " samples with NaN/Inf or bad intervals and " + std::to_string(n.unordered) +
                                 " unordered stamps, first " + result.first_problem +
                                 "; nothing written (repair the bag, or pass --skip-bad-samples to skip them)");

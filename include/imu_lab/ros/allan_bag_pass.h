@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "imu_lab/allan/impulse_screen.h"
 #include "imu_lab/allan/output_step.h"
@@ -31,7 +32,10 @@ struct AllanBagPassOptions {
 };
 
 struct AllanBagPassResult {
-  std::string bag_path;
+  std::string bag_path;             // the recording's name (BagRecording::name)
+  std::vector<std::string> files;   // the recording's files in the order read (stamp order)
+  TimeWindow window;                // the part of the recording analysed
+  std::vector<FileJoin> joins;      // where one split file handed over to the next
   std::string topic;
   AllanInput input = AllanInput::kRate;
   allan::StreamingOptions engine;  // as used
@@ -41,10 +45,11 @@ struct AllanBagPassResult {
   std::vector<allan::ChannelOutputStep> output_steps;  // per channel, over every message's values
 };
 
+// `recording` is one bag or the split files of one, and the window to analyse (imu_bag_reader.h).
 // Throws InputError naming the bag (and the topic) for an unreadable, truncated or corrupt bag,
 // a missing or ambiguous topic, a topic of the wrong type, one with too few messages, and, under
 // StampPolicy::kStop, the first irregular stamp. ConfigError for unusable engine options.
-AllanBagPassResult run_allan_bag_pass(const std::string& bag_path, const AllanBagPassOptions& options);
+AllanBagPassResult run_allan_bag_pass(const BagRecording& recording, const AllanBagPassOptions& options);
 
 }  // namespace ros_io
 }  // namespace imu_lab

@@ -17,6 +17,9 @@ namespace ros_io {
 
 struct AllanRunDescription {
   std::string bag;    // the bag read; empty for a live topic
+  std::vector<std::string> files;  // a split recording's files in the order read (several only)
+  TimeWindow window;               // the part of the bag analysed
+  std::vector<FileJoin> joins;     // where the split files hand over
   std::string topic;  // the topic read or subscribed to
   AllanInput input = AllanInput::kRate;
   allan::StreamingOptions engine;

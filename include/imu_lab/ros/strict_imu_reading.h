@@ -22,7 +22,7 @@ class StrictImuCheck {
   // (this one included) was bad, so the caller never uses a sample from the first bad one on.
   bool accept(const ImuRecord& record);
   // Throws the InputError described above if any record was bad.
-  void throw_if_refused(const std::string& bag_path, const std::string& topic) const;
+  void throw_if_refused(const BagRecording& recording, const std::string& topic) const;
 
  private:
   std::size_t non_finite_ = 0, unordered_ = 0;
@@ -31,7 +31,7 @@ class StrictImuCheck {
 
 // Calls `on_record` in bag order for each message before the first bad one (so for every message
 // of a good bag), then throws if there was any. Returns the number of messages.
-std::size_t for_each_imu_strictly(const std::string& bag_path, const std::string& topic,
+std::size_t for_each_imu_strictly(const BagRecording& recording, const std::string& topic,
                                   const std::function<void(const ImuRecord&)>& on_record);
 
 }  // namespace ros_io
