@@ -121,7 +121,7 @@ int main(int argc, char** argv) {
   app.add_flag("--no-plot", no_plot, "do not write allan.png");
   app.add_flag("--no-identify", no_identify, "do not fit the noise model (no noise.yaml, kalibr_imu.yaml)");
   app.add_option("--bootstrap-replicas", identify.bootstrap_replicas,
-                 "sigmas from a parametric bootstrap with N replicas per axis (slow; 0 = Ceres covariance)")
+                 "sigmas from a parametric bootstrap with N replicas per axis (slow; 0 = the fit's moment covariance)")
       ->capture_default_str()
       ->check([](const std::string& text) {
         return imu_lab::ros_io::bootstrap_replicas_problem(std::atoi(text.c_str()));

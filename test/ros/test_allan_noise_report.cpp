@@ -121,7 +121,7 @@ TEST_F(AllanNoiseReport, PartialCurvesAddUpToTheFittedTotal) {
 
 TEST_F(AllanNoiseReport, SummarySaysWhatWasIdentified) {
   const YAML::Node summary = YAML::LoadFile(report_ + "/allan_summary.yaml");
-  EXPECT_EQ(summary["identification"]["sigma_source"].as<std::string>(), "ceres_covariance");
+  EXPECT_EQ(summary["identification"]["sigma_source"].as<std::string>(), "moment_covariance");
   EXPECT_EQ(summary["identification"]["identified"].size(), 2u);
   EXPECT_EQ(summary["identification"]["problems"].size(), 0u);
 }
