@@ -2,7 +2,8 @@
 """Plots the stability CSV written by imu_lab's `allan` tool: log-log deviation against tau,
 gyro and accelerometer panels, chi-squared confidence bands, and slope guides. Where the noise
 identification wrote noise_partial_<channel>.csv, the fitted total (solid) and each term's
-partial curve (dashed, labelled by term) are drawn over the measured points (seed 003 Fig. 5.1).
+partial curve (dashed, labelled by channel and term, drawn where it reaches 1e-3 of the total)
+are drawn over the measured points.
 
 usage: plot_allan.py REPORT_DIR [--statistic oadev] [--out REPORT_DIR/allan.png]
 """
@@ -59,13 +60,22 @@ def read_partial_curves(report_dir, channel):
     }
 
 
-def draw_fit(axis, fit, color, labelled_terms):
-    """The fitted total (solid) and the terms' partial curves (dashed), in the channel's colour."""
+# A partial curve is drawn only where it reaches this fraction of the fitted total: below, the
+# term does not matter to the curve, and drawing it would squeeze the data into the top.
+PARTIAL_FLOOR = 1e-3
+
+
+def draw_fit(axis, fit, color, channel):
+    """The fitted total (solid) and the terms' partial curves (dashed), in the channel's colour,
+    each labelled with its channel and term."""
     axis.loglog(fit["tau"], fit["total"], color=color, linewidth=1.2)
-    for style, (term, devs) in zip(("--", "-.", ":", (0, (5, 2, 1, 2)), (0, (1, 1))), fit["terms"].items()):
-        label = f"{term} (partial)" if term not in labelled_terms else None
-        labelled_terms.add(term)
-        axis.loglog(fit["tau"], devs, color=color, linewidth=0.8, linestyle=style, label=label)
+    styles = ("--", "-.", ":", (0, (5, 2, 1, 2)), (0, (1, 1)), (0, (3, 1, 1, 1, 1, 1)))
+    for index, (term, devs) in enumerate(fit["terms"].items()):
+        shown = [d if d >= PARTIAL_FLOOR * total else float("nan") for d, total in zip(devs, fit["total"])]
+        if all(d != d for d in shown):
+            continue
+        axis.loglog(fit["tau"], shown, color=color, linewidth=0.8, linestyle=styles[index % len(styles)],
+                    label=f"{channel}: {term}")
 
 
 def slope_guides(axis, taus, devs):
@@ -89,7 +99,6 @@ def plot(report_dir, statistic, out_path):
     for axis, sensor in zip(axes[0], sensors):
         members = [c for c in curves if sensor == "all" or c.startswith(sensor)]
         unit = curves[members[0]][0].replace("_", "/").replace("s2", "s^2")
-        labelled_terms = set()
         for channel in members:
             _, taus, dev, lo, hi = curves[channel]
             fit = read_partial_curves(report_dir, channel)
@@ -98,14 +107,14 @@ def plot(report_dir, statistic, out_path):
                                 label=channel + (" measured, fit solid" if fit else ""))
             axis.fill_between(taus, lo, hi, color=line.get_color(), alpha=0.2, linewidth=0)
             if fit:
-                draw_fit(axis, fit, line.get_color(), labelled_terms)
+                draw_fit(axis, fit, line.get_color(), channel)
         _, taus, dev, _, _ = curves[members[0]]
         slope_guides(axis, taus, dev)
         axis.set_xlabel("tau [s]")
         axis.set_ylabel(f"{statistic.upper()} [{unit}]")
         axis.set_title(f"{sensor}: {statistic} with 68.3 % chi-squared bounds")
         axis.grid(True, which="both", alpha=0.3)
-        axis.legend(fontsize=7)
+        axis.legend(fontsize=6, ncol=2)
     figure.tight_layout()
     figure.savefig(out_path + ".tmp.png", dpi=110)
     os.replace(out_path + ".tmp.png", out_path)  # atomic: a reader never sees half a picture

@@ -10,6 +10,14 @@ IMU_LAB_CATKIN_ARGS=(
   -DPYTHON_EXECUTABLE=/usr/bin/python3 -DPython3_EXECUTABLE=/usr/bin/python3
   -DCMAKE_BUILD_TYPE=Release -DCATKIN_ENABLE_TESTING=ON
 )
+# A rebuild after a checkout, and a build in a second clone or worktree, reuse earlier compiles.
+# The compiler sees sources through the workspace's links, so paths relative to the repository
+# root are the same in every clone.
+if command -v ccache >/dev/null; then
+  IMU_LAB_CATKIN_ARGS+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+  export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$IMU_LAB_ROOT}
+  export CCACHE_MAXSIZE=${CCACHE_MAXSIZE:-5G}
+fi
 
 imu_lab_link_sources() {
   local package="$IMU_LAB_WS/src/imu_lab" entry name

@@ -86,6 +86,16 @@ double pooled_edf(Statistic statistic, const ResolutionLevel& level, int m, int 
   return edf;
 }
 
+// The terms against those of one record holding every segment's phase points.
+double pooled_term_fraction(Statistic statistic, const ResolutionLevel& level, int m, long long terms) {
+  std::size_t phase_points = 0;
+  for (const auto& entry : level.segment_phase_counts()) {
+    phase_points += static_cast<std::size_t>(entry.first * entry.second);
+  }
+  const long long contiguous = term_count(statistic, phase_points, m);
+  return contiguous > 0 ? std::min(1.0, static_cast<double>(terms) / static_cast<double>(contiguous)) : 1.0;
+}
+
 }  // namespace
 
 std::vector<StabilityPoint> streaming_points(Statistic statistic, const ChannelAccumulator& channel,
@@ -102,6 +112,7 @@ std::vector<StabilityPoint> streaming_points(Statistic statistic, const ChannelA
       const VarianceEstimate variance = estimate(statistic, level, i, point.tau_s);
       if (variance.term_count <= 0) continue;
       point.term_count = variance.term_count;
+      point.pooled_term_fraction = pooled_term_fraction(statistic, level, level_m, variance.term_count);
       point.deviation = std::sqrt(variance.variance) * units.value_scale;
       // Sums that overflowed (samples beyond ~1e150) estimate nothing.
       if (!std::isfinite(point.deviation)) continue;

@@ -67,7 +67,7 @@ double YamlFields::number_or(const std::string& key, double fallback) const {
 
 double YamlFields::non_negative(const std::string& key) const {
   const double value = number(key);
-  if (value < 0.0) fail(key, "must be non-negative (it is a standard deviation or density)");
+  if (value < 0.0) fail(key, "must be non-negative");
   return value;
 }
 
@@ -98,7 +98,7 @@ Eigen::Vector3d YamlFields::per_axis_at(const YAML::Node& value, const std::stri
     fail(key, "expected a number or a list of three numbers [x, y, z]");
   }
   if (non_negative_only && result.minCoeff() < 0.0) {
-    fail(key, "must be non-negative (it is a standard deviation or density)");
+    fail(key, "must be non-negative");
   }
   return result;
 }

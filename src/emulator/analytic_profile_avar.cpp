@@ -15,6 +15,7 @@ double analytic_axis_avar(const TriadErrorModel& triad, int axis, double tau_s, 
     avar += process->allan_variance(tau_s, tau0_s);
   }
   if (triad.pulse_weight > 0.0) avar += noise::pulse_quantization_avar(triad.pulse_weight, tau_s);
+  if (triad.output_lsb[axis] > 0.0) avar += noise::output_quantization_avar(triad.output_lsb[axis], tau_s, tau0_s);
   return avar;
 }
 

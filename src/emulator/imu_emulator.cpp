@@ -71,8 +71,9 @@ ImuSample ImuEmulator::next() {
       motion_->truth_at(static_cast<double>(sample_index_) * interval_s_);
   sample.truth.stamp_s = sample.stamp_s;
   sample.truth.attitude_body_to_enu = truth.attitude_body_to_enu;
-  sample.truth.angular_rate_rad_s = truth.angular_rate_body_rad_s;
-  sample.truth.specific_force_m_s2 = truth.specific_force_body_m_s2;
+  // What the sample should read without errors: the interval averages the sensor measured.
+  sample.truth.angular_rate_rad_s = true_rate;
+  sample.truth.specific_force_m_s2 = true_force;
   sample.truth.latitude_rad = truth.latitude_rad;
   sample.truth.longitude_rad = truth.longitude_rad;
   sample.truth.height_m = truth.height_m;

@@ -1,7 +1,10 @@
 #include "imu_lab/emulator/sensor_profile.h"
 
+#include <cmath>
 #include <functional>
 #include <stdexcept>
+
+#include <Eigen/Cholesky>
 
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/yaml_fields.h"
@@ -26,6 +29,14 @@ using noise::ProcessParameters;
 template <typename Make>
 void add_per_axis(TriadErrorModel& model, Make make) {
   for (int axis = 0; axis < 3; ++axis) model.noise_per_axis[axis].push_back(make(axis));
+}
+
+// Adds a parameter set on the axes whose amplitude is non-zero (the others get no process).
+template <typename Make>
+void add_nonzero_axes(TriadErrorModel& model, const Eigen::Vector3d& amplitude, Make make) {
+  for (int axis = 0; axis < 3; ++axis) {
+    if (amplitude[axis] != 0.0) model.noise_per_axis[axis].push_back(make(axis));
+  }
 }
 
 // A block holding one per-axis field, e.g. white_rate: {density_rad_s_per_sqrt_hz: 1e-4}.
@@ -55,13 +66,37 @@ void read_list_or_single(const YamlFields& noise_fields, const std::string& key,
   }
 }
 
+// white_rate: {density_<u>_per_sqrt_hz, axis_correlation: 3x3 (optional, identity)}.
+void read_white_rate(const YamlFields& f, const TriadUnits& u, TriadErrorModel& model) {
+  const std::string key = "density_" + u.rate + "_per_sqrt_hz";
+  f.allow_only({key.c_str(), "axis_correlation"});
+  const Eigen::Vector3d density = f.per_axis(key, true);
+  add_per_axis(model, [&](int a) -> ProcessParameters { return noise::WhiteRateParameters{density[a]}; });
+  if (!f.has("axis_correlation")) return;
+  const Eigen::Matrix3d r = f.matrix3("axis_correlation");
+  if ((r - r.transpose()).cwiseAbs().maxCoeff() > 1e-12) f.fail("axis_correlation", "must be symmetric");
+  if ((r.diagonal().array() != 1.0).any()) f.fail("axis_correlation", "the diagonal must be 1");
+  Eigen::LLT<Eigen::Matrix3d> cholesky(r);
+  if (cholesky.info() != Eigen::Success || cholesky.matrixL().toDenseMatrix().diagonal().minCoeff() <= 0.0) {
+    f.fail("axis_correlation", "must be positive definite (a correlation matrix of three axes)");
+  }
+  for (int a = 0; a < 3; ++a) {
+    for (int b = 0; b < 3; ++b) {
+      if (a != b && r(a, b) != 0.0 && density[a] == 0.0) {
+        f.fail("axis_correlation", std::string("axis ") + "xyz"[a] + " has no white rate noise to correlate");
+      }
+    }
+  }
+  model.white_rate_correlation = r;
+}
+
 void read_noise(const YamlFields& fields, const TriadUnits& u, TriadErrorModel& model) {
   const std::string flicker = "bias_instability", markov = "markov", sinusoid = "sinusoid",
                     zero_dc = "zero_dc_family";
   fields.allow_only({"white_rate", "bias_instability", "random_walk", "rate_ramp", "markov",
-                     "sinusoid", "white_angle", "zero_dc_family"});
-  read_one_field_block(fields, "white_rate", "density_" + u.rate + "_per_sqrt_hz", true, model,
-                       [](double n) { return noise::WhiteRateParameters{n}; });
+                     "sinusoid", "white_angle", "zero_dc_family", "zero_dc_gaussian",
+                     "high_pass_white", "resonance"});
+  if (fields.has("white_rate")) read_white_rate(fields.child("white_rate"), u, model);
   read_one_field_block(fields, "random_walk", "density_" + u.rate + "_per_sqrt_s", true, model,
                        [](double k) { return noise::RandomWalkParameters{k}; });
   read_one_field_block(fields, "rate_ramp", "slope_" + u.rate + "_per_s", false, model,
@@ -113,18 +148,66 @@ void read_noise(const YamlFields& fields, const TriadUnits& u, TriadErrorModel& 
       });
     });
   }
+  const std::string alpha_key = "alpha_" + u.rate_squared + "_per_hz_n_plus_1";
+  // n > 1: the angle is stationary only then (n = 1 has the AVAR zero_dc_family_avar gives, but
+  // no generator).
+  auto exponent = [](const YamlFields& f) {
+    const double n = f.number("exponent_n");
+    if (!(n > 1.0)) f.fail("exponent_n", "must be > 1 (below, the angle's variance diverges)");
+    return n;
+  };
   if (fields.has(zero_dc)) {
-    const YamlFields f = fields.child(zero_dc);
-    const std::string key = "alpha_" + u.rate_squared + "_per_hz_n_plus_1";
-    f.allow_only({"exponent_n", key.c_str(), "beta_s"});
-    if (f.number("exponent_n") != 2.0) {
-      f.fail("exponent_n", "only n = 2 is generated (n = 1 has a divergent angle variance, "
-                           "n = 3 is not implemented)");
-    }
-    const Eigen::Vector3d alpha = f.per_axis(key, true);
-    const double beta = f.positive("beta_s");
-    add_per_axis(model, [&](int a) -> ProcessParameters {
-      return noise::ZeroDcFamilyParameters{2, alpha[a], beta};
+    read_list_or_single(fields, zero_dc, [&](const YamlFields& f) {
+      f.allow_only({"exponent_n", alpha_key.c_str(), "beta_s", "cosine_s", "cosine_weight"});
+      const double n = exponent(f);
+      const Eigen::Vector3d alpha = f.per_axis(alpha_key, true);
+      const double beta = f.positive("beta_s");
+      const double cosine_s = f.has("cosine_s") ? f.non_negative("cosine_s") : 0.0;
+      const double weight = f.number_or("cosine_weight", 0.0);
+      if (!(std::abs(weight) <= 1.0)) {
+        f.fail("cosine_weight", "must lie in [-1, 1] (beyond, the PSD is negative somewhere)");
+      }
+      add_nonzero_axes(model, alpha, [&](int a) -> ProcessParameters {
+        return noise::ZeroDcFamilyParameters{n, alpha[a], beta, cosine_s, weight};
+      });
+    });
+  }
+  if (fields.has("zero_dc_gaussian")) {
+    read_list_or_single(fields, "zero_dc_gaussian", [&](const YamlFields& f) {
+      f.allow_only({"exponent_n", alpha_key.c_str(), "beta_s2"});
+      const double n = exponent(f);
+      const Eigen::Vector3d alpha = f.per_axis(alpha_key, true);
+      const double beta = f.positive("beta_s2");
+      add_nonzero_axes(model, alpha, [&](int a) -> ProcessParameters {
+        return noise::ZeroDcGaussianParameters{n, alpha[a], beta};
+      });
+    });
+  }
+  if (fields.has("high_pass_white")) {
+    read_list_or_single(fields, "high_pass_white", [&](const YamlFields& f) {
+      const std::string key = "density_" + u.rate + "_per_sqrt_hz";
+      f.allow_only({key.c_str(), "corner_frequency_hz"});
+      const Eigen::Vector3d density = f.per_axis(key, true);
+      const double corner = f.positive("corner_frequency_hz");
+      add_nonzero_axes(model, density, [&](int a) -> ProcessParameters {
+        return noise::HighPassWhiteParameters{density[a], corner};
+      });
+    });
+  }
+  if (fields.has("resonance")) {
+    read_list_or_single(fields, "resonance", [&](const YamlFields& f) {
+      const std::string key = "rms_" + u.rate;
+      f.allow_only({key.c_str(), "natural_frequency_hz", "width_hz"});
+      const Eigen::Vector3d rms = f.per_axis(key, true);
+      const double natural = f.positive("natural_frequency_hz");
+      const double width = f.positive("width_hz");
+      if (!(width < 2.0 * natural)) {
+        f.fail("width_hz", "must be below 2 natural_frequency_hz (the -3 dB width 2 zeta f_n of an "
+                           "underdamped mode)");
+      }
+      add_nonzero_axes(model, rms, [&](int a) -> ProcessParameters {
+        return noise::ResonanceParameters{rms[a], natural, width};
+      });
     });
   }
 }
@@ -173,17 +256,40 @@ ThermalSensitivity read_thermal_sensitivity(const YamlFields& f, const TriadUnit
   return thermal;
 }
 
+// scale_factor_nonlinearity: {full_scale_<u>, quadratic_ppm_fs, cubic_ppm_fs}: the error at full
+// scale, in ppm of full scale, of a term in (input / full scale)^2 and ^3.
+void read_scale_factor_nonlinearity(const YamlFields& f, const TriadUnits& u,
+                                    const std::string& direct_quadratic_key, bool direct_given,
+                                    TriadErrorModel& model) {
+  const std::string full_scale_key = "full_scale_" + u.rate;
+  f.allow_only({full_scale_key.c_str(), "quadratic_ppm_fs", "cubic_ppm_fs"});
+  const Eigen::Vector3d full_scale = f.per_axis(full_scale_key, true);
+  if (full_scale.minCoeff() <= 0.0) f.fail(full_scale_key, "must be positive");
+  if (f.has("quadratic_ppm_fs")) {
+    if (direct_given) {
+      f.fail("quadratic_ppm_fs", "the same term as " + direct_quadratic_key + "; give one of the two");
+    }
+    model.quadratic_nonlinearity_per_unit =
+        1e-6 * f.per_axis("quadratic_ppm_fs", false).cwiseQuotient(full_scale);
+  }
+  model.cubic_nonlinearity_per_unit2 =
+      1e-6 * f.per_axis_or_zero("cubic_ppm_fs").cwiseQuotient(full_scale.cwiseAbs2());
+}
+
 TriadErrorModel read_triad(const YamlFields& f, const TriadUnits& u, bool is_gyro) {
   const std::string bias = "bias_fixed_" + u.rate, turn_on = "bias_turn_on_sigma_" + u.rate,
                     quadratic = "quadratic_nonlinearity_per_" + u.rate,
-                    g_sensitivity = "g_sensitivity_rad_s_per_m_s2";
+                    g_sensitivity = "g_sensitivity_rad_s_per_m_s2",
+                    dead_zone = "dead_zone_" + u.rate, lsb = "output_lsb_" + u.rate;
   if (is_gyro) {
     f.allow_only({bias.c_str(), turn_on.c_str(), "scale_factor_error_ppm", "misalignment_rad",
-                  quadratic.c_str(), g_sensitivity.c_str(), "bandwidth_hz", "quantization", "noise",
-                  "thermal"});
+                  quadratic.c_str(), "scale_factor_nonlinearity", "scale_factor_asymmetry_ppm",
+                  dead_zone.c_str(), g_sensitivity.c_str(), "bandwidth_hz", "quantization",
+                  lsb.c_str(), "noise", "thermal"});
   } else {
     f.allow_only({bias.c_str(), turn_on.c_str(), "scale_factor_error_ppm", "misalignment_rad",
-                  quadratic.c_str(), "bandwidth_hz", "quantization", "noise", "thermal"});
+                  quadratic.c_str(), "scale_factor_nonlinearity", "scale_factor_asymmetry_ppm",
+                  dead_zone.c_str(), "bandwidth_hz", "quantization", lsb.c_str(), "noise", "thermal"});
   }
   TriadErrorModel model;
   model.bias_fixed = f.per_axis(bias, false);
@@ -195,9 +301,22 @@ TriadErrorModel read_triad(const YamlFields& f, const TriadUnits& u, bool is_gyr
     f.fail("misalignment_rad", "the diagonal must be zero (scale errors go in scale_factor_error_ppm)");
   }
   model.quadratic_nonlinearity_per_unit = f.per_axis_or_zero(quadratic);
+  if (f.has("scale_factor_nonlinearity")) {
+    read_scale_factor_nonlinearity(f.child("scale_factor_nonlinearity"), u, quadratic,
+                                   f.has(quadratic), model);
+  }
+  model.scale_factor_asymmetry_ppm = f.per_axis_or_zero("scale_factor_asymmetry_ppm");
+  if (f.has(dead_zone)) model.dead_zone = f.per_axis(dead_zone, true);
   if (is_gyro) model.g_sensitivity = f.matrix3_or_zero(g_sensitivity);
   if (f.has("bandwidth_hz")) model.bandwidth_hz = f.positive("bandwidth_hz");
   if (f.has("quantization")) read_quantization(f.child("quantization"), u, model);
+  if (f.has(lsb)) {
+    model.output_lsb = f.per_axis(lsb, true);
+    if (model.pulse_weight > 0.0 && model.output_lsb.maxCoeff() > 0.0) {
+      f.fail(lsb, "a pulse-counting output (quantization.model: pulses) has no rate register; "
+                  "give one of the two");
+    }
+  }
   read_noise(f.child("noise"), u, model);
   if (f.has("thermal")) model.thermal = read_thermal_sensitivity(f.child("thermal"), u);
   return model;

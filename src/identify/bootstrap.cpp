@@ -13,50 +13,32 @@ namespace identify {
 
 namespace {
 
-double sample_sigma(const std::vector<double>& values) {
+double sample_log_sigma(const std::vector<double>& values) {
   if (values.size() < 2) return std::numeric_limits<double>::quiet_NaN();
   double mean = 0.0;
-  for (double v : values) mean += v;
+  for (double v : values) mean += std::log(v);
   mean /= values.size();
   double sum = 0.0;
-  for (double v : values) sum += (v - mean) * (v - mean);
+  for (double v : values) sum += (std::log(v) - mean) * (std::log(v) - mean);
   return std::sqrt(sum / (values.size() - 1));
-}
-
-std::vector<int> fitted_averaging_factors(const FitResult& fit) {
-  std::vector<int> factors;
-  for (const FitPoint& point : fit.points) {
-    factors.push_back(static_cast<int>(std::lround(point.tau_s / fit.tau0_s)));
-  }
-  return factors;
 }
 
 }  // namespace
 
 BootstrapSummary bootstrap_uncertainty(const FitResult& fit, const BootstrapOptions& options) {
   if (options.replicas < 2) throw std::invalid_argument("bootstrap: need at least 2 replicas");
-  const long long sample_count = std::llround(fit.record_length_s / fit.tau0_s);
-  const std::vector<int> factors = fitted_averaging_factors(fit);
-  const DataSpan span{fit.tau0_s, fit.record_length_s, fit.points.front().tau_s,
-                      fit.points.back().tau_s};
-  const SolverSettings settings = solver_settings(fit.options);
+  const std::vector<int> factors = averaging_factors(fit.points);
   const size_t term_count = fit.model.terms.size();
   BootstrapSummary summary;
   summary.amplitudes.assign(term_count, {});
   summary.shapes.assign(term_count, {});
   for (int replica = 0; replica < options.replicas; ++replica) {
     const std::vector<double> rates =
-        simulate_rates(fit.model, fit.tau0_s, sample_count, options.seed + 7919ULL * replica);
-    const auto curve = allan::evaluate_frequency(allan::Statistic::kOverlappingAllan, rates,
-                                                 fit.tau0_s, factors);
+        simulate_rates(fit.model, fit.tau0_s, fit.span.sample_count, options.seed + 7919ULL * replica);
+    const auto curve = allan::evaluate_frequency(allan::Statistic::kOverlappingAllan, rates, fit.tau0_s, factors);
     std::vector<FitPoint> points;
-    try {
-      points = select_octave_points(curve);
-    } catch (const std::exception&) {
-      continue;
-    }
-    const SolveOutcome outcome =
-        refit_structure(points, fit.structure, fit.log_parameters, span, settings);
+    for (const auto& point : curve) points.push_back({point.tau_s, point.averaging_factor, point.deviation * point.deviation});
+    const SolveOutcome outcome = refit_structure(points, fit.structure, fit.log_parameters, fit.span, fit.weights);
     if (!outcome.usable) continue;
     const NoiseModel refitted = model_from_log_parameters(fit.structure, outcome.log_parameters);
     for (size_t i = 0; i < term_count; ++i) {
@@ -66,29 +48,28 @@ BootstrapSummary bootstrap_uncertainty(const FitResult& fit, const BootstrapOpti
     ++summary.replicas_used;
   }
   for (size_t i = 0; i < term_count; ++i) {
-    summary.amplitude_sigma.push_back(sample_sigma(summary.amplitudes[i]));
-    summary.shape_sigma.push_back(sample_sigma(summary.shapes[i]));
+    summary.amplitude_log_sigma.push_back(sample_log_sigma(summary.amplitudes[i]));
+    summary.shape_log_sigma.push_back(sample_log_sigma(summary.shapes[i]));
   }
   return summary;
 }
 
 void apply_bootstrap(const BootstrapSummary& summary, FitResult* fit) {
-  for (size_t i = 0; i < fit->model.terms.size() && i < summary.amplitude_sigma.size(); ++i) {
+  for (size_t i = 0; i < fit->model.terms.size() && i < summary.amplitude_log_sigma.size(); ++i) {
     TermEstimate& term = fit->terms[i];
     term.sigma_source = SigmaSource::kBootstrap;
-    term.amplitude.sigma = summary.amplitude_sigma[i];
-    if (term.shape_fitted) term.shape.sigma = summary.shape_sigma[i];
-    const double relative = term.amplitude.sigma / term.amplitude.value;
-    if (term.status == TermStatus::kPresent &&
-        !(relative <= fit->options.unconstrained_relative_sigma)) {
+    term.amplitude.log_sigma = summary.amplitude_log_sigma[i];
+    term.amplitude.sigma = term.amplitude.value * term.amplitude.log_sigma;
+    if (term.shape_fitted) {
+      term.shape.log_sigma = summary.shape_log_sigma[i];
+      term.shape.sigma = term.shape.value * term.shape.log_sigma;
+    }
+    if (term.status == TermStatus::kPresent && !(term.amplitude.log_sigma <= fit->options.unconstrained_relative_sigma)) {
       term.status = TermStatus::kUnconstrained;
-      const SolverSettings settings = solver_settings(fit->options);
-      const DataSpan span{fit->tau0_s, fit->record_length_s, fit->points.front().tau_s,
-                          fit->points.back().tau_s};
-      term.amplitude.upper_bound = profile_upper_bound(
-          fit->points, fit->structure, fit->log_parameters,
-          model_cost(fit->points, fit->structure, fit->log_parameters, settings),
-          static_cast<int>(i), span, settings, fit->options.upper_bound_confidence);
+      term.amplitude.upper_bound =
+          profile_upper_bound(fit->points, fit->structure, fit->log_parameters,
+                              model_cost(fit->points, fit->structure, fit->log_parameters, fit->weights),
+                              static_cast<int>(i), fit->span, fit->weights, fit->options.upper_bound_confidence);
     }
   }
 }

@@ -1,35 +1,90 @@
 #include "imu_lab/identify/fit.h"
 
+#include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <cstdlib>
 
-#include "imu_lab/identify/avar_likelihood.h"
+#include "imu_lab/identify/avar_covariance.h"
+#include "imu_lab/allan/confidence.h"
+#include "imu_lab/identify/chi_squared.h"
+#include "imu_lab/identify/descriptive_model.h"
 #include "imu_lab/identify/fit_warnings.h"
 #include "imu_lab/identify/profile_likelihood.h"
+#include "imu_lab/identify/start_values.h"
 
 namespace imu_lab {
 namespace identify {
 
 namespace {
 
-FitQuality assess_quality(const std::vector<FitPoint>& points, const NoiseModel& model,
-                          int parameters) {
-  FitQuality quality;
-  for (const FitPoint& point : points) {
-    quality.deviance += point_deviance(point.avar, model_avar(model, point.tau_s), point.edf);
+// The first selection assumes the model describes the curve to 1 % in variance (the band's
+// +-1 % floor in deviation is twice that); later rounds use the estimated discrepancy.
+constexpr double kInitialDiscrepancy = 0.01;
+constexpr double kLargestDiscrepancy = 0.1;
+
+double distance_at(const std::vector<FitPoint>& points, const Eigen::MatrixXd& model_covariance,
+                   const Eigen::VectorXd& model_values, double discrepancy) {
+  Eigen::MatrixXd covariance(points.size(), points.size());
+  Eigen::VectorXd residual(points.size());
+  for (size_t k = 0; k < points.size(); ++k) {
+    for (size_t j = 0; j < points.size(); ++j) {
+      covariance(k, j) = model_covariance(k, j) / (model_values(k) * model_values(j));
+    }
+    residual(k) = std::log(points[k].avar) - mean_log_scaled_chi_squared(2.0 / covariance(k, k)) -
+                  std::log(model_values(k));
+    covariance(k, k) += discrepancy * discrepancy;
   }
-  quality.points = static_cast<int>(points.size());
+  const Eigen::LDLT<Eigen::MatrixXd> factor(covariance);
+  return residual.dot(factor.solve(residual));
+}
+
+// The relative spread to add to every point's variance so that the distance at the estimate
+// equals its degrees of freedom (the quasi-likelihood dispersion); 0 when the distance is within
+// two standard deviations of its chi-squared expectation.
+double estimate_discrepancy(const std::vector<FitPoint>& points, const NoiseModel& model,
+                            OavarCovariance& model_covariance, int degrees_of_freedom) {
+  Eigen::VectorXd values(points.size());
+  for (size_t k = 0; k < points.size(); ++k) values(k) = model_avar(model, points[k].tau_s);
+  const Eigen::MatrixXd covariance = model_covariance.covariance(model);
+  const auto distance = [&](double discrepancy) { return distance_at(points, covariance, values, discrepancy); };
+  const double dof = std::max(1, degrees_of_freedom);
+  if (distance(0.0) <= dof + 2.0 * std::sqrt(2.0 * dof)) return 0.0;
+  // Beyond 10 % in AVAR the model does not describe the curve at all; the band check says where.
+  double low = std::log(1e-6), high = std::log(kLargestDiscrepancy);
+  if (distance(std::exp(high)) > dof) return std::exp(high);
+  for (int iteration = 0; iteration < 40; ++iteration) {
+    const double middle = 0.5 * (low + high);
+    if (distance(std::exp(middle)) > dof) {
+      low = middle;
+    } else {
+      high = middle;
+    }
+  }
+  return std::exp(high);
+}
+
+FitQuality assess_quality(double cost, int points, int parameters, double discrepancy) {
+  FitQuality quality;
+  quality.distance = 2.0 * cost;
+  quality.points = points;
   quality.parameters = parameters;
-  quality.degrees_of_freedom = std::max(1, quality.points - parameters);
-  quality.deviance_per_dof = quality.deviance / quality.degrees_of_freedom;
-  quality.p_value = chi_squared_upper_tail(quality.deviance, quality.degrees_of_freedom);
+  quality.degrees_of_freedom = std::max(1, points - parameters);
+  quality.distance_per_dof = quality.distance / quality.degrees_of_freedom;
+  quality.p_value = chi_squared_upper_tail(quality.distance, quality.degrees_of_freedom);
+  quality.discrepancy = discrepancy;
   return quality;
 }
 
-// Terms of the selected model, with Ceres sigmas and, when too loose, a profile bound.
-void describe_model_terms(const SelectedModel& selected, const DataSpan& span,
-                          const SolverSettings& settings, FitResult* fit) {
-  const bool have_covariance = fit->log_covariance.size() > 0;
+void set_log_sigma(ParameterEstimate* estimate, double log_variance) {
+  estimate->log_sigma = std::sqrt(std::max(0.0, log_variance));
+  estimate->sigma = estimate->value * estimate->log_sigma;
+}
+
+// Terms of the selected model, with moment-covariance sigmas and, when too loose, a profile bound.
+void describe_model_terms(const SelectedModel& selected, const DataSpan& span, FitResult* fit) {
+  const Eigen::MatrixXd& covariance = fit->log_covariance;
   const std::vector<std::string> names = term_names(fit->model);
   for (size_t i = 0; i < fit->model.terms.size(); ++i) {
     const Term& term = fit->model.terms[i];
@@ -39,38 +94,38 @@ void describe_model_terms(const SelectedModel& selected, const DataSpan& span,
     estimate.name = names[i];
     estimate.kind = term.kind;
     estimate.status = TermStatus::kPresent;
+    estimate.sigma_source = SigmaSource::kMomentCovariance;
     estimate.amplitude.value = term.amplitude;
+    set_log_sigma(&estimate.amplitude, covariance(offset, offset));
     estimate.shape_fitted = slot.shape_free;
-    if (has_shape(term.kind)) estimate.shape.value = term.shape;
-    estimate.removal_lr_statistic = selected.removal_lr_statistics[i];
-    if (have_covariance) {
-      estimate.sigma_source = SigmaSource::kCeresCovariance;
-      const double relative = std::sqrt(std::max(0.0, fit->log_covariance(offset, offset)));
-      estimate.amplitude.sigma = term.amplitude * relative;
-      if (slot.shape_free) {
-        estimate.shape.sigma =
-            term.shape * std::sqrt(std::max(0.0, fit->log_covariance(offset + 1, offset + 1)));
-      }
-      if (!(relative <= fit->options.unconstrained_relative_sigma)) {
-        estimate.status = TermStatus::kUnconstrained;
-      }
+    if (has_shape(term.kind) && term.shape > 0.0) estimate.shape.value = term.shape;
+    if (slot.shape_free) set_log_sigma(&estimate.shape, covariance(offset + 1, offset + 1));
+    if (term.kind == TermKind::kResonance) {
+      estimate.width.value = term.width;
+      // ln width = ln f_n + ln(width / f_n)
+      set_log_sigma(&estimate.width, covariance(offset + 1, offset + 1) + covariance(offset + 2, offset + 2) +
+                                         2.0 * covariance(offset + 1, offset + 2));
     }
-    if (estimate.status == TermStatus::kUnconstrained) {
-      estimate.amplitude.upper_bound = profile_upper_bound(
-          fit->points, fit->structure, fit->log_parameters, selected.cost, static_cast<int>(i),
-          span, settings, fit->options.upper_bound_confidence);
+    estimate.selection_statistic = selected.removal_lr_statistics[i];
+    estimate.selection_threshold = selected.removal_thresholds[i];
+    estimate.borderline = is_borderline(estimate.selection_statistic, estimate.selection_threshold);
+    if (!(estimate.amplitude.log_sigma <= fit->options.unconstrained_relative_sigma)) {
+      estimate.status = TermStatus::kUnconstrained;
+      estimate.amplitude.upper_bound =
+          profile_upper_bound(fit->points, fit->structure, fit->log_parameters, selected.cost, static_cast<int>(i),
+                              span, selected.weights, fit->options.upper_bound_confidence);
     }
     fit->terms.push_back(estimate);
   }
 }
 
-// Candidate one-parameter terms the selection left out: absent, with a profile upper bound.
-void describe_absent_terms(const SelectedModel& selected, const DataSpan& span,
-                           const SolverSettings& settings, FitResult* fit) {
+// Candidate one-parameter terms the selection left out: absent, with a profile upper bound and
+// the fall of the distance their free addition would bring.
+void describe_absent_terms(const SelectedModel& selected, const DataSpan& span, FitResult* fit) {
   for (TermSlot slot : candidate_slots(fit->options, span)) {
-    if (slot.kind == TermKind::kMarkov || slot.kind == TermKind::kSinusoid ||
-        slot.kind == TermKind::kZeroDcFamily) {
-      continue;  // two-parameter terms: no single amplitude to bound
+    if (shape_count(slot.kind) > 0 && slot.kind != TermKind::kBiasInstability &&
+        slot.kind != TermKind::kWhiteRate) {
+      continue;  // terms with a searched shape: no single amplitude to bound
     }
     bool in_model = false;
     for (const Term& term : fit->model.terms) in_model = in_model || term.kind == slot.kind;
@@ -86,16 +141,88 @@ void describe_absent_terms(const SelectedModel& selected, const DataSpan& span,
     estimate.name = term_kind_name(slot.kind);
     estimate.kind = slot.kind;
     estimate.status = TermStatus::kAbsent;
-    if (has_shape(slot.kind)) estimate.shape.value = slot.fixed_shape;
-    estimate.amplitude.upper_bound = profile_upper_bound(
-        fit->points, structure, log_parameters, selected.cost,
-        static_cast<int>(structure.slots.size()) - 1, span, settings,
-        fit->options.upper_bound_confidence);
+    if (has_shape(slot.kind) && slot.fixed_shape > 0.0) estimate.shape.value = slot.fixed_shape;
+    const int slot_index = static_cast<int>(structure.slots.size()) - 1;
+    estimate.amplitude.upper_bound = profile_upper_bound(fit->points, structure, log_parameters, selected.cost,
+                                                         slot_index, span, selected.weights,
+                                                         fit->options.upper_bound_confidence);
+    const SolveOutcome added =
+        refit_structure(fit->points, structure, log_parameters, span, selected.weights);
+    if (added.usable) {
+      estimate.selection_statistic = std::max(0.0, 2.0 * (selected.cost - added.cost));
+      estimate.selection_threshold = slot_lr_threshold(fit->options, slot, static_cast<int>(fit->points.size()));
+      estimate.borderline = is_borderline(estimate.selection_statistic, estimate.selection_threshold);
+    }
     fit->terms.push_back(estimate);
   }
 }
 
+std::vector<BandPoint> band_check(const std::vector<allan::StabilityPoint>& curve, const NoiseModel& model,
+                                  const DataSpan& span) {
+  std::vector<int> factors;
+  std::vector<double> fractions;
+  std::vector<const allan::StabilityPoint*> usable;
+  for (const auto& point : curve) {
+    if (!(std::isfinite(point.deviation) && point.deviation > 0.0) || point.averaging_factor < 1 ||
+        2LL * point.averaging_factor > span.sample_count - 1) {
+      continue;
+    }
+    factors.push_back(point.averaging_factor);
+    fractions.push_back(point.pooled_term_fraction);
+    usable.push_back(&point);
+  }
+  OavarCovariance covariance(factors, span.tau0_s, span.sample_count);
+  covariance.set_pooled_term_fractions(fractions);
+  const std::vector<double> variance = covariance.variance(model);
+  std::vector<BandPoint> band;
+  for (size_t k = 0; k < usable.size(); ++k) {
+    BandPoint point;
+    point.tau_s = usable[k]->tau_s;
+    point.measured_deviation = usable[k]->deviation;
+    const double fitted_avar = model_avar(model, point.tau_s);
+    point.fitted_deviation = std::sqrt(fitted_avar);
+    point.edf = variance[k] > 0.0 ? 2.0 * fitted_avar * fitted_avar / variance[k] : 1e12;
+    const BandLimits limits = band_limits(point.measured_deviation, point.edf);
+    point.lower = limits.lower;
+    point.upper = limits.upper;
+    band.push_back(point);
+  }
+  return band;
+}
+
 }  // namespace
+
+double quantization_density(double output_step, double tau0_s) {
+  return output_step > 0.0 ? output_step / std::sqrt(12.0) * std::sqrt(tau0_s) : 0.0;
+}
+
+namespace {
+// One fewer term of this kind may enter: the count of a numbered kind drops below the model's.
+void leave_out_one(TermKind kind, const NoiseModel& model, FitOptions* options) {
+  int in_model = 0;
+  for (const Term& term : model.terms) in_model += term.kind == kind ? 1 : 0;
+  switch (kind) {
+    case TermKind::kWhiteAngle: options->allow_white_angle = false; break;
+    case TermKind::kWhiteRate: break;  // never left out
+    case TermKind::kBiasInstability: options->allow_bias_instability = false; break;
+    case TermKind::kRandomWalk: options->allow_random_walk = false; break;
+    case TermKind::kRateRamp: options->allow_rate_ramp = false; break;
+    case TermKind::kMarkov: options->max_markov_terms = in_model - 1; break;
+    case TermKind::kSinusoid: options->max_sinusoids = in_model - 1; break;
+    case TermKind::kResonance: options->max_resonances = in_model - 1; break;
+    case TermKind::kZeroDcFamily: options->allow_zero_dc_family = false; break;
+  }
+}
+}  // namespace
+
+BandLimits band_limits(double measured_deviation, double edf) {
+  const allan::DeviationBounds bounds = allan::chi_squared_bounds(measured_deviation, std::min(edf, 1e12), kBandConfidence);
+  return {std::min((1.0 - kBandMinimumHalfWidth) * measured_deviation, bounds.lower),
+          std::max((1.0 + kBandMinimumHalfWidth) * measured_deviation, bounds.upper)};
+}
+
+double ParameterEstimate::interval_low(double z) const { return value * std::exp(-z * log_sigma); }
+double ParameterEstimate::interval_high(double z) const { return value * std::exp(z * log_sigma); }
 
 std::string term_status_name(TermStatus status) {
   static const char* const kNames[] = {"present", "unconstrained", "absent"};
@@ -103,8 +230,22 @@ std::string term_status_name(TermStatus status) {
 }
 
 std::string sigma_source_name(SigmaSource source) {
-  static const char* const kNames[] = {"none", "ceres_covariance", "bootstrap"};
+  static const char* const kNames[] = {"none", "moment_covariance", "bootstrap"};
   return kNames[static_cast<int>(source)];
+}
+
+std::vector<const TermEstimate*> terms_in_report_order(const FitResult& fit) {
+  std::vector<const TermEstimate*> ordered;
+  for (TermKind kind : {TermKind::kWhiteRate, TermKind::kBiasInstability, TermKind::kRandomWalk,
+                        TermKind::kWhiteAngle, TermKind::kRateRamp}) {
+    for (const TermEstimate& term : fit.terms) {
+      if (term.kind == kind) ordered.push_back(&term);
+    }
+  }
+  for (const TermEstimate& term : fit.terms) {
+    if (std::find(ordered.begin(), ordered.end(), &term) == ordered.end()) ordered.push_back(&term);
+  }
+  return ordered;
 }
 
 const TermEstimate* FitResult::find(const std::string& name) const {
@@ -118,8 +259,8 @@ TermEstimate* FitResult::find(const std::string& name) {
   return const_cast<TermEstimate*>(static_cast<const FitResult*>(this)->find(name));
 }
 
-FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, double tau0_s,
-                          double record_length_s, const FitOptions& options) {
+FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, double tau0_s, double record_length_s,
+                          const FitOptions& options) {
   if (!(tau0_s > 0.0) || !(record_length_s > tau0_s)) {
     throw std::invalid_argument("fit_noise_model: need tau0_s > 0 and record_length_s > tau0_s");
   }
@@ -127,28 +268,72 @@ FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, doub
   fit.options = options;
   fit.tau0_s = tau0_s;
   fit.record_length_s = record_length_s;
-  fit.points = select_octave_points(points);
+  DataSpan span;
+  span.tau0_s = tau0_s;
+  span.record_length_s = record_length_s;
+  span.sample_count = std::llround(record_length_s / tau0_s);
+  std::vector<allan::StabilityPoint> evaluable;
+  for (const auto& point : points) {
+    if (2LL * point.averaging_factor <= span.sample_count - 1) evaluable.push_back(point);
+  }
+  fit.points = select_fit_points(evaluable);
   fit.graphical = read_graphically(points);
-  const DataSpan span{tau0_s, record_length_s, fit.points.front().tau_s, fit.points.back().tau_s};
-  const SolverSettings settings = solver_settings(options);
+  span.tau_min_s = fit.points.front().tau_s;
+  span.tau_max_s = fit.points.back().tau_s;
+  span.smallest_avar = span.largest_avar = fit.points.front().avar;
+  for (const FitPoint& point : fit.points) {
+    span.smallest_avar = std::min(span.smallest_avar, point.avar);
+    span.largest_avar = std::max(span.largest_avar, point.avar);
+  }
+  const double quantization = quantization_density(options.output_quantization_step, tau0_s);
 
-  const SelectedModel selected = select_model(fit.points, span, options);
+  OavarCovariance covariance(averaging_factors(fit.points), tau0_s, span.sample_count);
+  covariance.set_pooled_term_fractions(pooled_term_fractions(fit.points));
+  // The weights stand on a description of the data (descriptive_model.h). The selection first
+  // asks the model to describe the curve to 1 % in AVAR (the band's floor is +-1 % in
+  // deviation); the discrepancy the selected model then leaves is estimated. Below 1 % (a model
+  // that is right, as on the emulator) the selection runs again with it, so the estimates'
+  // full precision decides; above, the terms stay as selected and only their fit and sigmas take
+  // the larger spread (selecting again under it would drop terms, raise the spread, and spiral).
+  const NoiseModel first_weight_model = descriptive_model(fit.points, span, quantization);
+  const auto select = [&](const FitOptions& allowed) {
+    SelectedModel selected =
+        select_model(fit.points, span, allowed, covariance, kInitialDiscrepancy, first_weight_model);
+    const int dof = static_cast<int>(fit.points.size()) - parameter_count(selected.structure);
+    const NoiseModel selected_model = model_from_log_parameters(selected.structure, selected.log_parameters);
+    const double discrepancy = estimate_discrepancy(fit.points, selected_model, covariance, dof);
+    if (discrepancy < kInitialDiscrepancy) {
+      selected = select_model(fit.points, span, allowed, covariance, discrepancy, selected_model, &selected);
+    } else {
+      refit_selected(fit.points, span, allowed, covariance, discrepancy, &selected);
+    }
+    return selected;
+  };
+  // A term that claims more than the curve holds is not reported present: its kind is left out
+  // and the selection runs again (a few times at most; a model that still claims is warned about).
+  constexpr int kMaxReselections = 3;
+  FitOptions allowed = options;
+  SelectedModel selected = select(allowed);
+  for (int attempt = 0; attempt < kMaxReselections; ++attempt) {
+    const NoiseModel model = model_from_log_parameters(selected.structure, selected.log_parameters);
+    const int claiming = term_claiming_more_than_the_curve(fit.points, model, selected.weights);
+    if (claiming < 0) break;
+    leave_out_one(model.terms[claiming].kind, model, &allowed);
+    selected = select(allowed);
+  }
+  fit.span = span;
+  fit.weights = selected.weights;
   fit.structure = selected.structure;
   fit.log_parameters = selected.log_parameters;
   fit.selection_steps = selected.steps;
   fit.model = model_from_log_parameters(fit.structure, fit.log_parameters);
-  if (!log_parameter_covariance(fit.points, fit.structure, fit.log_parameters, settings,
-                                &fit.log_covariance)) {
-    fit.log_covariance.resize(0, 0);
-  }
-  fit.quality = assess_quality(fit.points, fit.model, parameter_count(fit.structure));
-  describe_model_terms(selected, span, settings, &fit);
-  describe_absent_terms(selected, span, settings, &fit);
+  fit.log_covariance = log_parameter_covariance(fit.points, fit.structure, fit.log_parameters, selected.weights);
+  fit.quality = assess_quality(selected.cost, static_cast<int>(fit.points.size()), parameter_count(fit.structure),
+                               selected.weights.discrepancy);
+  describe_model_terms(selected, span, &fit);
+  describe_absent_terms(selected, span, &fit);
+  fit.band = band_check(evaluable, fit.model, span);
   fit.warnings = fit_warnings(fit);
-  if (fit.log_covariance.size() == 0) {
-    fit.warnings.push_back("Ceres could not compute the covariance: sigmas are missing; run the "
-                           "bootstrap");
-  }
   return fit;
 }
 

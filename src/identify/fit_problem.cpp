@@ -1,100 +1,194 @@
 #include "imu_lab/identify/fit_problem.h"
 
+#include <boost/math/special_functions/digamma.hpp>
 #include <ceres/ceres.h>
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <memory>
+#include <stdexcept>
 
-#include "imu_lab/identify/avar_likelihood.h"
 
 namespace imu_lab {
 namespace identify {
 
 namespace {
 
-constexpr double kShapeStep = 1e-4;  // central-difference step in ln(shape)
+constexpr double kShapeStep = 1e-4;  // central-difference step in a ln-shape
 
-// Residuals of all points in one block; the Jacobian is analytic in the amplitudes (AVAR is
-// proportional to amplitude^2) and a central difference in the shapes.
-class AvarDevianceCost : public ceres::CostFunction {
+// Model AVAR at each point and its derivative with respect to each ln-parameter (analytic in
+// the amplitudes, whose AVAR is proportional to amplitude^2; central differences in the shapes).
+void model_and_jacobian(const std::vector<FitPoint>& points, const ModelStructure& structure,
+                        const std::vector<double>& log_parameters, Eigen::VectorXd* model_avar_values,
+                        Eigen::MatrixXd* jacobian) {
+  const NoiseModel model = model_from_log_parameters(structure, log_parameters);
+  const int count = static_cast<int>(points.size());
+  *model_avar_values = Eigen::VectorXd(count);
+  for (int k = 0; k < count; ++k) (*model_avar_values)(k) = model_avar(model, points[k].tau_s);
+  if (jacobian == nullptr) return;
+  *jacobian = Eigen::MatrixXd::Zero(count, parameter_count(structure));
+  for (size_t i = 0; i < structure.slots.size(); ++i) {
+    const int offset = parameter_offset(structure, static_cast<int>(i));
+    const int parameters = slot_parameter_count(structure.slots[i]);
+    for (int k = 0; k < count; ++k) (*jacobian)(k, offset) = 2.0 * term_avar(model.terms[i], points[k].tau_s);
+    for (int p = 1; p < parameters; ++p) {
+      std::vector<double> up = log_parameters, down = log_parameters;
+      up[offset + p] += kShapeStep;
+      down[offset + p] -= kShapeStep;
+      const Term term_up = model_from_log_parameters(structure, up).terms[i];
+      const Term term_down = model_from_log_parameters(structure, down).terms[i];
+      for (int k = 0; k < count; ++k) {
+        (*jacobian)(k, offset + p) =
+            (term_avar(term_up, points[k].tau_s) - term_avar(term_down, points[k].tau_s)) / (2.0 * kShapeStep);
+      }
+    }
+  }
+}
+
+// The moments: ln of each measured AVAR less the mean of ln(chi2_edf / edf) at its EDF, so that
+// they are unbiased for ln of the true AVAR.
+Eigen::VectorXd log_moments(const std::vector<FitPoint>& points, const MomentWeights& weights) {
+  Eigen::VectorXd values(points.size());
+  for (size_t k = 0; k < points.size(); ++k) values(k) = std::log(points[k].avar) - weights.log_bias(k);
+  return values;
+}
+
+class MomentCost : public ceres::CostFunction {
  public:
-  AvarDevianceCost(const std::vector<FitPoint>& points, const ModelStructure& structure)
-      : points_(points), structure_(structure) {
+  MomentCost(const std::vector<FitPoint>& points, const ModelStructure& structure, const MomentWeights& weights)
+      : points_(points), structure_(structure), whitening_(weights.whitening), moments_(log_moments(points, weights)) {
     set_num_residuals(static_cast<int>(points.size()));
     mutable_parameter_block_sizes()->push_back(parameter_count(structure));
   }
 
-  bool Evaluate(double const* const* parameters, double* residuals,
-                double** jacobians) const override {
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
     const int count = parameter_count(structure_);
     const std::vector<double> log_parameters(parameters[0], parameters[0] + count);
-    const NoiseModel model = model_from_log_parameters(structure_, log_parameters);
-    const double corner = structure_.white_rate_corner_hz;
-    std::vector<double> contributions(model.terms.size());
-    for (size_t k = 0; k < points_.size(); ++k) {
-      const double tau = points_[k].tau_s;
-      double total = 0.0;
-      for (size_t i = 0; i < model.terms.size(); ++i) {
-        contributions[i] = term_avar(model.terms[i], tau, corner);
-        total += contributions[i];
-      }
-      if (!(total > 0.0) || !std::isfinite(total)) return false;
-      const DevianceResidual r = deviance_residual(points_[k].avar, total, points_[k].edf);
-      if (!std::isfinite(r.value) || !std::isfinite(r.derivative_wrt_log_model)) return false;
-      residuals[k] = r.value;
-      if (jacobians == nullptr || jacobians[0] == nullptr) continue;
-      double* row = jacobians[0] + k * count;
-      int index = 0;
-      for (size_t i = 0; i < model.terms.size(); ++i) {
-        row[index++] = r.derivative_wrt_log_model * 2.0 * contributions[i] / total;
-        if (!structure_.slots[i].shape_free) continue;
-        Term up = model.terms[i], down = model.terms[i];
-        up.shape *= std::exp(kShapeStep);
-        down.shape *= std::exp(-kShapeStep);
-        const double d_contribution =
-            (term_avar(up, tau, corner) - term_avar(down, tau, corner)) / (2.0 * kShapeStep);
-        row[index++] = r.derivative_wrt_log_model * d_contribution / total;
-      }
+    const bool want_jacobian = jacobians != nullptr && jacobians[0] != nullptr;
+    Eigen::VectorXd model;
+    Eigen::MatrixXd jacobian;
+    model_and_jacobian(points_, structure_, log_parameters, &model, want_jacobian ? &jacobian : nullptr);
+    if (!model.allFinite()) return false;
+    if (!(model.minCoeff() > 0.0)) return false;
+    Eigen::Map<Eigen::VectorXd>(residuals, model.size()) = whitening_ * (moments_ - model.array().log().matrix());
+    if (want_jacobian) {
+      if (!jacobian.allFinite()) return false;
+      Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+          jacobians[0], model.size(), count) = -whitening_ * (model.cwiseInverse().asDiagonal() * jacobian);
     }
     return true;
   }
 
  private:
-  std::vector<FitPoint> points_;
+  const std::vector<FitPoint>& points_;
   ModelStructure structure_;
+  Eigen::MatrixXd whitening_;
+  Eigen::VectorXd moments_;
 };
-
-void build_problem(ceres::Problem* problem, std::vector<double>* parameters,
-                   const std::vector<FitPoint>& points, const ModelStructure& structure,
-                   const SolverSettings& settings) {
-  ceres::LossFunction* loss = nullptr;
-  if (settings.robust_loss_scale > 0.0) loss = new ceres::HuberLoss(settings.robust_loss_scale);
-  problem->AddResidualBlock(new AvarDevianceCost(points, structure), loss, parameters->data());
-}
 
 }  // namespace
 
-void log_parameter_bounds(const ModelStructure& structure, const DataSpan& span,
-                          std::vector<double>* lower, std::vector<double>* upper) {
-  const double unbounded = std::numeric_limits<double>::infinity();
+double mean_log_scaled_chi_squared(double edf) {
+  if (!(edf > 0.0)) return 0.0;
+  // E ln(chi2_e / e) = digamma(e / 2) - ln(e / 2); its asymptotic series beyond e = 200.
+  if (edf > 200.0) return -1.0 / edf - 1.0 / (3.0 * edf * edf);
+  return boost::math::digamma(0.5 * edf) - std::log(0.5 * edf);
+}
+
+std::vector<int> averaging_factors(const std::vector<FitPoint>& points) {
+  std::vector<int> factors;
+  for (const FitPoint& point : points) factors.push_back(point.averaging_factor);
+  return factors;
+}
+
+std::vector<double> pooled_term_fractions(const std::vector<FitPoint>& points) {
+  std::vector<double> fractions;
+  for (const FitPoint& point : points) fractions.push_back(point.pooled_term_fraction);
+  return fractions;
+}
+
+MomentWeights moment_weights(const std::vector<FitPoint>& points, const NoiseModel& model,
+                             OavarCovariance& model_covariance, double discrepancy) {
+  // Relative covariance: cov(nu_i, nu_j) / (nu_i nu_j) is the covariance of ln nu to first order;
+  // it depends on the model's shape only, not on how far its level is from the data's.
+  Eigen::VectorXd level(points.size());
+  for (size_t k = 0; k < points.size(); ++k) level(k) = model_avar(model, points[k].tau_s);
+  Eigen::MatrixXd covariance =
+      level.cwiseInverse().asDiagonal() * model_covariance.covariance(model) * level.cwiseInverse().asDiagonal();
+  MomentWeights weights;
+  weights.log_bias = Eigen::VectorXd(points.size());
+  weights.edf = Eigen::VectorXd(points.size());
+  for (size_t k = 0; k < points.size(); ++k) {
+    weights.edf(k) = 2.0 / covariance(k, k);
+    weights.log_bias(k) = mean_log_scaled_chi_squared(weights.edf(k));
+    covariance(k, k) += discrepancy * discrepancy;
+  }
+  Eigen::LLT<Eigen::MatrixXd> factor(covariance);
+  if (factor.info() != Eigen::Success) {
+    // The lag sums carry relative errors near 1e-5 (1e-3 for a resonance's truncated
+    // oscillation), enough to tip the smallest eigenvalues of a strongly correlated matrix below
+    // zero. Clip the correlation matrix's eigenvalues at 1e-6 of its size: the nearest usable
+    // weights, which only give up directions the estimates do not tell apart anyway.
+    const Eigen::VectorXd scale = covariance.diagonal().cwiseMax(0.0).cwiseSqrt();
+    if (!(scale.minCoeff() > 0.0)) {
+      throw std::runtime_error("noise identification: the model gives an estimate no variance");
+    }
+    const Eigen::MatrixXd correlation = scale.cwiseInverse().asDiagonal() * covariance * scale.cwiseInverse().asDiagonal();
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(correlation);
+    const Eigen::VectorXd clipped = eigen.eigenvalues().cwiseMax(1e-6 * correlation.rows());
+    const Eigen::MatrixXd repaired = eigen.eigenvectors() * clipped.asDiagonal() * eigen.eigenvectors().transpose();
+    covariance = scale.asDiagonal() * repaired * scale.asDiagonal();
+    factor.compute(covariance);
+    if (factor.info() != Eigen::Success) {
+      throw std::runtime_error("noise identification: the model's covariance of the AVAR estimates is singular");
+    }
+  }
+  weights.discrepancy = discrepancy;
+  const Eigen::MatrixXd lower = factor.matrixL();
+  weights.whitening = lower.triangularView<Eigen::Lower>().solve(
+      Eigen::MatrixXd::Identity(static_cast<int>(points.size()), static_cast<int>(points.size())));
+  return weights;
+}
+
+void log_parameter_bounds(const ModelStructure& structure, const DataSpan& span, std::vector<double>* lower,
+                          std::vector<double>* upper) {
+  const double nyquist_hz = 1.0 / (2.0 * span.tau0_s);
+  // Amplitudes: a box wide enough for any term that could matter (every kind's amplitude is
+  // sqrt(AVAR) times a power of tau between 1 / tau0 and T), finite so that no step overflows.
+  const double time_scale = std::max(span.record_length_s, 1.0 / span.tau0_s);
+  const double log_amplitude_low = 0.5 * std::log(span.smallest_avar) - std::log(time_scale) - 30.0;
+  const double log_amplitude_high = 0.5 * std::log(span.largest_avar) + std::log(time_scale) + std::log(10.0);
   lower->clear();
   upper->clear();
   for (const TermSlot& slot : structure.slots) {
-    lower->push_back(-unbounded);
-    upper->push_back(unbounded);
+    lower->push_back(log_amplitude_low);
+    upper->push_back(log_amplitude_high);
     if (!slot.shape_free) continue;
     double low = 0.0, high = 0.0;
     switch (slot.kind) {
       case TermKind::kMarkov:
-        low = span.tau_min_s / 4.0;
+        // Faster than the shortest tau a Markov term is low-passed white noise: the front end's
+        // job (a white rate term with its corner), not a Markov term's.
+        low = span.tau_min_s;
         high = 2.0 * span.record_length_s;
         break;
       case TermKind::kSinusoid:
       case TermKind::kBiasInstability:
         low = 1.0 / span.record_length_s;
-        high = 1.0 / (2.0 * span.tau0_s);
+        high = nyquist_hz;
+        break;
+      case TermKind::kResonance:
+        // A mode of the sensor or its mount, tens of samples per period at most; slower wander
+        // is the Markov terms' and narrow lines are sinusoids.
+        low = 0.1 * nyquist_hz;
+        high = nyquist_hz;
+        break;
+      case TermKind::kWhiteRate:
+        // An anti-alias filter sits near the Nyquist frequency; a corner far inside the band is
+        // a Markov process in the signal, which the Markov term describes.
+        low = 0.1 / span.tau0_s;
+        high = 5.0 / span.tau0_s;
         break;
       default:  // zero-DC family beta
         low = span.tau0_s;
@@ -103,39 +197,41 @@ void log_parameter_bounds(const ModelStructure& structure, const DataSpan& span,
     }
     lower->push_back(std::log(low));
     upper->push_back(std::log(high));
+    if (slot.kind == TermKind::kResonance) {  // width / f_n: from a sharp peak to near-critical damping
+      lower->push_back(std::log(kSmallestResonanceRelativeWidth));
+      upper->push_back(std::log(1.9));
+    }
   }
 }
 
 SolveOutcome solve_model(const std::vector<FitPoint>& points, const ModelStructure& structure,
-                         const std::vector<double>& start, const DataSpan& span,
-                         const SolverSettings& settings, const std::vector<int>& held_fixed) {
+                         const std::vector<double>& start, const DataSpan& span, const MomentWeights& weights,
+                         const std::vector<int>& held_fixed) {
   std::vector<double> lower, upper;
   log_parameter_bounds(structure, span, &lower, &upper);
   std::vector<double> parameters = start;
-  for (size_t i = 0; i < parameters.size(); ++i) {
-    parameters[i] = std::min(std::max(parameters[i], lower[i]), upper[i]);
-  }
+  for (size_t i = 0; i < parameters.size(); ++i) parameters[i] = std::min(std::max(parameters[i], lower[i]), upper[i]);
   SolveOutcome outcome;
+  if (held_fixed.size() == parameters.size()) {
+    outcome.log_parameters = parameters;
+    outcome.cost = model_cost(points, structure, parameters, weights);
+    outcome.usable = std::isfinite(outcome.cost);
+    return outcome;
+  }
   ceres::Problem problem;
-  build_problem(&problem, &parameters, points, structure, settings);
+  problem.AddResidualBlock(new MomentCost(points, structure, weights), nullptr, parameters.data());
   for (size_t i = 0; i < parameters.size(); ++i) {
-    if (std::isfinite(lower[i])) problem.SetParameterLowerBound(parameters.data(), i, lower[i]);
-    if (std::isfinite(upper[i])) problem.SetParameterUpperBound(parameters.data(), i, upper[i]);
+    if (std::isfinite(lower[i])) problem.SetParameterLowerBound(parameters.data(), static_cast<int>(i), lower[i]);
+    if (std::isfinite(upper[i])) problem.SetParameterUpperBound(parameters.data(), static_cast<int>(i), upper[i]);
   }
   if (!held_fixed.empty()) {
-    if (held_fixed.size() == parameters.size()) {
-      outcome.log_parameters = parameters;
-      outcome.cost = model_cost(points, structure, parameters, settings);
-      outcome.usable = std::isfinite(outcome.cost);
-      return outcome;
-    }
     problem.SetManifold(parameters.data(),
                         new ceres::SubsetManifold(static_cast<int>(parameters.size()), held_fixed));
   }
   ceres::Solver::Options options;
   options.linear_solver_type = ceres::DENSE_QR;
-  options.max_num_iterations = settings.max_iterations;
-  options.function_tolerance = 1e-12;
+  options.max_num_iterations = 100;
+  options.function_tolerance = 1e-10;
   options.gradient_tolerance = 1e-12;
   options.parameter_tolerance = 1e-10;
   options.logging_type = ceres::SILENT;
@@ -149,42 +245,21 @@ SolveOutcome solve_model(const std::vector<FitPoint>& points, const ModelStructu
 }
 
 double model_cost(const std::vector<FitPoint>& points, const ModelStructure& structure,
-                  const std::vector<double>& log_parameters, const SolverSettings& settings) {
-  const NoiseModel model = model_from_log_parameters(structure, log_parameters);
-  double cost = 0.0;
-  for (const FitPoint& point : points) {
-    const double model_value = model_avar(model, point.tau_s);
-    if (!(model_value > 0.0)) return std::numeric_limits<double>::infinity();
-    const double r2 = point_deviance(point.avar, model_value, point.edf);
-    const double a = settings.robust_loss_scale;
-    const double rho = (a > 0.0 && r2 > a * a) ? 2.0 * a * std::sqrt(r2) - a * a : r2;
-    cost += 0.5 * rho;
-  }
-  return cost;
+                  const std::vector<double>& log_parameters, const MomentWeights& weights) {
+  Eigen::VectorXd model;
+  model_and_jacobian(points, structure, log_parameters, &model, nullptr);
+  if (!model.allFinite() || !(model.minCoeff() > 0.0)) return std::numeric_limits<double>::infinity();
+  return 0.5 * (weights.whitening * (log_moments(points, weights) - model.array().log().matrix())).squaredNorm();
 }
 
-bool log_parameter_covariance(const std::vector<FitPoint>& points, const ModelStructure& structure,
-                              const std::vector<double>& log_parameters,
-                              const SolverSettings& settings, Eigen::MatrixXd* covariance) {
-  std::vector<double> parameters = log_parameters;
-  ceres::Problem problem;
-  build_problem(&problem, &parameters, points, structure, settings);
-  ceres::Covariance::Options options;
-  options.algorithm_type = ceres::DENSE_SVD;
-  options.null_space_rank = -1;
-  options.min_reciprocal_condition_number = 1e-14;
-  options.num_threads = 1;
-  ceres::Covariance estimator(options);
-  std::vector<std::pair<const double*, const double*>> blocks = {
-      {parameters.data(), parameters.data()}};
-  if (!estimator.Compute(blocks, &problem)) return false;
-  const int n = static_cast<int>(parameters.size());
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> values(n, n);
-  if (!estimator.GetCovarianceBlock(parameters.data(), parameters.data(), values.data())) {
-    return false;
-  }
-  *covariance = values;
-  return true;
+Eigen::MatrixXd log_parameter_covariance(const std::vector<FitPoint>& points, const ModelStructure& structure,
+                                         const std::vector<double>& log_parameters, const MomentWeights& weights) {
+  Eigen::VectorXd model;
+  Eigen::MatrixXd jacobian;
+  model_and_jacobian(points, structure, log_parameters, &model, &jacobian);
+  const Eigen::MatrixXd whitened = weights.whitening * (model.cwiseInverse().asDiagonal() * jacobian);
+  const Eigen::MatrixXd information = whitened.transpose() * whitened;
+  return information.completeOrthogonalDecomposition().pseudoInverse();
 }
 
 }  // namespace identify

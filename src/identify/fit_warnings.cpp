@@ -29,8 +29,7 @@ std::string dominant_terms_at(const FitResult& fit, double tau_s, TermKind exclu
   std::string names;
   for (size_t i = 0; i < fit.model.terms.size(); ++i) {
     if (fit.model.terms[i].kind == excluded) continue;
-    const double share =
-        term_avar(fit.model.terms[i], tau_s, fit.model.white_rate_corner_hz) / total;
+    const double share = term_avar(fit.model.terms[i], tau_s) / total;
     if (share < 0.2) continue;
     if (!names.empty()) names += ", ";
     names += fit.terms[i].name + " (" + format_number(100.0 * share) + " % of AVAR)";
@@ -43,52 +42,26 @@ void warn_slope_reading(const FitResult& fit, TermKind kind, double tau_s, doubl
                         std::vector<std::string>* warnings) {
   const TermEstimate* term = fit.find(term_kind_name(kind));
   const double fitted = value_or_bound(term);
-  if (!std::isfinite(reading) || !std::isfinite(fitted) ||
-      !(reading > kReadingDisagreementRatio * fitted)) {
-    return;
-  }
+  if (!std::isfinite(reading) || !std::isfinite(fitted) || !(reading > kReadingDisagreementRatio * fitted)) return;
   const std::string symbol = amplitude_symbol(kind);
   const std::string carriers = dominant_terms_at(fit, tau_s, kind);
-  warnings->push_back(
-      "slope reading of " + symbol + " at tau = " + format_number(tau_s) + " s (" +
-      format_number(reading) + ") is " + format_number(reading / fitted) + "x the fitted " +
-      symbol + (term->status == TermStatus::kPresent ? "" : " upper bound") + " (" +
-      format_number(fitted) + "): the curve there is carried by " + carriers +
-      (carriers.find("markov") != std::string::npos
-           ? " (seed 003 Figs. 6.9-6.12: a Markov flank posing as white noise)"
-           : ""));
+  warnings->push_back("slope reading of " + symbol + " at tau = " + format_number(tau_s) + " s (" +
+                      format_number(reading) + ") is " + format_number(reading / fitted) + "x the fitted " + symbol +
+                      (term->status == TermStatus::kPresent ? "" : " upper bound") + " (" + format_number(fitted) +
+                      "): the curve there is carried by " + carriers +
+                      (carriers.find("markov") != std::string::npos
+                           ? " (a Markov flank posing as white noise, see doc/models.md)"
+                           : ""));
 }
 
-void warn_white_rate(const FitResult& fit, std::vector<std::string>* warnings) {
-  warn_slope_reading(fit, TermKind::kWhiteRate, 1.0, fit.graphical.white_rate_at_1s, warnings);
-  const TermEstimate* white = fit.find("white_rate");
-  // A low-pass filter shows as a leftmost point (with its large EDF) well below the fitted
-  // white noise alone; noisy long-tau points touching the ray are not evidence of it.
-  const FitPoint& leftmost = fit.points.front();
-  if (white != nullptr && white->status == TermStatus::kPresent &&
-      fit.model.white_rate_corner_hz <= 0.0) {
-    const double white_only_avar =
-        term_avar(Term{TermKind::kWhiteRate, white->amplitude.value, 0.0}, leftmost.tau_s);
-    const double tolerance = 3.0 * std::sqrt(2.0 / leftmost.edf);
-    if (leftmost.avar < white_only_avar * (1.0 - std::max(0.05, tolerance))) {
-      warnings->push_back(
-          "the leftmost point (tau = " + format_number(leftmost.tau_s) + " s) lies " +
-          format_number(100.0 * (1.0 - std::sqrt(leftmost.avar / white_only_avar))) +
-          " % below the fitted white noise alone: a low-pass (anti-alias) filter pulls it down, "
-          "so the slope -1/2 ray through it (" + format_number(fit.graphical.white_rate_upper_bound) +
-          ") is no upper bound of N; set white_rate_corner_hz if known");
-    }
-  }
+void warn_markov_as_white(const FitResult& fit, std::vector<std::string>* warnings) {
   for (size_t i = 0; i < fit.model.terms.size(); ++i) {
     const Term& term = fit.model.terms[i];
-    if (term.kind == TermKind::kMarkov &&
-        markov_acts_as_low_passed_white(term.shape, fit.points.front().tau_s) &&
-        fit.model.white_rate_corner_hz <= 0.0) {
+    if (term.kind == TermKind::kMarkov && markov_acts_as_low_passed_white(term.shape, fit.points.front().tau_s)) {
       warnings->push_back(fit.terms[i].name + " has T_c = " + format_number(term.shape) +
-                          " s, below twice the shortest tau: it behaves like low-passed white "
-                          "noise of density q_c T_c = " + format_number(term.amplitude) +
-                          " (an anti-alias filter pulling the leftmost points down?); kalibr_imu.yaml's noise density "
-                          "adds it to N in power");
+                          " s, below twice the shortest tau: it behaves like low-passed white noise of density "
+                          "q_c T_c = " + format_number(term.amplitude) +
+                          "; kalibr_imu.yaml's noise density adds it to N in power");
     }
   }
 }
@@ -99,35 +72,83 @@ void warn_bias_instability(const FitResult& fit, std::vector<std::string>* warni
   const double fitted = value_or_bound(bias);
   if (!std::isfinite(reading) || !std::isfinite(fitted)) return;
   if (reading > kReadingDisagreementRatio * fitted) {
+    warnings->push_back("flat-tangent reading of B (minimum / 0.664 = " + format_number(reading) + " at tau = " +
+                        format_number(fit.graphical.tau_at_minimum_s) + " s) over-states the fitted B" +
+                        (bias->status == TermStatus::kPresent ? "" : " upper bound") + " (" + format_number(fitted) +
+                        ") " + format_number(reading / fitted) + "x: at the minimum the AVAR is mostly " +
+                        dominant_terms_at(fit, fit.graphical.tau_at_minimum_s, TermKind::kBiasInstability));
+  }
+}
+
+void warn_band(const FitResult& fit, std::vector<std::string>* warnings) {
+  for (const BandExcursion& excursion : band_excursions(fit.band)) {
+    const bool single = excursion.point_count == 1;
     warnings->push_back(
-        "flat-tangent reading of B (minimum / 0.664 = " + format_number(reading) + " at tau = " +
-        format_number(fit.graphical.tau_at_minimum_s) + " s) over-states the fitted B" +
-        (bias->status == TermStatus::kPresent ? "" : " upper bound") + " (" +
-        format_number(fitted) + ") " + format_number(reading / fitted) +
-        "x: at the minimum the AVAR is mostly " +
-        dominant_terms_at(fit, fit.graphical.tau_at_minimum_s, TermKind::kBiasInstability));
+        "the fitted total leaves the measured curve's 95 % band at " +
+        (single ? "tau " + format_number(excursion.first_tau_s) + " s"
+                : "tau " + format_number(excursion.first_tau_s) + "-" + format_number(excursion.last_tau_s) + " s (" +
+                      std::to_string(excursion.point_count) + " points)") +
+        ", by up to " + format_number(100.0 * std::abs(excursion.largest_excursion)) + " % of the deviation " +
+        (excursion.largest_excursion > 0.0 ? "above" : "below") + " the band");
+  }
+  // A term whose own partial curve exceeds the band's upper bound claims more than the curve has.
+  for (size_t i = 0; i < fit.model.terms.size(); ++i) {
+    for (const BandPoint& point : fit.band) {
+      if (std::sqrt(term_avar(fit.model.terms[i], point.tau_s)) > point.upper) {
+        warnings->push_back(fit.terms[i].name + "'s own partial curve exceeds the band's upper bound at tau " +
+                            format_number(point.tau_s) + " s: the data do not support its value there");
+        break;
+      }
+    }
   }
 }
 
 }  // namespace
 
+std::vector<BandExcursion> band_excursions(const std::vector<BandPoint>& band) {
+  std::vector<BandExcursion> excursions;
+  bool open = false;
+  for (const BandPoint& point : band) {
+    if (point.inside()) {
+      open = false;
+      continue;
+    }
+    const double excursion = point.fitted_deviation > point.upper
+                                 ? (point.fitted_deviation - point.upper) / point.measured_deviation
+                                 : -(point.lower - point.fitted_deviation) / point.measured_deviation;
+    if (!open) {
+      excursions.push_back({point.tau_s, point.tau_s, 0, 0.0});
+      open = true;
+    }
+    BandExcursion& current = excursions.back();
+    current.last_tau_s = point.tau_s;
+    ++current.point_count;
+    if (std::abs(excursion) > std::abs(current.largest_excursion)) current.largest_excursion = excursion;
+  }
+  return excursions;
+}
+
 std::vector<std::string> fit_warnings(const FitResult& fit) {
   std::vector<std::string> warnings;
-  warn_white_rate(fit, &warnings);
+  warn_slope_reading(fit, TermKind::kWhiteRate, 1.0, fit.graphical.white_rate_at_1s, &warnings);
+  warn_markov_as_white(fit, &warnings);
   warn_bias_instability(fit, &warnings);
   warn_slope_reading(fit, TermKind::kRandomWalk, 3.0, fit.graphical.random_walk_at_3s, &warnings);
-  if (fit.quality.p_value < 0.01) {
-    warnings.push_back("the model does not describe the curve (deviance " +
-                       format_number(fit.quality.deviance) + " on " +
-                       std::to_string(fit.quality.degrees_of_freedom) + " dof, p = " +
-                       format_number(fit.quality.p_value) +
-                       "): a term outside the model, or a non-stationary record");
+  if (fit.quality.discrepancy > 0.0) {
+    warnings.push_back("the model describes the curve to about " + format_number(100.0 * fit.quality.discrepancy) +
+                       " % in AVAR, less well than the estimates' precision: that spread is added to every point, "
+                       "and the sigmas include it (a front end or a process outside the model family)");
   }
+  warn_band(fit, &warnings);
   for (const TermEstimate& term : fit.terms) {
     if (term.status == TermStatus::kUnconstrained) {
-      warnings.push_back(term.name + " is in the model but the data do not constrain it: report "
-                         "its upper bound " + format_number(term.amplitude.upper_bound) +
-                         ", not its value");
+      warnings.push_back(term.name + " is in the model but the data do not constrain it: report its upper bound " +
+                         format_number(term.amplitude.upper_bound) + ", not its value");
+    }
+    if (term.borderline) {
+      warnings.push_back(term.name + " is borderline: its selection statistic " +
+                         format_number(term.selection_statistic) + " is within a factor 2 of the threshold " +
+                         format_number(term.selection_threshold) + "; another record may decide otherwise");
     }
   }
   return warnings;

@@ -1,14 +1,19 @@
 #include "imu_lab/identify/model_structure.h"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <stdexcept>
 
 namespace imu_lab {
 namespace identify {
 
-int slot_parameter_count(const TermSlot& slot) { return slot.shape_free ? 2 : 1; }
+namespace {
+// A resonance's free shape is two parameters: f_n and width / f_n.
+int free_shape_count(const TermSlot& slot) { return slot.shape_free ? shape_count(slot.kind) : 0; }
+}  // namespace
+
+int slot_parameter_count(const TermSlot& slot) { return 1 + free_shape_count(slot); }
 
 int parameter_count(const ModelStructure& structure) {
   return parameter_offset(structure, static_cast<int>(structure.slots.size()));
@@ -26,17 +31,14 @@ NoiseModel model_from_log_parameters(const ModelStructure& structure,
     throw std::invalid_argument("model_from_log_parameters: parameter count mismatch");
   }
   NoiseModel model;
-  model.white_rate_corner_hz = structure.white_rate_corner_hz;
+  model.output_quantization_density = structure.output_quantization_density;
   int index = 0;
   for (const TermSlot& slot : structure.slots) {
     Term term;
     term.kind = slot.kind;
     term.amplitude = std::exp(log_parameters[index++]);
-    if (slot.shape_free) {
-      term.shape = std::exp(log_parameters[index++]);
-    } else {
-      term.shape = slot.fixed_shape;
-    }
+    term.shape = slot.shape_free ? std::exp(log_parameters[index++]) : slot.fixed_shape;
+    if (free_shape_count(slot) == 2) term.width = term.shape * std::exp(log_parameters[index++]);
     model.terms.push_back(term);
   }
   return model;
@@ -49,8 +51,10 @@ std::vector<double> log_parameters_from_model(const ModelStructure& structure,
   }
   std::vector<double> log_parameters;
   for (size_t i = 0; i < structure.slots.size(); ++i) {
-    log_parameters.push_back(std::log(model.terms[i].amplitude));
-    if (structure.slots[i].shape_free) log_parameters.push_back(std::log(model.terms[i].shape));
+    const Term& term = model.terms[i];
+    log_parameters.push_back(std::log(term.amplitude));
+    if (structure.slots[i].shape_free) log_parameters.push_back(std::log(term.shape));
+    if (free_shape_count(structure.slots[i]) == 2) log_parameters.push_back(std::log(term.width / term.shape));
   }
   return log_parameters;
 }
@@ -69,7 +73,7 @@ void canonical_order(ModelStructure& structure, std::vector<double>& log_paramet
   std::stable_sort(order.begin(), order.end(),
                    [&](int a, int b) { return term_order_less(model.terms[a], model.terms[b]); });
   ModelStructure sorted_structure;
-  sorted_structure.white_rate_corner_hz = structure.white_rate_corner_hz;
+  sorted_structure.output_quantization_density = structure.output_quantization_density;
   std::vector<double> sorted_parameters;
   for (int i : order) {
     sorted_structure.slots.push_back(structure.slots[i]);

@@ -1,6 +1,8 @@
 #include "imu_lab/identify/noise_model.h"
 
+#include <array>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 
 #include "imu_lab/noise/analytic_avar.h"
@@ -16,16 +18,18 @@ struct KindNames {
   const char* name;
   const char* amplitude_symbol;
   const char* shape_symbol;
+  const char* width_symbol;
 };
 constexpr KindNames kKinds[] = {
-    {TermKind::kWhiteAngle, "white_angle", "Q", ""},
-    {TermKind::kWhiteRate, "white_rate", "N", ""},
-    {TermKind::kBiasInstability, "bias_instability", "B", "f0"},
-    {TermKind::kRandomWalk, "random_walk", "K", ""},
-    {TermKind::kRateRamp, "rate_ramp", "R", ""},
-    {TermKind::kMarkov, "markov", "q_c_T_c", "T_c"},
-    {TermKind::kSinusoid, "sinusoid", "Omega0", "f"},
-    {TermKind::kZeroDcFamily, "zero_dc_family", "sqrt_alpha", "beta"},
+    {TermKind::kWhiteAngle, "white_angle", "Q", "", ""},
+    {TermKind::kWhiteRate, "white_rate", "N", "low_pass_corner", ""},
+    {TermKind::kBiasInstability, "bias_instability", "B", "f0", ""},
+    {TermKind::kRandomWalk, "random_walk", "K", "", ""},
+    {TermKind::kRateRamp, "rate_ramp", "R", "", ""},
+    {TermKind::kMarkov, "markov", "q_c_T_c", "T_c", ""},
+    {TermKind::kSinusoid, "sinusoid", "Omega0", "f", ""},
+    {TermKind::kZeroDcFamily, "zero_dc_family", "sqrt_alpha", "beta", ""},
+    {TermKind::kResonance, "resonance", "rms", "f_n", "width"},
 };
 
 const KindNames& names_of(TermKind kind) {
@@ -34,12 +38,38 @@ const KindNames& names_of(TermKind kind) {
   }
   throw std::invalid_argument("unknown noise term kind");
 }
+
+// Eq. 5.3 per unit B^2. The fit evaluates the same few (f0, tau) pairs many thousands of times
+// and each costs two cosine integrals, so the last values are remembered per thread.
+double unit_bias_instability_avar(double cutoff_hz, double tau_s) {
+  struct Entry {
+    double cutoff_hz = -1.0;
+    double tau_s = -1.0;
+    double value = 0.0;
+  };
+  thread_local std::array<Entry, 1024> remembered;
+  const size_t slot = (std::hash<double>()(tau_s) ^ (std::hash<double>()(cutoff_hz) * 31)) % remembered.size();
+  Entry& entry = remembered[slot];
+  if (entry.cutoff_hz != cutoff_hz || entry.tau_s != tau_s) {
+    entry = {cutoff_hz, tau_s, noise::bias_instability_avar(1.0, cutoff_hz, tau_s)};
+  }
+  return entry.value;
+}
+
+// Kinds that may appear more than once, numbered in reports by their shape.
+bool is_numbered(TermKind kind) {
+  return kind == TermKind::kMarkov || kind == TermKind::kSinusoid || kind == TermKind::kResonance;
+}
 }  // namespace
 
 std::string term_kind_name(TermKind kind) { return names_of(kind).name; }
 std::string amplitude_symbol(TermKind kind) { return names_of(kind).amplitude_symbol; }
 std::string shape_symbol(TermKind kind) { return names_of(kind).shape_symbol; }
+std::string width_symbol(TermKind kind) { return names_of(kind).width_symbol; }
 bool has_shape(TermKind kind) { return !shape_symbol(kind).empty(); }
+int shape_count(TermKind kind) {
+  return (has_shape(kind) ? 1 : 0) + (width_symbol(kind).empty() ? 0 : 1);
+}
 
 TermKind term_kind_from_name(const std::string& name) {
   for (const auto& entry : kKinds) {
@@ -48,19 +78,19 @@ TermKind term_kind_from_name(const std::string& name) {
   throw std::invalid_argument("unknown noise term '" + name + "'");
 }
 
-double term_avar(const Term& term, double tau_s, double white_rate_corner_hz) {
+double term_avar(const Term& term, double tau_s) {
   const double a = term.amplitude;
   switch (term.kind) {
     case TermKind::kWhiteAngle:
       return noise::white_angle_avar(a, tau_s);
     case TermKind::kWhiteRate:
-      if (white_rate_corner_hz > 0.0) {
-        const double time_constant_s = 1.0 / (kTwoPi * white_rate_corner_hz);
+      if (term.shape > 0.0) {
+        const double time_constant_s = 1.0 / (kTwoPi * term.shape);
         return noise::markov_avar(a / time_constant_s, time_constant_s, tau_s);
       }
       return noise::white_rate_avar(a, tau_s);
     case TermKind::kBiasInstability:
-      return noise::bias_instability_avar(a, term.shape, tau_s);
+      return a * a * unit_bias_instability_avar(term.shape, tau_s);
     case TermKind::kRandomWalk:
       return noise::random_walk_avar(a, tau_s);
     case TermKind::kRateRamp:
@@ -71,27 +101,35 @@ double term_avar(const Term& term, double tau_s, double white_rate_corner_hz) {
       return noise::sinusoid_avar(a, term.shape, tau_s);
     case TermKind::kZeroDcFamily:
       return noise::zero_dc_family_avar(2.0, a * a, term.shape, tau_s);
+    case TermKind::kResonance:
+      return noise::resonance_avar(a, term.shape, term.width, tau_s);
   }
   throw std::invalid_argument("unknown noise term kind");
 }
 
 double model_avar(const NoiseModel& model, double tau_s) {
-  double total = 0.0;
-  for (const Term& term : model.terms) total += term_avar(term, tau_s, model.white_rate_corner_hz);
+  double total = noise::white_rate_avar(model.output_quantization_density, tau_s);
+  for (const Term& term : model.terms) total += term_avar(term, tau_s);
   return total;
 }
 
 bool term_order_less(const Term& a, const Term& b) {
   if (a.kind != b.kind) return static_cast<int>(a.kind) < static_cast<int>(b.kind);
-  return a.kind == TermKind::kMarkov && a.shape < b.shape;
+  if (!is_numbered(a.kind)) return false;
+  // Markov terms by correlation time; sinusoids and resonances by frequency.
+  return a.shape < b.shape;
 }
 
 std::vector<std::string> term_names(const NoiseModel& model) {
   std::vector<std::string> names;
-  int markov_count = 0;
-  for (const Term& term : model.terms) {
-    std::string name = term_kind_name(term.kind);
-    if (term.kind == TermKind::kMarkov) name += "_" + std::to_string(++markov_count);
+  for (size_t i = 0; i < model.terms.size(); ++i) {
+    const TermKind kind = model.terms[i].kind;
+    std::string name = term_kind_name(kind);
+    if (is_numbered(kind)) {
+      int number = 1;
+      for (size_t j = 0; j < i; ++j) number += model.terms[j].kind == kind ? 1 : 0;
+      name += "_" + std::to_string(number);
+    }
     names.push_back(name);
   }
   return names;

@@ -8,6 +8,7 @@
 
 #include "imu_lab/common/atomic_file.h"
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/identify/fit_warnings.h"
 #include "imu_lab/identify/white_equivalent.h"
 
 namespace imu_lab {
@@ -22,31 +23,79 @@ void emit_number(YAML::Emitter& out, const std::string& key, double value) {
   out << YAML::Key << key << YAML::Value << value;
 }
 
-// value, sigma and bound of one parameter in every unit it is reported in.
-void emit_parameter(YAML::Emitter& out, const std::string& symbol,
-                    const std::vector<UnitScale>& units, const ParameterEstimate& estimate,
-                    double confidence) {
+// value, sigma, intervals and bound of one parameter in every unit it is reported in.
+void emit_parameter(YAML::Emitter& out, const std::string& symbol, const std::vector<UnitScale>& units,
+                    const ParameterEstimate& estimate, double confidence) {
   for (const UnitScale& unit : units) {
     const std::string key = parameter_key(symbol, unit.key);
     emit_number(out, key, estimate.value * unit.per_si);
     emit_number(out, key + "_sigma", estimate.sigma * unit.per_si);
+    if (std::isfinite(estimate.log_sigma)) {
+      emit_number(out, key + "_68_low", estimate.interval_low(1.0) * unit.per_si);
+      emit_number(out, key + "_68_high", estimate.interval_high(1.0) * unit.per_si);
+      emit_number(out, key + "_95_low", estimate.interval_low(1.959964) * unit.per_si);
+      emit_number(out, key + "_95_high", estimate.interval_high(1.959964) * unit.per_si);
+    }
     emit_number(out, key + upper_bound_suffix(confidence), estimate.upper_bound * unit.per_si);
   }
 }
 
-void emit_term(YAML::Emitter& out, SensorKind sensor, const TermEstimate& term,
-               double confidence) {
+void emit_term(YAML::Emitter& out, SensorKind sensor, const TermEstimate& term, double confidence) {
   out << YAML::Key << term.name << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "status" << YAML::Value << term_status_name(term.status);
+  out << YAML::Key << "borderline" << YAML::Value << term.borderline;
   out << YAML::Key << "sigma_source" << YAML::Value << sigma_source_name(term.sigma_source);
-  emit_number(out, "removal_lr_statistic", term.removal_lr_statistic);
-  emit_parameter(out, amplitude_symbol(term.kind), amplitude_units(sensor, term.kind),
-                 term.amplitude, confidence);
-  if (has_shape(term.kind)) {
+  emit_number(out, "selection_statistic", term.selection_statistic);
+  emit_number(out, "selection_threshold", term.selection_threshold);
+  emit_parameter(out, amplitude_symbol(term.kind), amplitude_units(sensor, term.kind), term.amplitude, confidence);
+  // A white rate's shape is the front end's corner, reported in front_end.
+  if (has_shape(term.kind) && term.kind != TermKind::kWhiteRate) {
     out << YAML::Key << "shape_fitted" << YAML::Value << term.shape_fitted;
     emit_parameter(out, shape_symbol(term.kind), shape_units(term.kind), term.shape, confidence);
   }
+  if (!width_symbol(term.kind).empty()) {
+    emit_parameter(out, width_symbol(term.kind), shape_units(term.kind), term.width, confidence);
+  }
   out << YAML::EndMap;
+}
+
+// The sensor's front end: the low-pass on the white noise (fitted or given) and the output's
+// quantization step (from the data).
+void emit_front_end(YAML::Emitter& out, SensorKind sensor, const FitResult& fit) {
+  out << YAML::Key << "front_end" << YAML::Value << YAML::BeginMap;
+  const TermEstimate* white = fit.find("white_rate");
+  if (white != nullptr && std::isfinite(white->shape.value)) {
+    out << YAML::Key << "low_pass" << YAML::Value << (white->shape_fitted ? "fitted" : "given");
+    emit_parameter(out, shape_symbol(TermKind::kWhiteRate), shape_units(TermKind::kWhiteRate), white->shape,
+                   fit.options.upper_bound_confidence);
+  } else {
+    out << YAML::Key << "low_pass" << YAML::Value << "none";
+  }
+  emit_number(out, "output_quantization_step_" + rate_unit_key(sensor),
+              fit.options.output_quantization_step > 0.0 ? fit.options.output_quantization_step : std::nan(""));
+  out << YAML::EndMap;
+}
+
+void emit_band(YAML::Emitter& out, const FitResult& fit) {
+  int inside = 0;
+  for (const BandPoint& point : fit.band) inside += point.inside() ? 1 : 0;
+  out << YAML::Key << "band_check" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "note" << YAML::Value
+      << "fitted total against the measured deviation's chi-squared band at the fitted model's EDF, never "
+         "narrower than +-1 %";
+  emit_number(out, "confidence", kBandConfidence);
+  out << YAML::Key << "points" << YAML::Value << static_cast<int>(fit.band.size());
+  out << YAML::Key << "inside" << YAML::Value << inside;
+  out << YAML::Key << "outside_ranges" << YAML::Value << YAML::BeginSeq;
+  for (const BandExcursion& excursion : band_excursions(fit.band)) {
+    out << YAML::BeginMap;
+    emit_number(out, "first_tau_s", excursion.first_tau_s);
+    emit_number(out, "last_tau_s", excursion.last_tau_s);
+    out << YAML::Key << "points" << YAML::Value << excursion.point_count;
+    emit_number(out, "largest_excursion_percent_of_deviation", 100.0 * excursion.largest_excursion);
+    out << YAML::EndMap;
+  }
+  out << YAML::EndSeq << YAML::EndMap;
 }
 
 void emit_graphical(YAML::Emitter& out, SensorKind sensor, const GraphicalReadings& readings) {
@@ -96,20 +145,23 @@ void emit_axis(YAML::Emitter& out, SensorKind sensor, const std::string& name,
   out << YAML::Key << name << YAML::Value << YAML::BeginMap;
   emit_number(out, "tau0_s", fit.tau0_s);
   emit_number(out, "record_length_s", fit.record_length_s);
+  out << YAML::Key << "terms" << YAML::Value << YAML::BeginMap;
+  for (const TermEstimate* term : terms_in_report_order(fit)) {
+    emit_term(out, sensor, *term, fit.options.upper_bound_confidence);
+  }
+  out << YAML::EndMap;
+  emit_front_end(out, sensor, fit);
+  emit_white_equivalent(out, sensor, fit);
   out << YAML::Key << "fit_quality" << YAML::Value << YAML::BeginMap;
-  emit_number(out, "deviance", fit.quality.deviance);
+  emit_number(out, "distance", fit.quality.distance);
   out << YAML::Key << "points" << YAML::Value << fit.quality.points;
   out << YAML::Key << "parameters" << YAML::Value << fit.quality.parameters;
   out << YAML::Key << "degrees_of_freedom" << YAML::Value << fit.quality.degrees_of_freedom;
-  emit_number(out, "deviance_per_dof", fit.quality.deviance_per_dof);
+  emit_number(out, "distance_per_dof", fit.quality.distance_per_dof);
   emit_number(out, "p_value", fit.quality.p_value);
+  emit_number(out, "discrepancy_relative_avar", fit.quality.discrepancy);
   out << YAML::EndMap;
-  out << YAML::Key << "terms" << YAML::Value << YAML::BeginMap;
-  for (const TermEstimate& term : fit.terms) {
-    emit_term(out, sensor, term, fit.options.upper_bound_confidence);
-  }
-  out << YAML::EndMap;
-  emit_white_equivalent(out, sensor, fit);
+  emit_band(out, fit);
   emit_graphical(out, sensor, fit.graphical);
   out << YAML::Key << "warnings" << YAML::Value << YAML::BeginSeq;
   for (const std::string& warning : fit.warnings) out << warning;
@@ -119,7 +171,7 @@ void emit_axis(YAML::Emitter& out, SensorKind sensor, const std::string& name,
     std::ostringstream line;
     line << step.action << " " << step.term;
     if (step.action != "start") {
-      line << " (2 delta log L = " << step.lr_statistic << ", threshold " << step.threshold << ")";
+      line << " (change of the distance " << step.lr_statistic << ", threshold " << step.threshold << ")";
     }
     out << line.str();
   }
@@ -137,19 +189,48 @@ std::string upper_bound_suffix(double confidence) {
   return "_upper_" + std::to_string(static_cast<int>(std::lround(100.0 * confidence)));
 }
 
+namespace {
+void emit_events(YAML::Emitter& out, const ReportMetadata& metadata) {
+  out << YAML::Key << "events" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "screened" << YAML::Value << metadata.events_screened;
+  if (metadata.events_screened) {
+    out << YAML::Key << "count" << YAML::Value << metadata.event_count;
+    out << YAML::Key << "effect" << YAML::Value
+        << "each event's samples were left out and the record split there (a bias step it left lies between "
+           "two pooled segments): the curves and this fit never saw it";
+    out << YAML::Key << "listed" << YAML::Value << YAML::BeginSeq;
+    for (const ReportEvent& event : metadata.events) {
+      out << YAML::Flow << YAML::BeginMap;
+      emit_number(out, "onset_s", event.onset_s);
+      emit_number(out, "window_start_s", event.window_start_s);
+      emit_number(out, "window_end_s", event.window_end_s);
+      out << YAML::Key << "peak_channel" << YAML::Value << event.peak_channel;
+      emit_number(out, "peak_sigma", event.peak_sigma);
+      out << YAML::Key << "dropped_samples" << YAML::Value << event.dropped_samples;
+      out << YAML::EndMap;
+    }
+    out << YAML::EndSeq;
+  }
+  out << YAML::EndMap;
+}
+}  // namespace
+
 std::string format_noise_report(const std::vector<TriadFit>& triads,
                                 const ReportMetadata& metadata) {
   YAML::Emitter out;
   out.SetDoublePrecision(17);
   out << YAML::Comment(
-      "imu_lab noise identification. SI and field units, the unit in every key. sigma_source "
-      "says where each sigma came from: ceres_covariance (fast, octave points, optimistic where "
-      "random walk dominates) or bootstrap (refits of records simulated from the model).");
+      "imu_lab noise identification (doc/noise_yaml.md). SI and field units, the unit in every key. Per axis "
+      "the five IEEE Std 952 terms come first (N, B, K, Q, R), then the others; the front end (low-pass, "
+      "output quantization) has its own block. Each value has its one-sigma and its 68 % and 95 % "
+      "intervals (symmetric in the logarithm); an absent or unconstrained term has an upper bound. "
+      "sigma_source: moment_covariance (the fit's own, default) or bootstrap.");
   out << YAML::BeginMap;
   out << YAML::Key << "format" << YAML::Value << kFormatName;
-  out << YAML::Key << "version" << YAML::Value << 1;
+  out << YAML::Key << "version" << YAML::Value << 2;
   out << YAML::Key << "source" << YAML::Value << metadata.source;
   emit_number(out, "update_rate_hz", metadata.update_rate_hz);
+  emit_events(out, metadata);
   out << YAML::Key << "triads" << YAML::Value << YAML::BeginMap;
   for (const TriadFit& triad : triads) {
     out << YAML::Key << sensor_prefix(triad.sensor) << YAML::Value << YAML::BeginMap;

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "imu_lab/identify/avar_likelihood.h"
+#include "imu_lab/identify/chi_squared.h"
 #include "imu_lab/identify/start_values.h"
 
 namespace imu_lab {
@@ -13,29 +13,25 @@ namespace {
 constexpr double kNegligibleFraction = 1e-4;  // of the envelope: 1e-8 of the AVAR it could reach
 }
 
-void append_negligible_slot(const std::vector<FitPoint>& points, const TermSlot& slot,
-                            ModelStructure* structure, std::vector<double>* log_parameters) {
-  if (slot.shape_free) {
-    throw std::invalid_argument("append_negligible_slot: the slot's shape must be fixed");
-  }
-  const double envelope =
-      envelope_amplitude(slot.kind, slot.fixed_shape, points, structure->white_rate_corner_hz);
+void append_negligible_slot(const std::vector<FitPoint>& points, const TermSlot& slot, ModelStructure* structure,
+                            std::vector<double>* log_parameters) {
+  if (slot.shape_free) throw std::invalid_argument("append_negligible_slot: the slot's shape must be fixed");
+  const double envelope = envelope_amplitude(Term{slot.kind, 1.0, slot.fixed_shape, 0.0}, points);
   structure->slots.push_back(slot);
   log_parameters->push_back(std::log(kNegligibleFraction * envelope));
 }
 
 double profile_upper_bound(const std::vector<FitPoint>& points, const ModelStructure& structure,
-                           const std::vector<double>& log_parameters, double best_cost,
-                           int slot_index, const DataSpan& span, const SolverSettings& settings,
-                           double confidence) {
+                           const std::vector<double>& log_parameters, double best_cost, int slot_index,
+                           const DataSpan& span, const MomentWeights& weights, double confidence) {
   const int amplitude_index = parameter_offset(structure, slot_index);
+  // cost = J / 2
   const double critical = 0.5 * chi_squared_quantile(2.0 * confidence - 1.0, 1.0);
   std::vector<double> current = log_parameters;
   const auto excess_at = [&](double log_amplitude) {
     std::vector<double> start = current;
     start[amplitude_index] = log_amplitude;
-    const SolveOutcome outcome =
-        solve_model(points, structure, start, span, settings, {amplitude_index});
+    const SolveOutcome outcome = solve_model(points, structure, start, span, weights, {amplitude_index});
     if (outcome.usable && outcome.cost < best_cost + critical) current = outcome.log_parameters;
     return outcome.usable ? outcome.cost - best_cost : critical + 1.0;
   };

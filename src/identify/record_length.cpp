@@ -6,76 +6,43 @@
 #include <stdexcept>
 #include <limits>
 
-#include "imu_lab/allan/edf.h"
+#include "imu_lab/identify/avar_covariance.h"
 #include "imu_lab/identify/fit_points.h"
+#include "imu_lab/identify/fit_problem.h"
 
 namespace imu_lab {
 namespace identify {
 
 namespace {
-constexpr double kShapeStep = 1e-4;
 
-int term_alpha(const Term& term, double tau_s) {
-  switch (term.kind) {
-    case TermKind::kWhiteAngle:
-    case TermKind::kZeroDcFamily:
-      return 2;
-    case TermKind::kBiasInstability:
-      return -1;
-    case TermKind::kRandomWalk:
-    case TermKind::kRateRamp:
-      return -2;
-    case TermKind::kMarkov:
-      return tau_s < term.shape ? -2 : 0;
-    default:  // white rate, sinusoid
-      return 0;
+// The fit's spacing of averaging factors (fit_points.h) over what a record of sample_count
+// samples can evaluate.
+std::vector<FitPoint> hypothetical_points(const NoiseModel& model, double tau0_s, long long sample_count) {
+  std::vector<FitPoint> points;
+  // Averaging factors are ints (allan::StabilityPoint): a record longer than 2^31 samples is
+  // evaluated up to that factor.
+  constexpr double kLargestFactor = 1e9;
+  for (double factor = 1.0; 2.0 * std::round(factor) <= sample_count - 1 && factor <= kLargestFactor;
+       factor *= kFitPointRatio) {
+    const int m = static_cast<int>(std::round(factor));
+    if (!points.empty() && m == points.back().averaging_factor) continue;
+    points.push_back({m * tau0_s, m, model_avar(model, m * tau0_s)});
   }
+  return points;
 }
+
 }  // namespace
 
-int dominant_noise_alpha(const NoiseModel& model, double tau_s) {
-  double largest = -1.0;
-  int alpha = 0;
-  for (const Term& term : model.terms) {
-    const double contribution = term_avar(term, tau_s, model.white_rate_corner_hz);
-    if (contribution > largest) {
-      largest = contribution;
-      alpha = term_alpha(term, tau_s);
-    }
-  }
-  return alpha;
-}
-
-Eigen::MatrixXd predicted_log_covariance(const ModelStructure& structure,
-                                         const std::vector<double>& log_parameters,
+Eigen::MatrixXd predicted_log_covariance(const ModelStructure& structure, const std::vector<double>& log_parameters,
                                          double tau0_s, double record_length_s) {
   const NoiseModel model = model_from_log_parameters(structure, log_parameters);
-  const int count = parameter_count(structure);
-  const long long sample_count = static_cast<long long>(record_length_s / tau0_s);
-  Eigen::MatrixXd information = Eigen::MatrixXd::Zero(count, count);
-  const double corner = structure.white_rate_corner_hz;
-  for (int m : octave_averaging_factors(sample_count)) {
-    const double tau = m * tau0_s;
-    const double total = model_avar(model, tau);
-    const double edf = allan::equivalent_degrees_of_freedom(
-        allan::Statistic::kOverlappingAllan, dominant_noise_alpha(model, tau), m, sample_count + 1);
-    if (!(edf > 0.0) || !(total > 0.0)) continue;
-    Eigen::VectorXd gradient(count);  // d ln(AVAR) / d ln(parameter)
-    int index = 0;
-    for (size_t i = 0; i < model.terms.size(); ++i) {
-      gradient[index++] = 2.0 * term_avar(model.terms[i], tau, corner) / total;
-      if (!structure.slots[i].shape_free) continue;
-      Term up = model.terms[i], down = model.terms[i];
-      up.shape *= std::exp(kShapeStep);
-      down.shape *= std::exp(-kShapeStep);
-      gradient[index++] =
-          (term_avar(up, tau, corner) - term_avar(down, tau, corner)) / (2.0 * kShapeStep * total);
-    }
-    information += 0.5 * edf * gradient * gradient.transpose();  // chi2(edf)/edf scale family
-  }
-  Eigen::FullPivLU<Eigen::MatrixXd> lu(information);
-  if (!lu.isInvertible()) return Eigen::MatrixXd();
-  return lu.inverse();
+  const long long sample_count = std::llround(record_length_s / tau0_s);
+  const std::vector<FitPoint> points = hypothetical_points(model, tau0_s, sample_count);
+  if (points.size() < 2) return Eigen::MatrixXd();
+  OavarCovariance covariance(averaging_factors(points), tau0_s, sample_count);
+  const MomentWeights weights = moment_weights(points, model, covariance, 0.0);
+  const Eigen::MatrixXd result = log_parameter_covariance(points, structure, log_parameters, weights);
+  return result.allFinite() ? result : Eigen::MatrixXd();
 }
 
 double predicted_relative_sigma(const ModelStructure& structure,
@@ -102,7 +69,7 @@ double required_record_length_s(const ModelStructure& structure,
     return std::numeric_limits<double>::infinity();
   }
   if (sigma_at(std::exp(low)) <= target_relative_sigma) return std::exp(low);
-  for (int iteration = 0; iteration < 40; ++iteration) {
+  for (int iteration = 0; iteration < 20; ++iteration) {  // 2^-20 of a factor 1e6 range: 0.001 %
     const double middle = 0.5 * (low + high);
     if (sigma_at(std::exp(middle)) > target_relative_sigma) {
       low = middle;
@@ -126,11 +93,11 @@ double required_record_length_s(const FitResult& fit, const std::string& term_na
     return std::numeric_limits<double>::infinity();
   }
   const int index = parameter_offset(fit.structure, slot);
-  const double cramer_rao = predicted_relative_sigma(fit.structure, fit.log_parameters, index,
-                                                     fit.tau0_s, fit.record_length_s);
-  const double reported = term->amplitude.sigma / term->amplitude.value;
+  const double predicted = predicted_relative_sigma(fit.structure, fit.log_parameters, index, fit.tau0_s,
+                                                   fit.record_length_s);
+  const double reported = term->amplitude.log_sigma;
   const double inflation =
-      (std::isfinite(reported) && cramer_rao > 0.0) ? std::max(1.0, reported / cramer_rao) : 1.0;
+      (std::isfinite(reported) && predicted > 0.0) ? std::max(1.0, reported / predicted) : 1.0;
   return required_record_length_s(fit.structure, fit.log_parameters, index, fit.tau0_s,
                                   fit.record_length_s, target_relative_sigma / inflation);
 }

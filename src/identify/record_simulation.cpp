@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <stdexcept>
 
 #include "imu_lab/noise/make_noise_process.h"
 #include "imu_lab/noise/normal_stream.h"
@@ -18,7 +19,12 @@ std::vector<noise::ProcessParameters> emulator_processes(const NoiseModel& model
         processes.push_back(noise::WhiteAngleParameters{term.amplitude, 0.0});
         break;
       case TermKind::kWhiteRate:
-        processes.push_back(noise::WhiteRateParameters{term.amplitude});
+        if (term.shape > 0.0) {  // behind the front end: exactly a Markov process
+          const double time_constant_s = 1.0 / (2.0 * 3.14159265358979323846 * term.shape);
+          processes.push_back(noise::MarkovParameters{term.amplitude / time_constant_s, time_constant_s});
+        } else {
+          processes.push_back(noise::WhiteRateParameters{term.amplitude});
+        }
         break;
       case TermKind::kBiasInstability:
         processes.push_back(noise::BiasInstabilityParameters{
@@ -40,7 +46,13 @@ std::vector<noise::ProcessParameters> emulator_processes(const NoiseModel& model
         processes.push_back(
             noise::ZeroDcFamilyParameters{2, term.amplitude * term.amplitude, term.shape});
         break;
+      case TermKind::kResonance:
+        throw std::invalid_argument("record simulation: the emulator has no resonance process");
     }
+  }
+  // The output's rounding, as the white noise it adds.
+  if (model.output_quantization_density > 0.0) {
+    processes.push_back(noise::WhiteRateParameters{model.output_quantization_density});
   }
   return processes;
 }
@@ -52,8 +64,7 @@ std::vector<double> simulate_rates(const NoiseModel& model, double tau0_s, long 
   for (size_t i = 0; i < parameters.size(); ++i) {
     const std::string stream = "identify.bootstrap." + noise::process_kind(parameters[i]) + "#" +
                                std::to_string(i);
-    processes.push_back(noise::make_noise_process(parameters[i], noise::stream_seed(seed, stream),
-                                                  model.white_rate_corner_hz));
+    processes.push_back(noise::make_noise_process(parameters[i], noise::stream_seed(seed, stream)));
   }
   std::vector<double> rates(sample_count, 0.0);
   for (long long k = 0; k < sample_count; ++k) {

@@ -39,10 +39,15 @@ void flag_worst_axis(TriadFit* triad) {
 TriadFit fit_triad(SensorKind sensor,
                    const std::array<std::vector<allan::StabilityPoint>, 3>& curves, double tau0_s,
                    double record_length_s, const FitOptions& options) {
+  return fit_triad(sensor, curves, tau0_s, record_length_s, std::array<FitOptions, 3>{options, options, options});
+}
+
+TriadFit fit_triad(SensorKind sensor, const std::array<std::vector<allan::StabilityPoint>, 3>& curves,
+                   double tau0_s, double record_length_s, const std::array<FitOptions, 3>& options_per_axis) {
   TriadFit triad;
   triad.sensor = sensor;
   for (int axis = 0; axis < 3; ++axis) {
-    triad.axes[axis] = fit_noise_model(curves[axis], tau0_s, record_length_s, options);
+    triad.axes[axis] = fit_noise_model(curves[axis], tau0_s, record_length_s, options_per_axis[axis]);
   }
   flag_worst_axis(&triad);
   return triad;

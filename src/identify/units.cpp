@@ -50,10 +50,10 @@ const std::vector<TermUnits>& unit_table() {
   return table;
 }
 
-// Markov flanks are densities like N; sinusoid amplitudes are rates like B.
+// Markov flanks are densities like N; sinusoid and resonance amplitudes are rates like B.
 TermKind unit_twin(TermKind kind) {
   if (kind == TermKind::kMarkov) return TermKind::kWhiteRate;
-  if (kind == TermKind::kSinusoid) return TermKind::kBiasInstability;
+  if (kind == TermKind::kSinusoid || kind == TermKind::kResonance) return TermKind::kBiasInstability;
   return kind;
 }
 }  // namespace
@@ -74,6 +74,8 @@ std::vector<UnitScale> shape_units(TermKind kind) {
       return {{"s", 1.0}};
     case TermKind::kSinusoid:
     case TermKind::kBiasInstability:
+    case TermKind::kResonance:
+    case TermKind::kWhiteRate:  // the front end's corner
       return {{"hz", 1.0}};
     default:
       return {};

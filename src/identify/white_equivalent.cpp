@@ -11,7 +11,8 @@ bool markov_acts_as_low_passed_white(double correlation_time_s, double shortest_
 }
 
 double white_equivalent_density(const FitResult& fit) {
-  const bool filter_modelled = fit.model.white_rate_corner_hz > 0.0;
+  bool filter_modelled = false;
+  for (const Term& term : fit.model.terms) filter_modelled |= term.kind == TermKind::kWhiteRate && term.shape > 0.0;
   double power = 0.0;
   bool any = false;
   for (const TermEstimate& term : fit.terms) {

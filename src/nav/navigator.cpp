@@ -5,6 +5,7 @@
 #include <string>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/format_number.h"
 #include "imu_lab/nav/rotation.h"
 
 namespace imu_lab {
@@ -16,23 +17,31 @@ double wrapLongitude(double longitude_rad) { return std::remainder(longitude_rad
 
 }  // namespace
 
+std::string stateProblem(const NavState& state) {
+  const bool finite = std::isfinite(state.stamp_s) && state.q_body_to_enu.coeffs().allFinite() &&
+                      state.velocity_enu_m_s.allFinite() && std::isfinite(state.latitude_rad) &&
+                      std::isfinite(state.longitude_rad) && std::isfinite(state.height_m);
+  if (!finite) return "NaN or Inf in the state";
+  if (!(state.q_body_to_enu.norm() > 0.5)) return "the attitude quaternion is zero";
+  if (!(std::abs(state.latitude_rad) < 0.5 * M_PI)) {
+    return "latitude_rad = " + std::to_string(state.latitude_rad) +
+           " is not strictly between -pi/2 and pi/2 (radians, not degrees?); the ENU mechanisation is singular at "
+           "the poles";
+  }
+  if (!(std::abs(state.height_m) <= kMaxAbsoluteHeight_m)) {
+    return "height " + format_number(state.height_m, 4) + " m is beyond +-" + format_number(kMaxAbsoluteHeight_m / 1e3, 4) +
+           " km";
+  }
+  return "";
+}
+
 Navigator::Navigator(const NavigatorConfig& config)
     : earth_(config.earth), vertical_(config.vertical), compensator_(config.corrections) {}
 
 void Navigator::initialise(const NavState& initial_state) {
-  const bool finite =
-      std::isfinite(initial_state.stamp_s) && initial_state.q_body_to_enu.coeffs().allFinite() &&
-      initial_state.q_body_to_enu.norm() > 0.5 && initial_state.velocity_enu_m_s.allFinite() &&
-      std::isfinite(initial_state.longitude_rad) && std::isfinite(initial_state.height_m);
-  if (!finite) {
-    throw InputError(
-        "nav: initial state has NaN/Inf or a zero quaternion; check the alignment "
-        "or the initial-state parameters");
-  }
-  if (!(std::abs(initial_state.latitude_rad) < 0.5 * M_PI)) {
-    throw InputError("nav: initial latitude_rad = " + std::to_string(initial_state.latitude_rad) +
-                     " is not strictly between -pi/2 and pi/2 (radians, not degrees?); the ENU "
-                     "mechanisation is singular at the poles");
+  const std::string problem = stateProblem(initial_state);
+  if (!problem.empty()) {
+    throw InputError("nav: initial state: " + problem + "; check the alignment or the initial-state parameters");
   }
   state_ = initial_state;
   state_.q_body_to_enu.normalize();
@@ -101,6 +110,13 @@ const NavState& Navigator::update(const ImuIncrement& increment) {
   state_.q_body_to_enu =
       propagateAttitude(old.q_body_to_enu, body.rotation_vector_rad, nav_rotation_mid);
   state_.stamp_s = old.stamp_s + dt;
+  const std::string problem = stateProblem(state_);
+  if (!problem.empty()) {
+    state_ = old;
+    initialised_ = false;
+    throw UnusableStateError("nav: the state became unusable in the step ending at t = " +
+                             format_number(old.stamp_s + dt, 12) + " s: " + problem);
+  }
   return state_;
 }
 

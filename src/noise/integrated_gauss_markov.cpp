@@ -54,6 +54,11 @@ double IntegratedGaussMarkov::advance(double& state, double h, double normal_1, 
   return integral;
 }
 
+void IntegratedGaussMarkov::advance_state(double& state, double h, double normal) {
+  prepare(h);
+  state = state_gain_ * state + chol_state_ * normal;
+}
+
 double IntegratedGaussMarkov::stationary_variance() const {
   if (decay_rate_per_s_ <= 0.0) return std::numeric_limits<double>::infinity();
   return drive_density_ * drive_density_ / (2.0 * decay_rate_per_s_);

@@ -6,6 +6,7 @@
 #include "imu_lab/noise/deterministic_noise.h"
 #include "imu_lab/noise/flicker_bank.h"
 #include "imu_lab/noise/gauss_markov_noise.h"
+#include "imu_lab/noise/resonance_noise.h"
 #include "imu_lab/noise/white_angle_noise.h"
 #include "imu_lab/noise/white_rate_noise.h"
 #include "imu_lab/noise/zero_dc_noise.h"
@@ -16,7 +17,8 @@ namespace noise {
 std::string process_kind(const ProcessParameters& parameters) {
   static const char* const kNames[] = {"white_rate", "bias_instability", "random_walk",
                                        "rate_ramp",  "markov",           "sinusoid",
-                                       "white_angle", "zero_dc_family"};
+                                       "white_angle", "zero_dc_family",   "resonance",
+                                       "high_pass_white", "zero_dc_gaussian"};
   static_assert(std::variant_size_v<ProcessParameters> == sizeof(kNames) / sizeof(kNames[0]),
                 "one name per parameter type");
   return kNames[parameters.index()];
@@ -48,8 +50,14 @@ std::unique_ptr<NoiseProcess> make_noise_process(const ProcessParameters& parame
           return std::make_unique<SinusoidNoise>(p);
         } else if constexpr (std::is_same_v<T, WhiteAngleParameters>) {
           return std::make_unique<WhiteAngleNoise>(p, normals);
-        } else {
+        } else if constexpr (std::is_same_v<T, ZeroDcFamilyParameters> ||
+                             std::is_same_v<T, ZeroDcGaussianParameters>) {
           return std::make_unique<ZeroDcNoise>(p, normals);
+        } else if constexpr (std::is_same_v<T, ResonanceParameters>) {
+          return std::make_unique<ResonanceNoise>(p, normals);
+        } else {
+          static_assert(std::is_same_v<T, HighPassWhiteParameters>, "every parameter type is built");
+          return std::make_unique<HighPassWhiteNoise>(p, normals);
         }
       },
       parameters);

@@ -48,15 +48,17 @@ void read_batches(OpenBag& bag, const std::string& topic, AllanInput input, Boun
 
 }  // namespace
 
-AllanBagPassResult run_allan_bag_pass(const std::string& bag_path, const AllanBagPassOptions& options) {
+AllanBagPassResult run_allan_bag_pass(const BagRecording& recording, const AllanBagPassOptions& options) {
   AllanBagPassResult result;
-  result.bag_path = bag_path;
+  result.bag_path = recording.name();
+  result.window = recording.window;
   result.input = options.input;
   // Opened once: each opening reads the bag's whole index again.
-  OpenBag bag(bag_path);
+  OpenBag bag(recording);
+  result.files = bag.ordered_paths();
   const TopicInfo topic = bag.choose_topic(options.topic, allan_input_datatype(options.input));
   result.topic = topic.name;
-  const std::string where = "bag " + bag_path + ", topic " + result.topic;
+  const std::string where = "bag " + recording.name() + ", topic " + result.topic;
   const std::size_t total = topic.message_count;
   if (total < kMinimumMessages) {
     throw InputError(where + " has " + std::to_string(total) + " messages; an Allan analysis needs at least " +
@@ -67,6 +69,11 @@ AllanBagPassResult run_allan_bag_pass(const std::string& bag_path, const AllanBa
   result.engine.input_kind = engine_input_kind(options.input);
   result.engine.warm_up_sample_count = std::min(result.engine.warm_up_sample_count, total);
   allan::StreamingAllan engine(result.engine);
+  allan::ImpulseScreenOptions screen_options = options.screen;
+  screen_options.channel_count = kAllanChannelCount;
+  screen_options.gap_factor = result.engine.gap_factor;
+  allan::ImpulseScreen screen(screen_options);
+  allan::OutputStepDetector steps(kAllanChannelCount);
 
   BoundedQueue<SampleBatch> queue(kQueuedBatches);
   std::exception_ptr reader_error;
@@ -79,22 +86,26 @@ AllanBagPassResult run_allan_bag_pass(const std::string& bag_path, const AllanBa
     }
     queue.close();
   });
-  std::vector<std::int64_t> stamps_ns;
-  std::vector<double> values;
+  // The engine runs each statistic over a whole block in one loop (push_block), several times
+  // cheaper than sample by sample; it wants stamps and row-major values side by side, as the
+  // screen hands them over.
+  allan::ScreenedSamples passed;
+  const auto push_passed = [&] {
+    engine.push_block(passed.stamps_ns.data(), passed.values.data(), passed.size());
+    passed.clear();
+  };
   try {
     while (std::optional<SampleBatch> batch = queue.pop()) {
-      // The engine runs each statistic over a whole block in one loop (push_block), several times
-      // cheaper than sample by sample; it wants stamps and row-major values side by side.
-      stamps_ns.clear();
-      values.clear();
       for (const AllanSample& sample : *batch) {
-        stamps_ns.push_back(sample.stamp_ns);
-        values.insert(values.end(), sample.values.begin(), sample.values.end());
+        steps.push(sample.values.data());
+        screen.push(sample.stamp_ns, sample.values.data(), passed);
       }
-      engine.push_block(stamps_ns.data(), values.data(), batch->size());
+      push_passed();
       result.message_count += batch->size();
       if (options.on_progress) options.on_progress(result.message_count, total);
     }
+    screen.finish(passed);
+    push_passed();
   } catch (const InputError& error) {
     queue.close();
     reader.join();
@@ -108,11 +119,22 @@ AllanBagPassResult run_allan_bag_pass(const std::string& bag_path, const AllanBa
   }
   reader.join();
   if (reader_error) std::rethrow_exception(reader_error);
+  result.joins = bag.joins();
+  const std::string window_text = " in the window (" + describe_time_window(result.window) + ")";
+  if (result.message_count < kMinimumMessages) {
+    throw InputError(where + " has " + std::to_string(result.message_count) + " messages" + window_text +
+                     "; an Allan analysis needs at least " + std::to_string(kMinimumMessages));
+  }
+  // A window leaves the progress short of the topic's total; say it is done.
+  if (options.on_progress && result.message_count < total) options.on_progress(total, total);
 
   result.snapshot = engine.snapshot();
+  result.impulses = screen.report();
+  result.output_steps = steps.channels();
   if (!result.snapshot.warmed_up) {
-    throw InputError(where + ": the " + std::to_string(result.message_count) +
-                     " messages have too few regular stamps to estimate the sample period");
+    throw InputError(where + ": the " + std::to_string(result.message_count) + " messages" +
+                     (result.window.is_whole() ? "" : window_text) +
+                     " have too few regular stamps to estimate the sample period");
   }
   bool any_usable = false;
   for (const allan::ChannelReport& channel : result.snapshot.channels) any_usable |= channel.finite_sample_count > 0;

@@ -43,7 +43,9 @@ std::unique_ptr<allan::StreamingAllan> make_engine(const AllanMonitorSettings& s
 
 AllanMonitorNode::AllanMonitorNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
     : settings_(load_allan_monitor_settings(private_node)),
-      engine_(make_engine(settings_, private_node.resolveName("resume"))) {
+      engine_(make_engine(settings_, private_node.resolveName("resume"))),
+      screen_(settings_.screen),
+      output_steps_(kAllanChannelCount) {
   if (settings_.resume && engine_->input_sample_count() > 0) {
     resume_after_stamp_ns_ = engine_->last_stamp_ns();
     ROS_INFO("allan_monitor: resumed from %s: %lld samples, skipping input stamped at or before %.9f s",
@@ -60,6 +62,9 @@ AllanMonitorNode::AllanMonitorNode(ros::NodeHandle& node, ros::NodeHandle& priva
                   load_input_health_settings(private_node, settings_.engine.gap_factor));
   snapshot_failed_condition_ = health_->define_condition("snapshots that failed (no curves published)",
                                                          diagnostic_msgs::DiagnosticStatus::ERROR);
+  impulse_condition_ = health_->define_condition(
+      "knocks or spikes (impulse screen events: samples kept from the curves, the run split there)",
+      diagnostic_msgs::DiagnosticStatus::WARN);
   if (settings_.input == AllanInput::kRate) {
     input_subscriber_ = node.subscribe("imu/raw", settings_.queue_size, &AllanMonitorNode::on_imu, this);
   } else {
@@ -122,22 +127,59 @@ void AllanMonitorNode::add(const AllanSample& sample, const std_msgs::Header& he
     ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: a value beyond +-%.0e at %.9f s excluded from its channel "
                       "(counted in diagnostics)", kLargestUsableImuValue, sample.stamp_ns * 1e-9);
   }
-  // The engine splits at gaps and drops unordered stamps itself (streaming_options.h).
-  engine_->push(sample.stamp_ns, sample.values.data(), sample.values.size());
+  output_steps_.push(sample.values.data());
+  // The engine splits at gaps and drops unordered stamps itself (streaming_options.h), also at the
+  // holes the screen leaves.
+  screen_.push(sample.stamp_ns, sample.values.data(), screened_);
+  push_screened();
+  for (; counted_impulse_events_ < screen_.event_count(); ++counted_impulse_events_) {
+    health_->count(impulse_condition_);
+    ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: knock or spike detected at %.9f s: its samples are kept "
+                      "from the curves (listed in the report, counted in diagnostics)", sample.stamp_ns * 1e-9);
+  }
   last_header_ = header;
+}
+
+void AllanMonitorNode::push_screened() {
+  engine_->push_block(screened_.stamps_ns.data(), screened_.values.data(), screened_.size());
+  screened_.clear();
+}
+
+AllanMonitorNode::Current AllanMonitorNode::current() const {
+  Current now;
+  if (screen_.delayed_sample_count() == 0) {
+    now.warmed_up = engine_->warmed_up();
+    now.samples = engine_->input_sample_count();
+    if (now.warmed_up) now.snapshot = engine_->snapshot();
+    now.impulses = screen_.report();
+    return now;
+  }
+  allan::StreamingAllan engine = *engine_;
+  allan::ImpulseScreen screen = screen_;
+  allan::ScreenedSamples rest;
+  screen.finish(rest);
+  engine.push_block(rest.stamps_ns.data(), rest.values.data(), rest.size());
+  now.warmed_up = engine.warmed_up();
+  now.samples = engine.input_sample_count();
+  if (now.warmed_up) now.snapshot = engine.snapshot();
+  now.impulses = screen.report();
+  return now;
 }
 
 void AllanMonitorNode::publish_curves() {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (finished_ || !engine_->warmed_up()) return;
+  if (finished_) return;
   // A node never dies on its input: whatever the curves cannot be computed from is reported.
+  Current now;
   try {
-    latest_snapshot_ = engine_->snapshot();
+    now = current();
   } catch (const std::exception& error) {
     health_->count(snapshot_failed_condition_);
     ROS_ERROR_THROTTLE(kLogThrottle_s, "allan_monitor: no curves this time: %s (counted in diagnostics)", error.what());
     return;
   }
+  if (!now.warmed_up) return;
+  latest_snapshot_ = std::move(now.snapshot);
   for (const allan::Statistic statistic : settings_.statistics) {
     const double confidence = engine_->options().confidence;
     gyro_publisher_.publish(to_allan_deviation(*latest_snapshot_, statistic, AllanTriad::kGyro, confidence, last_header_));
@@ -157,8 +199,9 @@ void AllanMonitorNode::save_checkpoint() {
 }
 
 std::string AllanMonitorNode::write_report() {
-  if (!engine_->warmed_up()) {
-    throw InputError("no report yet: " + std::to_string(engine_->input_sample_count()) + " samples on " +
+  const Current now = current();
+  if (!now.warmed_up) {
+    throw InputError("no report yet: " + std::to_string(now.samples) + " samples on " +
                      input_subscriber_.getTopic() + ", the warm-up needs " +
                      std::to_string(engine_->options().warm_up_sample_count));
   }
@@ -167,12 +210,14 @@ std::string AllanMonitorNode::write_report() {
   run.input = settings_.input;
   run.engine = engine_->options();
   run.skipped_before_checkpoint = skipped_before_checkpoint_;
-  const allan::StreamingSnapshot snapshot = engine_->snapshot();
+  run.impulses = now.impulses;
+  run.output_steps = output_steps_.channels();
+  const allan::StreamingSnapshot& snapshot = now.snapshot;
   const AllanReportFiles files =
       write_allan_report(settings_.report_dir, run, snapshot, settings_.plot, settings_.identify);
   if (settings_.identify.enabled) noise_publisher_.publish(to_noise_parameters(files.noise, snapshot, last_header_));
   std::string text = "wrote " + std::to_string(files.written.size()) + " files to " + settings_.report_dir + " (" +
-                     std::to_string(engine_->input_sample_count()) + " samples)";
+                     std::to_string(now.samples) + " samples)";
   if (!files.plot_problem.empty()) text += "; no plot: " + files.plot_problem;
   for (const std::string& problem : files.noise.problems) text += "; identification: " + problem;
   return text;
@@ -198,6 +243,9 @@ void AllanMonitorNode::finish() {
   publish_timer_.stop();
   checkpoint_timer_.stop();
   diagnostics_timer_.stop();
+  // The samples the screen still holds belong in the last checkpoint and report.
+  screen_.finish(screened_);
+  push_screened();
   try {
     if (!settings_.checkpoint_path.empty()) engine_->save_checkpoint(settings_.checkpoint_path);
     ROS_INFO("allan_monitor: on shutdown: %s", write_report().c_str());
@@ -218,6 +266,16 @@ void AllanMonitorNode::report(diagnostic_updater::DiagnosticStatusWrapper& statu
     status.add("engine segments split at gaps", timing.gap_count);
   }
   status.add("engine state [bytes]", engine_->state_size_bytes());
+  if (settings_.screen.enabled) {
+    const allan::ImpulseScreenReport screen = screen_.report();
+    status.add("impulse events (knocks, spikes)", screen.event_count);
+    status.add("impulse samples dropped", screen.dropped_sample_count);
+    if (!screen.events.empty()) {
+      status.add("last impulse event onset [s]", screen.events.back().onset_stamp_ns * 1e-9);
+    }
+  } else {
+    status.add("impulse screen", "off");
+  }
 }
 
 }  // namespace ros_io

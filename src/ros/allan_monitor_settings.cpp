@@ -70,6 +70,17 @@ AllanMonitorSettings load_allan_monitor_settings(const ros::NodeHandle& private_
   engine.gap_factor = positive_parameter(private_node, "gap_factor", engine.gap_factor);
   engine.stamp_policy = allan::StampPolicy::kSplitAndPool;
   engine.validate();
+
+  allan::ImpulseScreenOptions& screen = settings.screen;
+  screen.enabled = parameter(private_node, "impulse_screen", screen.enabled);
+  screen.threshold_sigma = parameter(private_node, "impulse_threshold_sigma", screen.threshold_sigma);
+  if (!(screen.threshold_sigma > allan::kScaleClipSigma) || !std::isfinite(screen.threshold_sigma)) {
+    throw parameter_error(private_node, "impulse_threshold_sigma",
+                          "must be a number above 3 (robust scales of the deviation; 12 is the default)");
+  }
+  screen.channel_count = engine.channel_count;
+  screen.gap_factor = engine.gap_factor;
+  screen.validate();
   return settings;
 }
 

@@ -31,10 +31,26 @@ std::array<std::vector<allan::StabilityPoint>, 3> oadev_curves(const allan::Stre
   return curves;
 }
 
-identify::TriadFit fit_sensor(SensorKind sensor, const allan::StreamingSnapshot& snapshot,
-                              const AllanIdentifyOptions& options) {
-  identify::TriadFit triad = identify::fit_triad(sensor, oadev_curves(snapshot, sensor), snapshot.timing.tau0_s,
-                                                 record_length_s(snapshot), options.fit);
+// The output's LSB, where the run found one, is part of each axis's front end.
+std::array<identify::FitOptions, 3> axis_options(SensorKind sensor, const AllanRunDescription& run,
+                                                 const AllanIdentifyOptions& options) {
+  std::array<identify::FitOptions, 3> per_axis;
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    per_axis[axis] = options.fit;
+    const std::size_t channel = first_channel(sensor) + axis;
+    if (per_axis[axis].output_quantization_step == 0.0 && channel < run.output_steps.size() &&
+        run.output_steps[channel].quantised) {
+      per_axis[axis].output_quantization_step = run.output_steps[channel].step;
+    }
+  }
+  return per_axis;
+}
+
+identify::TriadFit fit_sensor(SensorKind sensor, const AllanRunDescription& run,
+                              const allan::StreamingSnapshot& snapshot, const AllanIdentifyOptions& options) {
+  identify::TriadFit triad =
+      identify::fit_triad(sensor, oadev_curves(snapshot, sensor), snapshot.timing.tau0_s, record_length_s(snapshot),
+                          axis_options(sensor, run, options));
   if (options.bootstrap_replicas <= 0) return triad;
   for (std::size_t axis = 0; axis < 3; ++axis) {
     identify::BootstrapOptions bootstrap;
@@ -46,11 +62,35 @@ identify::TriadFit fit_sensor(SensorKind sensor, const allan::StreamingSnapshot&
   return triad;
 }
 
+double seconds_from(std::int64_t stamp_ns, std::int64_t first_stamp_ns) {
+  return 1e-9 * static_cast<double>(stamp_ns - first_stamp_ns);
+}
+
+identify::ReportMetadata report_metadata(const AllanRunDescription& run, const allan::StreamingSnapshot& snapshot) {
+  identify::ReportMetadata metadata;
+  metadata.source = run.bag.empty() ? run.topic : run.bag;
+  metadata.update_rate_hz = 1.0 / snapshot.timing.tau0_s;
+  const allan::ImpulseScreenReport& screen = run.impulses;
+  metadata.events_screened = screen.enabled;
+  metadata.event_count = screen.event_count;
+  for (const allan::ImpulseEvent& event : screen.events) {
+    identify::ReportEvent listed;
+    listed.onset_s = seconds_from(event.onset_stamp_ns, screen.first_stamp_ns);
+    listed.window_start_s = seconds_from(event.start_stamp_ns, screen.first_stamp_ns);
+    listed.window_end_s = seconds_from(event.end_stamp_ns, screen.first_stamp_ns);
+    listed.peak_channel = event.peak_channel < kAllanChannelCount ? kAllanChannelNames[event.peak_channel] : "";
+    listed.peak_sigma = event.peak_sigma;
+    listed.dropped_samples = event.dropped_sample_count;
+    metadata.events.push_back(listed);
+  }
+  return metadata;
+}
+
 }  // namespace
 
 std::string bootstrap_replicas_problem(int replicas) {
   if (replicas == 0 || replicas >= 2) return "";
-  return "must be 0 (sigmas from the Ceres covariance) or at least 2 (a bootstrap), not " + std::to_string(replicas);
+  return "must be 0 (sigmas from the fit's moment covariance) or at least 2 (a bootstrap), not " + std::to_string(replicas);
 }
 
 std::string partial_curves_file_name(const std::string& channel_name) {
@@ -73,7 +113,7 @@ AllanNoiseReport write_allan_noise_report(const std::string& directory, const Al
   for (const SensorKind sensor : kSensors) {
     const std::string name = identify::sensor_prefix(sensor);
     try {
-      report.triads.push_back(fit_sensor(sensor, snapshot, options));
+      report.triads.push_back(fit_sensor(sensor, run, snapshot, options));
     } catch (const InputError& error) {
       report.problems.push_back(name + " not identified: record too short or curve unusable (" +
                                 std::to_string(record_length_s(snapshot)) + " s of data): " + error.what());
@@ -83,9 +123,7 @@ AllanNoiseReport write_allan_noise_report(const std::string& directory, const Al
   }
   if (report.triads.empty()) return report;
 
-  identify::ReportMetadata metadata;
-  metadata.source = run.bag.empty() ? run.topic : run.bag;
-  metadata.update_rate_hz = 1.0 / snapshot.timing.tau0_s;
+  const identify::ReportMetadata metadata = report_metadata(run, snapshot);
   const std::string noise_path = directory + "/noise.yaml";
   identify::write_noise_report(noise_path, report.triads, metadata);
   report.written.push_back(noise_path);
@@ -118,7 +156,8 @@ std::string format_identification_summary(const AllanIdentifyOptions& options, c
   out << YAML::Key << "enabled" << YAML::Value << options.enabled;
   if (options.enabled) {
     out << YAML::Key << "sigma_source" << YAML::Value
-        << (options.bootstrap_replicas > 0 ? "bootstrap" : "ceres_covariance");
+        << identify::sigma_source_name(options.bootstrap_replicas > 0 ? identify::SigmaSource::kBootstrap
+                                                                    : identify::SigmaSource::kMomentCovariance);
     out << YAML::Key << "bootstrap_replicas" << YAML::Value << options.bootstrap_replicas;
     out << YAML::Key << "identified" << YAML::Value << YAML::Flow << YAML::BeginSeq;
     for (const auto& triad : report.triads) out << identify::sensor_prefix(triad.sensor);

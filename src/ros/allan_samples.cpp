@@ -35,6 +35,11 @@ allan::InputKind engine_input_kind(AllanInput input) {
   return input == AllanInput::kRate ? allan::InputKind::kFrequency : allan::InputKind::kIncrement;
 }
 
+const char* allan_value_unit(AllanInput input, std::size_t channel) {
+  if (input == AllanInput::kRate) return kAllanChannelUnits.at(channel);
+  return channel < 3 ? "rad" : "m_s";
+}
+
 AllanSample to_allan_sample(const ImuRecord& record) {
   return make_sample(record.stamp_ns, record.angular_rate_rad_s, record.specific_force_m_s2);
 }

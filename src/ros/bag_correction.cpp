@@ -183,16 +183,16 @@ class BagCorrector {
 
 }  // namespace
 
-BagCorrectionSummary correct_bag(const std::string& bag_path, const std::string& out_bag_path,
+BagCorrectionSummary correct_bag(const BagRecording& recording, const std::string& out_bag_path,
                                  const BagCorrectionOptions& options) {
-  OpenBag bag(bag_path);
+  OpenBag bag(recording);
   BagCorrectionSummary summary;
   summary.imu_topic = bag.choose_topic(options.imu_topic, "sensor_msgs/Imu").name;
   summary.out_topic = options.out_topic.empty() ? summary.imu_topic : options.out_topic;
   if (summary.out_topic != summary.imu_topic) {
     for (const TopicInfo& topic : bag.topics()) {
       if (topic.name == summary.out_topic) {
-        throw InputError("bag " + bag_path + " already has a topic " + summary.out_topic + " (" + topic.datatype +
+        throw InputError("bag " + recording.name() + " already has a topic " + summary.out_topic + " (" + topic.datatype +
                          "); choose another output topic");
       }
     }

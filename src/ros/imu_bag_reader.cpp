@@ -7,8 +7,12 @@
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/Temperature.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
+#include <optional>
 
 #include "imu_lab/common/config_error.h"
 #include "imu_wire_fields.h"
@@ -55,39 +59,16 @@ ImuRecord make_imu_record(const ros::Time& stamp, const geometry_msgs::Vector3& 
   return record;
 }
 
-// Streams one topic's messages of type Message in bag order; every reader reports a wrong type,
-// a truncated or a corrupt bag the same way.
-template <class Message>
-std::size_t for_each_message(rosbag::Bag& bag, const std::string& bag_path, const std::string& topic,
-                             const std::string& datatype, const std::function<void(const Message&)>& on_message) {
-  std::size_t count = 0;
-  try {
-    rosbag::View view(bag, rosbag::TopicQuery(topic));
-    for (const rosbag::MessageInstance& instance : view) {
-      const boost::shared_ptr<const Message> message = instance.template instantiate<Message>();
-      if (!message) {
-        throw InputError("bag " + bag_path + ": topic " + topic + " carries " + instance.getDataType() + ", not " +
-                         datatype);
-      }
-      on_message(*message);
-      ++count;
-    }
-  } catch (const rosbag::BagException& error) {
-    throw InputError("bag " + bag_path + " is damaged after " + std::to_string(count) + " messages of " + topic +
-                     ": " + error.what());
-  } catch (const ros::Exception& error) {
-    throw InputError("bag " + bag_path + " is damaged after " + std::to_string(count) + " messages of " + topic +
-                     ": " + error.what());
-  }
-  return count;
+std::string stamp_text(std::int64_t stamp_ns) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.9f s", stamp_ns * 1e-9);
+  return text;
 }
 
+std::int64_t stamp_ns_of(const ImuWireFields& message) { return static_cast<std::int64_t>(message.stamp.toNSec()); }
 template <class Message>
-std::size_t for_each_message(const std::string& bag_path, const std::string& topic, const std::string& datatype,
-                             const std::function<void(const Message&)>& on_message) {
-  rosbag::Bag bag;
-  open_for_reading(bag, bag_path);
-  return for_each_message(bag, bag_path, topic, datatype, on_message);
+std::int64_t stamp_ns_of(const Message& message) {
+  return static_cast<std::int64_t>(message.header.stamp.toNSec());
 }
 
 }  // namespace
@@ -106,24 +87,175 @@ IncrementRecord to_increment_record(const imu_lab::ImuIncrement& message) {
   return record;
 }
 
-OpenBag::OpenBag(const std::string& bag_path) : path_(bag_path), bag_(std::make_unique<rosbag::Bag>()) {
-  open_for_reading(*bag_, bag_path);
+std::string time_window_problem(const TimeWindow& window) {
+  if (!std::isfinite(window.start_s) || window.start_s < 0.0) {
+    return "the window's start must be a number of seconds >= 0 from the first stamp";
+  }
+  if (std::isnan(window.end_s) || !(window.end_s > window.start_s)) return "the window's end must be after its start";
+  return "";
+}
+
+std::string describe_time_window(const TimeWindow& window) {
+  if (window.is_whole()) return "whole recording";
+  char text[96];
+  if (std::isinf(window.end_s)) {
+    std::snprintf(text, sizeof text, "from %.9g s after the first stamp to the end", window.start_s);
+  } else {
+    std::snprintf(text, sizeof text, "from %.9g s to %.9g s after the first stamp", window.start_s, window.end_s);
+  }
+  return text;
+}
+
+std::string BagRecording::name() const {
+  if (paths.size() == 1) return paths.front();
+  if (paths.empty()) return "(no bag)";
+  return paths.front() + " (+ " + std::to_string(paths.size() - 1) + " split files)";
+}
+
+std::string describe_joins(const std::vector<FileJoin>& joins) {
+  if (joins.empty()) return "";
+  std::string text = "joins between split files (the gap is the time between the stamps either side):";
+  char gap[48];
+  for (const FileJoin& join : joins) {
+    std::snprintf(gap, sizeof gap, "%.6g s", join.gap_s);
+    text += "\n  " + join.before_path + " -> " + join.after_path + ": gap " + gap;
+  }
+  return text;
+}
+
+struct OpenBag::File {
+  std::string path;
+  rosbag::Bag bag;
+  ros::Time begin, end;  // receive times of the first and last message (any topic)
+  bool empty = true;
+};
+
+OpenBag::OpenBag(const BagRecording& recording) : path_(recording.name()), window_(recording.window) {
+  if (recording.paths.empty()) throw InputError("no bag given");
+  const std::string window_problem = time_window_problem(window_);
+  if (!window_problem.empty()) throw ConfigError("recording " + path_, "time window", window_problem);
+  for (const std::string& path : recording.paths) {
+    auto file = std::make_unique<File>();
+    file->path = path;
+    open_for_reading(file->bag, path);
+    try {
+      rosbag::View view(file->bag);
+      file->empty = view.size() == 0;
+      if (!file->empty) {
+        file->begin = view.getBeginTime();
+        file->end = view.getEndTime();
+      }
+    } catch (const rosbag::BagException& error) {
+      throw InputError("cannot read bag " + path + ": " + error.what());
+    }
+    files_.push_back(std::move(file));
+  }
+  // rosbag record --split starts a file where the previous one ended: order by recording time,
+  // which also puts "_10.bag" after "_9.bag" whatever order the shell listed them in.
+  std::stable_sort(files_.begin(), files_.end(), [](const auto& a, const auto& b) {
+    if (a->empty != b->empty) return b->empty;
+    return a->begin < b->begin;
+  });
+  for (std::size_t k = 1; k < files_.size(); ++k) {
+    const File& before = *files_[k - 1];
+    const File& after = *files_[k];
+    if (before.empty || after.empty) continue;
+    if (after.path == before.path) throw InputError("bag " + after.path + " is named twice in one recording");
+    if (after.begin <= before.end) {
+      throw InputError("bags " + before.path + " and " + after.path + " overlap in recording time (" + before.path +
+                       " ends at " + stamp_text(static_cast<std::int64_t>(before.end.toNSec())) + ", " + after.path +
+                       " starts at " + stamp_text(static_cast<std::int64_t>(after.begin.toNSec())) +
+                       "): they are not the split files of one recording");
+    }
+  }
 }
 
 OpenBag::~OpenBag() = default;
 
+std::vector<std::string> OpenBag::ordered_paths() const {
+  std::vector<std::string> paths;
+  for (const auto& file : files_) paths.push_back(file->path);
+  return paths;
+}
+
+// Streams one topic's messages of type Message in stamp order across the files, inside the
+// window; every reader reports a wrong type, a truncated or a corrupt bag, and files that do
+// not follow on, the same way.
+template <class Message>
+std::size_t OpenBag::stream(const std::string& topic, const std::string& datatype,
+                            const std::function<void(const Message&)>& on_message) {
+  joins_.clear();
+  std::size_t read = 0, handed = 0;
+  std::optional<std::int64_t> first_stamp_ns, last_stamp_ns;
+  std::string last_path;
+  std::int64_t window_begin_ns = 0, window_end_ns = 0;
+  const bool whole = window_.is_whole();
+  for (const auto& file : files_) {
+    std::size_t read_in_file = 0;
+    try {
+      rosbag::View view(file->bag, rosbag::TopicQuery(topic));
+      for (const rosbag::MessageInstance& instance : view) {
+        const boost::shared_ptr<const Message> message = instance.template instantiate<Message>();
+        if (!message) {
+          throw InputError("bag " + file->path + ": topic " + topic + " carries " + instance.getDataType() + ", not " +
+                           datatype);
+        }
+        const std::int64_t stamp_ns = stamp_ns_of(*message);
+        if (read_in_file == 0 && last_stamp_ns) {
+          if (stamp_ns <= *last_stamp_ns) {
+            throw InputError("bags " + last_path + " and " + file->path + " are out of order on " + topic + ": " +
+                             last_path + "'s last stamp " + stamp_text(*last_stamp_ns) + " is not before " +
+                             file->path + "'s first " + stamp_text(stamp_ns) +
+                             " (overlapping files, or files of different recordings)");
+          }
+          joins_.push_back({last_path, file->path, (stamp_ns - *last_stamp_ns) * 1e-9});
+        }
+        if (!first_stamp_ns) {
+          first_stamp_ns = stamp_ns;
+          window_begin_ns = stamp_ns + std::llround(window_.start_s * 1e9);
+          window_end_ns = std::isinf(window_.end_s) ? std::numeric_limits<std::int64_t>::max()
+                                                    : stamp_ns + std::llround(window_.end_s * 1e9);
+        }
+        ++read;
+        ++read_in_file;
+        last_stamp_ns = stamp_ns;
+        if (!whole && (stamp_ns < window_begin_ns || stamp_ns > window_end_ns)) continue;
+        on_message(*message);
+        ++handed;
+      }
+    } catch (const rosbag::BagException& error) {
+      throw InputError("bag " + file->path + " is damaged after " + std::to_string(read) + " messages of " + topic +
+                       ": " + error.what());
+    } catch (const ros::Exception& error) {
+      throw InputError("bag " + file->path + " is damaged after " + std::to_string(read) + " messages of " + topic +
+                       ": " + error.what());
+    }
+    if (read_in_file > 0) last_path = file->path;
+  }
+  return handed;
+}
+
 std::vector<TopicInfo> OpenBag::topics() const {
   std::map<std::string, TopicInfo> by_name;
   try {
-    rosbag::View view(*bag_);
-    for (const rosbag::ConnectionInfo* connection : view.getConnections()) {
-      TopicInfo& info = by_name[connection->topic];
-      info.name = connection->topic;
-      info.datatype = connection->datatype;
+    for (const auto& file : files_) {
+      rosbag::View view(file->bag);
+      for (const rosbag::ConnectionInfo* connection : view.getConnections()) {
+        const bool known = by_name.count(connection->topic) > 0;
+        TopicInfo& info = by_name[connection->topic];
+        if (known && info.datatype != connection->datatype) {
+          throw InputError("bag " + file->path + ": topic " + connection->topic + " carries " + connection->datatype +
+                           " but " + info.datatype + " in another file of the recording " + path_);
+        }
+        info.name = connection->topic;
+        info.datatype = connection->datatype;
+      }
     }
     for (auto& entry : by_name) {
-      rosbag::View topic_view(*bag_, rosbag::TopicQuery(entry.first));
-      entry.second.message_count = topic_view.size();
+      for (const auto& file : files_) {
+        rosbag::View topic_view(file->bag, rosbag::TopicQuery(entry.first));
+        entry.second.message_count += topic_view.size();
+      }
     }
   } catch (const rosbag::BagException& error) {
     throw InputError("cannot read bag " + path_ + ": " + error.what());
@@ -159,7 +291,7 @@ TopicInfo OpenBag::choose_topic(const std::string& requested, const std::string&
 }
 
 std::size_t OpenBag::for_each_imu(const std::string& topic, const std::function<void(const ImuRecord&)>& on_record) {
-  return for_each_message<ImuWireFields>(*bag_, path_, topic, kImuType, [&](const ImuWireFields& message) {
+  return stream<ImuWireFields>(topic, kImuType, [&](const ImuWireFields& message) {
     on_record(make_imu_record(message.stamp, message.angular_velocity, message.angular_velocity_covariance_0,
                               message.linear_acceleration, message.linear_acceleration_covariance_0));
   });
@@ -167,50 +299,13 @@ std::size_t OpenBag::for_each_imu(const std::string& topic, const std::function<
 
 std::size_t OpenBag::for_each_increment(const std::string& topic,
                                         const std::function<void(const IncrementRecord&)>& on_record) {
-  return for_each_message<imu_lab::ImuIncrement>(
-      *bag_, path_, topic, "imu_lab/ImuIncrement",
+  return stream<imu_lab::ImuIncrement>(
+      topic, "imu_lab/ImuIncrement",
       [&](const imu_lab::ImuIncrement& message) { on_record(to_increment_record(message)); });
 }
 
-std::size_t OpenBag::for_each_message_in_order(const std::function<void(const rosbag::MessageInstance&)>& on_message) {
-  std::size_t count = 0;
-  try {
-    rosbag::View view(*bag_);
-    for (const rosbag::MessageInstance& instance : view) {
-      on_message(instance);
-      ++count;
-    }
-  } catch (const rosbag::BagException& error) {
-    throw InputError("bag " + path_ + " is damaged after " + std::to_string(count) + " messages: " + error.what());
-  } catch (const ros::Exception& error) {
-    throw InputError("bag " + path_ + " is damaged after " + std::to_string(count) + " messages: " + error.what());
-  }
-  return count;
-}
-
-std::vector<TopicInfo> list_topics(const std::string& bag_path) { return OpenBag(bag_path).topics(); }
-
-std::string choose_imu_topic(const std::string& bag_path, const std::string& requested) {
-  return choose_topic(bag_path, requested, kImuType);
-}
-
-std::string choose_topic(const std::string& bag_path, const std::string& requested, const std::string& datatype) {
-  return OpenBag(bag_path).choose_topic(requested, datatype).name;
-}
-
-std::size_t for_each_imu(const std::string& bag_path, const std::string& topic,
-                         const std::function<void(const ImuRecord&)>& on_record) {
-  return OpenBag(bag_path).for_each_imu(topic, on_record);
-}
-
-std::size_t for_each_increment(const std::string& bag_path, const std::string& topic,
-                               const std::function<void(const IncrementRecord&)>& on_record) {
-  return OpenBag(bag_path).for_each_increment(topic, on_record);
-}
-
-std::size_t for_each_truth(const std::string& bag_path, const std::string& topic,
-                           const std::function<void(const TruthRecord&)>& on_record) {
-  return for_each_message<imu_lab::ImuTruth>(bag_path, topic, "imu_lab/ImuTruth", [&](const imu_lab::ImuTruth& message) {
+std::size_t OpenBag::for_each_truth(const std::string& topic, const std::function<void(const TruthRecord&)>& on_record) {
+  return stream<imu_lab::ImuTruth>(topic, "imu_lab/ImuTruth", [&](const imu_lab::ImuTruth& message) {
     TruthRecord record;
     record.stamp_ns = static_cast<std::int64_t>(message.header.stamp.toNSec());
     record.q_body_to_enu = Eigen::Quaterniond(message.orientation.w, message.orientation.x, message.orientation.y,
@@ -225,12 +320,59 @@ std::size_t for_each_truth(const std::string& bag_path, const std::string& topic
   });
 }
 
-std::size_t for_each_temperature(const std::string& bag_path, const std::string& topic,
+std::size_t OpenBag::for_each_temperature(const std::string& topic,
+                                          const std::function<void(const TemperatureRecord&)>& on_record) {
+  return stream<sensor_msgs::Temperature>(topic, "sensor_msgs/Temperature", [&](const sensor_msgs::Temperature& message) {
+    on_record({message.header.stamp.toSec(), message.temperature});
+  });
+}
+
+std::size_t OpenBag::for_each_message_in_order(const std::function<void(const rosbag::MessageInstance&)>& on_message) {
+  std::size_t count = 0;
+  for (const auto& file : files_) {
+    try {
+      rosbag::View view(file->bag);
+      for (const rosbag::MessageInstance& instance : view) {
+        on_message(instance);
+        ++count;
+      }
+    } catch (const rosbag::BagException& error) {
+      throw InputError("bag " + file->path + " is damaged after " + std::to_string(count) + " messages: " + error.what());
+    } catch (const ros::Exception& error) {
+      throw InputError("bag " + file->path + " is damaged after " + std::to_string(count) + " messages: " + error.what());
+    }
+  }
+  return count;
+}
+
+std::vector<TopicInfo> list_topics(const BagRecording& recording) { return OpenBag(recording).topics(); }
+
+std::string choose_imu_topic(const BagRecording& recording, const std::string& requested) {
+  return choose_topic(recording, requested, kImuType);
+}
+
+std::string choose_topic(const BagRecording& recording, const std::string& requested, const std::string& datatype) {
+  return OpenBag(recording).choose_topic(requested, datatype).name;
+}
+
+std::size_t for_each_imu(const BagRecording& recording, const std::string& topic,
+                         const std::function<void(const ImuRecord&)>& on_record) {
+  return OpenBag(recording).for_each_imu(topic, on_record);
+}
+
+std::size_t for_each_increment(const BagRecording& recording, const std::string& topic,
+                               const std::function<void(const IncrementRecord&)>& on_record) {
+  return OpenBag(recording).for_each_increment(topic, on_record);
+}
+
+std::size_t for_each_truth(const BagRecording& recording, const std::string& topic,
+                           const std::function<void(const TruthRecord&)>& on_record) {
+  return OpenBag(recording).for_each_truth(topic, on_record);
+}
+
+std::size_t for_each_temperature(const BagRecording& recording, const std::string& topic,
                                  const std::function<void(const TemperatureRecord&)>& on_record) {
-  return for_each_message<sensor_msgs::Temperature>(
-      bag_path, topic, "sensor_msgs/Temperature", [&](const sensor_msgs::Temperature& message) {
-        on_record({message.header.stamp.toSec(), message.temperature});
-      });
+  return OpenBag(recording).for_each_temperature(topic, on_record);
 }
 
 }  // namespace ros_io

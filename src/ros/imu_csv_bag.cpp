@@ -31,8 +31,8 @@ sensor_msgs::Imu to_imu_message(const io::ImuCsvSample& sample, const std_msgs::
   return message;
 }
 
-bool bag_has_topic(const std::string& bag_path, const std::string& topic) {
-  for (const auto& info : list_topics(bag_path)) {
+bool bag_has_topic(const BagRecording& recording, const std::string& topic) {
+  for (const auto& info : list_topics(recording)) {
     if (info.name == topic) return true;
   }
   return false;
@@ -71,18 +71,18 @@ CsvImportReport import_csv_to_bag(const std::string& csv_path, const io::CsvImpo
   return report;
 }
 
-CsvExportReport export_bag_to_csv(const std::string& bag_path, const CsvExportRequest& request,
+CsvExportReport export_bag_to_csv(const BagRecording& recording, const CsvExportRequest& request,
                                   const std::string& csv_path) {
   CsvExportReport report;
-  report.imu_topic = choose_imu_topic(bag_path, request.imu_topic);
+  report.imu_topic = choose_imu_topic(recording, request.imu_topic);
   if (!request.temperature_topic.empty() &&
-      (request.temperature_required || bag_has_topic(bag_path, request.temperature_topic))) {
-    report.temperature_topic = choose_topic(bag_path, request.temperature_topic, "sensor_msgs/Temperature");
+      (request.temperature_required || bag_has_topic(recording, request.temperature_topic))) {
+    report.temperature_topic = choose_topic(recording, request.temperature_topic, "sensor_msgs/Temperature");
   }
   // Readings by header stamp (toSec of the same ros::Time gives the same double on both topics).
   std::map<double, double> temperature_by_stamp;
   if (!report.temperature_topic.empty()) {
-    for_each_temperature(bag_path, report.temperature_topic, [&](const TemperatureRecord& record) {
+    for_each_temperature(recording, report.temperature_topic, [&](const TemperatureRecord& record) {
       temperature_by_stamp[record.stamp_s] = record.temperature_c;
     });
   }
@@ -90,7 +90,7 @@ CsvExportReport export_bag_to_csv(const std::string& bag_path, const CsvExportRe
   format.with_temperature = !report.temperature_topic.empty();
   write_file_atomically(csv_path, [&](std::ostream& out) {
     out << io::imu_csv_header(format) << '\n';
-    for_each_imu(bag_path, report.imu_topic, [&](const ImuRecord& record) {
+    for_each_imu(recording, report.imu_topic, [&](const ImuRecord& record) {
       io::ImuCsvSample sample;
       sample.stamp_ns = record.stamp_ns;
       sample.angular_rate_rad_s = record.angular_rate_rad_s;
@@ -104,7 +104,7 @@ CsvExportReport export_bag_to_csv(const std::string& bag_path, const CsvExportRe
       io::write_imu_csv_row(out, sample, format);
       ++report.rows;
     });
-    if (report.rows == 0) throw InputError("bag " + bag_path + ": topic " + report.imu_topic + " has no messages; nothing written");
+    if (report.rows == 0) throw InputError("bag " + recording.name() + ": topic " + report.imu_topic + " has no messages; nothing written");
   });
   report.unmatched_temperatures = temperature_by_stamp.size();
   return report;

@@ -1,5 +1,8 @@
 #include "imu_lab/ros/navigation_parameters.h"
 
+#include <algorithm>
+#include <iterator>
+
 #include "imu_lab/ros/node_parameters.h"
 
 namespace imu_lab {
@@ -8,6 +11,31 @@ namespace {
 
 double degrees_parameter_rad(const ros::NodeHandle& node, const std::string& name) {
   return parameter(node, name, 0.0) * kDegToRad;
+}
+
+Eigen::Vector3d initial_velocity_parameter(const ros::NodeHandle& node) {
+  const std::string name = "initial_velocity_enu_m_s";
+  const std::vector<double> value = parameter(node, name, std::vector<double>{0.0, 0.0, 0.0});
+  if (value.size() != 3) {
+    throw parameter_error(node, name, "expected [east, north, up] in m/s, got " + std::to_string(value.size()) +
+                                          " numbers");
+  }
+  return Eigen::Vector3d(value[0], value[1], value[2]);  // finiteness: validate()
+}
+
+// Only when at least one is given: without them there is nothing to predict from.
+std::optional<ExpectedSensorErrors> expected_errors_parameters(const ros::NodeHandle& node) {
+  const char* const names[] = {"expected_gyro_bias_rad_s", "expected_accel_bias_m_s2",
+                               "gyro_noise_density_rad_s_per_sqrt_hz", "accel_noise_density_m_s2_per_sqrt_hz"};
+  if (std::none_of(std::begin(names), std::end(names), [&](const char* name) { return node.hasParam(name); })) {
+    return std::nullopt;
+  }
+  ExpectedSensorErrors expected;
+  expected.gyro_bias_rad_s = parameter(node, names[0], 0.0);
+  expected.accel_bias_m_s2 = parameter(node, names[1], 0.0);
+  expected.gyro_noise_density_rad_s_per_sqrt_hz = parameter(node, names[2], 0.0);
+  expected.accel_noise_density_m_s2_per_sqrt_hz = parameter(node, names[3], 0.0);
+  return expected;
 }
 
 }  // namespace
@@ -23,6 +51,7 @@ NavigationSettings load_navigation_settings(const ros::NodeHandle& private_node)
   settings.initial_pitch_rad = degrees_parameter_rad(p, "initial_pitch_deg");
   settings.initial_yaw_rad = degrees_parameter_rad(p, "initial_yaw_deg");
   settings.alignment.given_yaw_rad = settings.initial_yaw_rad;
+  settings.initial_velocity_enu_m_s = initial_velocity_parameter(p);
   settings.latitude_rad = degrees_parameter_rad(p, "latitude_deg");
   settings.longitude_rad = degrees_parameter_rad(p, "longitude_deg");
   settings.height_m = parameter(p, "height_m", 0.0);
@@ -34,11 +63,7 @@ NavigationSettings load_navigation_settings(const ros::NodeHandle& private_node)
   settings.navigator.corrections.coning_correction = parameter(p, "coning_correction", true);
   settings.navigator.corrections.sculling_correction = parameter(p, "sculling_correction", true);
   settings.gap_factor = parameter(p, "gap_factor", settings.gap_factor);
-  settings.expected_errors.gyro_bias_rad_s = parameter(p, "expected_gyro_bias_rad_s", 0.0);
-  settings.expected_errors.accel_bias_m_s2 = parameter(p, "expected_accel_bias_m_s2", 0.0);
-  settings.expected_errors.gyro_noise_density_rad_s_per_sqrt_hz = parameter(p, "gyro_noise_density_rad_s_per_sqrt_hz", 0.0);
-  settings.expected_errors.accel_noise_density_m_s2_per_sqrt_hz =
-      parameter(p, "accel_noise_density_m_s2_per_sqrt_hz", 0.0);
+  settings.expected_errors = expected_errors_parameters(p);
   validate(settings, p.getNamespace());
   return settings;
 }

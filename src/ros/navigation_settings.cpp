@@ -67,12 +67,24 @@ void validate(const NavigationSettings& settings, const std::string& source) {
   angle(settings.initial_pitch_rad, 90.0, "initial_pitch_deg");
   angle(settings.initial_yaw_rad, 360.0, "initial_yaw_deg");
   angle(settings.alignment.given_yaw_rad, 360.0, "initial_yaw_deg");
+  require(!settings.initial_attitude_body_to_enu ||
+              (settings.initial_attitude_body_to_enu->coeffs().allFinite() &&
+               settings.initial_attitude_body_to_enu->norm() > 0.5),
+          "initial attitude", "must be a finite, non-zero quaternion");
+  require(settings.initial_velocity_enu_m_s.allFinite(), "initial_velocity_enu_m_s",
+          "must be three finite numbers (east, north, up) in m/s");
+  require(!settings.align || settings.initial_velocity_enu_m_s.isZero(0.0), "initial_velocity_enu_m_s",
+          "is given with a static alignment, which starts at rest; start without alignment (align false, "
+          "--no-align) to start moving");
   require(settings.gap_factor > 1.0, "gap_factor", "must be greater than 1 (a gap is that many typical intervals)");
-  const auto& expected = settings.expected_errors;
-  require(expected.gyro_bias_rad_s >= 0.0 && expected.accel_bias_m_s2 >= 0.0 &&
-              expected.gyro_noise_density_rad_s_per_sqrt_hz >= 0.0 &&
-              expected.accel_noise_density_m_s2_per_sqrt_hz >= 0.0,
-          "expected sensor errors", "biases and noise densities must be non-negative numbers");
+  if (settings.expected_errors) {
+    const auto& expected = *settings.expected_errors;
+    const auto non_negative = [](double value) { return std::isfinite(value) && value >= 0.0; };
+    require(non_negative(expected.gyro_bias_rad_s) && non_negative(expected.accel_bias_m_s2) &&
+                non_negative(expected.gyro_noise_density_rad_s_per_sqrt_hz) &&
+                non_negative(expected.accel_noise_density_m_s2_per_sqrt_hz),
+            "expected sensor errors", "biases and noise densities must be finite, non-negative numbers");
+  }
 }
 
 Eigen::Vector3d roll_pitch_yaw_from_quaternion(const Eigen::Quaterniond& q_body_to_enu) {

@@ -107,6 +107,20 @@ struct ParameterType<std::vector<std::string>> {
   }
 };
 
+template <>
+struct ParameterType<std::vector<double>> {
+  static constexpr const char* name = "a list of numbers";
+  static bool take(XmlRpcValue& value, std::vector<double>& out) {
+    if (value.getType() != XmlRpcValue::TypeArray) return false;
+    std::vector<double> items(value.size());
+    for (int k = 0; k < value.size(); ++k) {
+      if (!ParameterType<double>::take(value[k], items[k])) return false;
+    }
+    out = std::move(items);
+    return true;
+  }
+};
+
 std::string text_of(double value) { return format_number(value, 6); }
 
 }  // namespace
@@ -150,6 +164,7 @@ template bool parameter(const ros::NodeHandle&, const std::string&, const bool&)
 template std::string parameter(const ros::NodeHandle&, const std::string&, const std::string&);
 template std::vector<std::string> parameter(const ros::NodeHandle&, const std::string&,
                                             const std::vector<std::string>&);
+template std::vector<double> parameter(const ros::NodeHandle&, const std::string&, const std::vector<double>&);
 template double positive_parameter(const ros::NodeHandle&, const std::string&, const double&);
 template int positive_parameter(const ros::NodeHandle&, const std::string&, const int&);
 template double non_negative_parameter(const ros::NodeHandle&, const std::string&, const double&);

@@ -9,17 +9,25 @@ namespace {
 imu_lab::NoiseAxis to_noise_axis(identify::SensorKind sensor, int axis, const identify::FitResult& fit) {
   imu_lab::NoiseAxis message;
   message.axis = identify::axis_name(sensor, axis);
-  for (const identify::TermEstimate& term : fit.terms) {
-    const auto units = identify::amplitude_units(sensor, term.kind);
-    message.term.push_back(term.name);
-    message.symbol.push_back(identify::amplitude_symbol(term.kind));
-    message.status.push_back(identify::term_status_name(term.status));
+  for (const identify::TermEstimate* term : identify::terms_in_report_order(fit)) {
+    const auto units = identify::amplitude_units(sensor, term->kind);
+    message.term.push_back(term->name);
+    message.symbol.push_back(identify::amplitude_symbol(term->kind));
+    message.status.push_back(identify::term_status_name(term->status));
     message.unit.push_back(units.empty() ? "" : units.front().key);  // SI comes first
-    message.value.push_back(term.amplitude.value);
-    message.sigma.push_back(term.amplitude.sigma);
-    message.upper_bound.push_back(term.amplitude.upper_bound);
-    message.sigma_source.push_back(identify::sigma_source_name(term.sigma_source));
+    message.value.push_back(term->amplitude.value);
+    message.sigma.push_back(term->amplitude.sigma);
+    message.upper_bound.push_back(term->amplitude.upper_bound);
+    message.sigma_source.push_back(identify::sigma_source_name(term->sigma_source));
+    message.borderline.push_back(term->borderline);
+    const bool shaped = identify::has_shape(term->kind);
+    const auto shape_units = identify::shape_units(term->kind);
+    message.shape_symbol.push_back(shaped ? identify::shape_symbol(term->kind) : "");
+    message.shape_unit.push_back(shaped && !shape_units.empty() ? shape_units.front().key : "");
+    message.shape.push_back(shaped ? term->shape.value : identify::ParameterEstimate::kNotAvailable);
+    message.width.push_back(term->width.value);
   }
+  message.warnings = fit.warnings;
   return message;
 }
 

@@ -28,6 +28,24 @@ std::string format_term(const identify::TermEstimate& term, const identify::Unit
   return identify::term_status_name(term.status);
 }
 
+// ", T_c 0.0123 s", ", f_n 19.8 Hz, width 1.6 Hz", ", low-pass 31.2 Hz": the fitted shape of a term
+// in the model, so that a line or a Markov term reads as what it is.
+std::string format_shape(const identify::TermEstimate& term) {
+  std::string text;
+  const auto append = [&text](const std::string& label, const identify::ParameterEstimate& estimate,
+                              const identify::UnitScale& unit) {
+    if (!std::isfinite(estimate.value)) return;
+    text += ", " + label + " " + format_table_number(estimate.value * unit.per_si) + " " + unit.key;
+  };
+  if (term.status == identify::TermStatus::kAbsent || !identify::has_shape(term.kind)) return text;
+  const auto units = identify::shape_units(term.kind);
+  if (units.empty()) return text;
+  const std::string label = term.kind == identify::TermKind::kWhiteRate ? "low-pass" : identify::shape_symbol(term.kind);
+  append(label, term.shape, units.front());
+  if (!identify::width_symbol(term.kind).empty()) append(identify::width_symbol(term.kind), term.width, units.front());
+  return text;
+}
+
 }  // namespace
 
 identify::UnitScale display_unit(identify::SensorKind sensor, identify::TermKind kind) {
@@ -38,16 +56,20 @@ identify::UnitScale display_unit(identify::SensorKind sensor, identify::TermKind
 
 std::string format_noise_table(const std::vector<identify::TriadFit>& triads) {
   std::string table;
-  char line[256];
+  char line[512];
   for (const identify::TriadFit& triad : triads) {
     for (int axis = 0; axis < 3; ++axis) {
-      for (const identify::TermEstimate& term : triad.axes[axis].terms) {
-        const identify::UnitScale unit = display_unit(triad.sensor, term.kind);
-        std::snprintf(line, sizeof(line), "  %-8s %-18s %-8s %-22s %s\n",
-                      identify::axis_name(triad.sensor, axis).c_str(), term.name.c_str(),
-                      identify::amplitude_symbol(term.kind).c_str(), unit.key.c_str(),
-                      format_term(term, unit).c_str());
+      for (const identify::TermEstimate* term : identify::terms_in_report_order(triad.axes[axis])) {
+        const identify::UnitScale unit = display_unit(triad.sensor, term->kind);
+        std::snprintf(line, sizeof(line), "  %-8s %-18s %-8s %-22s %s%s%s\n",
+                      identify::axis_name(triad.sensor, axis).c_str(), term->name.c_str(),
+                      identify::amplitude_symbol(term->kind).c_str(), unit.key.c_str(),
+                      format_term(*term, unit).c_str(), format_shape(*term).c_str(),
+                      term->borderline ? " [borderline]" : "");
         table += line;
+      }
+      for (const std::string& warning : triad.axes[axis].warnings) {
+        table += "  " + identify::axis_name(triad.sensor, axis) + " warning: " + warning + "\n";
       }
     }
     table += "  worst " + identify::sensor_prefix(triad.sensor) + " axis: " +

@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "imu_lab/common/site_limits.h"
+#include "imu_lab/common/format_number.h"
+#include "imu_lab/ros/navigation_csv.h"
 #include "imu_lab/ros/navigation_parameters.h"
 #include "imu_lab/ros/node_parameters.h"
 
@@ -46,6 +48,8 @@ StrapdownNavigatorNode::StrapdownNavigatorNode(ros::NodeHandle& node, ros::NodeH
   } else {
     input_subscriber_ = node.subscribe("imu/increment", queue_size, &StrapdownNavigatorNode::on_increment, this);
   }
+  reinitialise_service_ =
+      private_node.advertiseService("reinitialise", &StrapdownNavigatorNode::on_reinitialise, this);
   if (parameter(private_node, "reference_height_topic", false)) {
     reference_height_subscriber_ =
         node.subscribe("reference_height", 10, &StrapdownNavigatorNode::on_reference_height, this);
@@ -101,6 +105,12 @@ void StrapdownNavigatorNode::on_reference_height(const std_msgs::Float64::ConstP
 }
 
 void StrapdownNavigatorNode::after_sample(SampleOutcome outcome, const ros::Time& stamp) {
+  if (outcome == SampleOutcome::kDiverged) {
+    ROS_ERROR("strapdown_navigator: navigation stopped: %s (sample at %.9f); call %s to start again",
+              session_->last_problem().c_str(), stamp.toSec(), reinitialise_service_.getService().c_str());
+    return;
+  }
+  if (outcome == SampleOutcome::kHalted) return;  // counted, and on /diagnostics at ERROR level
   if (outcome == SampleOutcome::kAlignmentFailed) health_->count(failed_alignment_condition_);
   if (is_skipped(outcome) || outcome == SampleOutcome::kAlignmentFailed) {
     ROS_WARN_THROTTLE(kLogThrottle_s, "strapdown_navigator: sample at %.9f skipped: %s (counted in diagnostics)",
@@ -137,19 +147,44 @@ void StrapdownNavigatorNode::publish_solution() {
 
 void StrapdownNavigatorNode::report(diagnostic_updater::DiagnosticStatusWrapper& status) {
   const InputCounters& counters = session_->counters();
-  health_->fill(status, session_->navigating() ? "navigating" : "aligning");
+  health_->fill(status, session_->halted() ? "stopped" : session_->navigating() ? "navigating" : "aligning");
   if (!session_->last_problem().empty()) status.add("last problem", session_->last_problem());
   status.add("samples used", counters.used);
   status.add("skipped: NaN/Inf or bad interval", counters.invalid);
   status.add("skipped: unordered stamps", counters.unordered);
   status.add("skipped: rate samples after a gap", counters.gaps);
-  status.add("alignment", session_->navigating() ? "done (" + session_->alignment()->method + ")"
+  status.add("alignment", session_->alignment() ? "done (" + session_->alignment()->method + ")"
                                                  : std::to_string(session_->alignment_progress_s()) + " of " +
                                                        std::to_string(session_->settings().alignment.duration_s) + " s");
   if (session_->navigating()) {
     const Eigen::Vector3d rpy = roll_pitch_yaw_from_quaternion(session_->state().q_body_to_enu) / kDegToRad;
     status.addf("roll, pitch, yaw [deg]", "%.4f, %.4f, %.4f", rpy.x(), rpy.y(), rpy.z());
   }
+  status.add("divergences", counters.divergences);
+  status.add("re-initialisations", counters.reinitialisations);
+  if (const auto& divergence = session_->divergence()) {
+    // Every report until told to start again: the condition persists, unlike the input problems.
+    status.mergeSummary(diagnostic_msgs::DiagnosticStatus::ERROR,
+                        "navigation stopped: state unusable at stamp " + format_stamp(divergence->stamp_ns) + " s (" +
+                            divergence->problem + "); call " + reinitialise_service_.getService() +
+                            " to start again");
+    status.add("navigation stopped at stamp [s]", format_stamp(divergence->stamp_ns));
+    status.add("samples ignored since", counters.halted);
+  }
+}
+
+bool StrapdownNavigatorNode::on_reinitialise(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  session_->reinitialise();
+  alignment_published_ = false;
+  path_.poses.clear();
+  const NavigationSettings& settings = session_->settings();
+  response.success = true;
+  response.message = settings.align ? "re-initialised: aligning for " + format_number(settings.alignment.duration_s, 6) +
+                                          " s from the next sample"
+                                    : "re-initialised: the given initial state at the next sample's stamp";
+  ROS_INFO("strapdown_navigator: %s", response.message.c_str());
+  return true;
 }
 
 }  // namespace ros_io

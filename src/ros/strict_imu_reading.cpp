@@ -40,7 +40,7 @@ bool StrictImuCheck::accept(const ImuRecord& record) {
   return !first_bad_stamp_ns_;
 }
 
-void StrictImuCheck::throw_if_refused(const std::string& bag_path, const std::string& topic) const {
+void StrictImuCheck::throw_if_refused(const BagRecording& recording, const std::string& topic) const {
   std::vector<std::string> problems;
   if (non_finite_ + unordered_ > 0) {
     problems.push_back(std::to_string(non_finite_) + " samples with NaN/Inf (or beyond +-1e100) and " +
@@ -58,19 +58,19 @@ void StrictImuCheck::throw_if_refused(const std::string& bag_path, const std::st
   std::string text;
   for (const std::string& problem : problems) text += (text.empty() ? "" : "; ") + problem;
   const std::string first = first_bad_stamp_ns_ ? ", the first at " + seconds_text(*first_bad_stamp_ns_) : "";
-  throw InputError("bag " + bag_path + ", topic " + topic + ": " + text + first +
+  throw InputError("bag " + recording.name() + ", topic " + topic + ": " + text + first +
                    "; this tool uses every sample, so nothing was computed or written: repair the "
                    "recording (or cut the bad part out with `rosbag filter`)");
 }
 
-std::size_t for_each_imu_strictly(const std::string& bag_path, const std::string& topic,
+std::size_t for_each_imu_strictly(const BagRecording& recording, const std::string& topic,
                                   const std::function<void(const ImuRecord&)>& on_record, StrictImuCheck* check) {
   StrictImuCheck own_check;
   StrictImuCheck& used = check != nullptr ? *check : own_check;
-  const std::size_t count = for_each_imu(bag_path, topic, [&](const ImuRecord& record) {
+  const std::size_t count = for_each_imu(recording, topic, [&](const ImuRecord& record) {
     if (used.accept(record)) on_record(record);
   });
-  used.throw_if_refused(bag_path, topic);
+  used.throw_if_refused(recording, topic);
   return count;
 }
 

@@ -17,6 +17,7 @@
 #include "imu_lab/ros/allan_bag_pass.h"
 #include "imu_lab/ros/allan_report.h"
 #include "imu_lab/ros/noise_table.h"
+#include "imu_lab/ros/recording_arguments.h"
 
 namespace {
 
@@ -48,6 +49,13 @@ void print_summary(const imu_lab::ros_io::AllanBagPassResult& result, const imu_
   std::printf("allan: %s, topic %s: %lld samples, tau0 %.9g s (%.6g Hz), interval jitter rms %.3g s, max %.3g s\n",
               result.bag_path.c_str(), result.topic.c_str(), static_cast<long long>(timing.input_sample_count),
               timing.tau0_s, 1.0 / timing.tau0_s, timing.interval_rms_deviation_s, timing.interval_max_deviation_s);
+  if (!result.window.is_whole()) {
+    std::printf("allan: time window: %s\n", imu_lab::ros_io::describe_time_window(result.window).c_str());
+  }
+  if (result.files.size() > 1) {
+    std::printf("allan: %zu split files read in stamp order as one recording; %s\n", result.files.size(),
+                imu_lab::ros_io::describe_joins(result.joins).c_str());
+  }
   long long non_finite = 0;
   for (const auto& channel : result.snapshot.channels) non_finite += channel.non_finite_count;
   if (timing.gap_count + timing.duplicate_count + timing.out_of_order_count + non_finite > 0) {
@@ -65,6 +73,9 @@ void print_summary(const imu_lab::ros_io::AllanBagPassResult& result, const imu_
                   "leave them out\n", count, result.message_count, triad, field);
     }
   }
+  std::printf("%s", imu_lab::ros_io::format_impulse_events("allan: ", result.impulses).c_str());
+  std::printf("allan: output steps (LSB; none: not quantised): %s\n",
+              imu_lab::ros_io::format_output_steps(result.input, result.output_steps).c_str());
   for (const auto& path : files.written) std::printf("allan: wrote %s\n", path.c_str());
   if (!files.plot_problem.empty()) std::fprintf(stderr, "allan: warning: %s\n", files.plot_problem.c_str());
   for (const auto& problem : files.noise.problems) std::fprintf(stderr, "allan: identification: %s\n", problem.c_str());
@@ -78,7 +89,7 @@ void print_summary(const imu_lab::ros_io::AllanBagPassResult& result, const imu_
 
 int main(int argc, char** argv) {
   CLI::App app{"Allan-family stability curves of an IMU bag: CSV per statistic, YAML summary, plot."};
-  std::string bag_path;
+  imu_lab::ros_io::RecordingArguments recording;
   std::string out_directory = "allan_report";
   std::string on_gap = "split";
   std::string input = "rate";
@@ -88,7 +99,7 @@ int main(int argc, char** argv) {
   imu_lab::ros_io::AllanIdentifyOptions identify;
   imu_lab::ros_io::AllanBagPassOptions options;
   auto& engine = options.engine;
-  app.add_option("bag", bag_path, "bag to read")->required();
+  imu_lab::ros_io::add_recording_arguments(app, recording, "bag to read", true);
   app.add_option("--topic", options.topic, "topic (default: the only one of the input's message type)");
   app.add_option("-o,--out", out_directory, "report directory (created)")->capture_default_str();
   app.add_option("--input", input, "rate (sensor_msgs/Imu) or increment (imu_lab/ImuIncrement)")
@@ -109,11 +120,18 @@ int main(int argc, char** argv) {
   app.add_option("--gap-factor", engine.gap_factor, "an interval above this many tau0 is a gap")->capture_default_str();
   app.add_option("--warm-up-samples", engine.warm_up_sample_count, "samples that fix tau0 and the offsets")
       ->capture_default_str();
+  bool no_impulse_screen = false;
+  app.add_flag("--no-impulse-screen", no_impulse_screen,
+               "keep knocks and spikes in the curves (by default each is reported and its samples dropped, "
+               "which splits the run there)");
+  app.add_option("--impulse-threshold", options.screen.threshold_sigma,
+                 "a sample deviating from its local level by more than this many robust scales is a knock or spike")
+      ->capture_default_str();
   app.add_flag("--progress", progress, "progress bar on stderr even when it is not a terminal");
   app.add_flag("--no-plot", no_plot, "do not write allan.png");
   app.add_flag("--no-identify", no_identify, "do not fit the noise model (no noise.yaml, kalibr_imu.yaml)");
   app.add_option("--bootstrap-replicas", identify.bootstrap_replicas,
-                 "sigmas from a parametric bootstrap with N replicas per axis (slow; 0 = Ceres covariance)")
+                 "sigmas from a parametric bootstrap with N replicas per axis (slow; 0 = the fit's moment covariance)")
       ->capture_default_str()
       ->check([](const std::string& text) {
         return imu_lab::ros_io::bootstrap_replicas_problem(std::atoi(text.c_str()));
@@ -121,20 +139,29 @@ int main(int argc, char** argv) {
   if (const auto status = imu_lab::parse_tool_options("allan", app, argc, argv)) return *status;
   options.input = imu_lab::ros_io::parse_allan_input("--input", input);
   identify.enabled = !no_identify;
+  options.screen.enabled = !no_impulse_screen;
   engine.stamp_policy = on_gap == "stop" ? imu_lab::allan::StampPolicy::kStop : imu_lab::allan::StampPolicy::kSplitAndPool;
 
-  imu_lab::ToolInput bag_input{"bag", bag_path, options.topic};
+  const imu_lab::ToolInput bag_input{"bag", recording.recording().name(), options.topic};
   return imu_lab::run_tool_main("allan", bag_input, [&] {
+    if (!(options.screen.threshold_sigma > imu_lab::allan::kScaleClipSigma)) {
+      throw imu_lab::ConfigError("allan", "--impulse-threshold", "must be a number of scales above 3 (default 12)");
+    }
     ProgressBar bar;
     if (progress || ::isatty(STDERR_FILENO)) {
       options.on_progress = [&](std::size_t processed, std::size_t total) { bar.update(processed, total); };
     }
-    const auto result = imu_lab::ros_io::run_allan_bag_pass(bag_path, options);
+    const auto result = imu_lab::ros_io::run_allan_bag_pass(recording.recording(), options);
     imu_lab::ros_io::AllanRunDescription run;
-    run.bag = bag_path;
+    run.bag = result.bag_path;
+    run.files = result.files;
+    run.window = result.window;
+    run.joins = result.joins;
     run.topic = result.topic;
     run.input = result.input;
     run.engine = result.engine;
+    run.impulses = result.impulses;
+    run.output_steps = result.output_steps;
     const auto files = imu_lab::ros_io::write_allan_report(out_directory, run, result.snapshot, !no_plot, identify);
     print_summary(result, files);
     return 0;

@@ -19,6 +19,7 @@
 #include "imu_lab/emulator/analytic_profile_avar.h"
 #include "imu_lab/ros/config_paths.h"
 #include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/ros/recording_arguments.h"
 #include "imu_lab/ros/strict_imu_reading.h"
 
 namespace {
@@ -67,24 +68,26 @@ SampleTiming timing_of(const std::vector<std::int64_t>& stamps_ns) {
 
 int main(int argc, char** argv) {
   CLI::App app{"Summarise an IMU bag: samples, rate, mean and deviation, Allan deviation at a few taus."};
-  std::string bag_path;
+  imu_lab::ros_io::RecordingArguments recording;
   std::string topic;
   std::string profile_name;
   std::vector<double> taus_s = {0.1, 1.0, 10.0, 100.0, 1000.0};
-  app.add_option("bag", bag_path, "bag to read")->required();
+  imu_lab::ros_io::add_recording_arguments(app, recording, "bag to read", true);
   app.add_option("--topic", topic, "sensor_msgs/Imu topic (default: the only one in the bag)");
   app.add_option("--profile", profile_name, "sensor profile whose analytic ADEV to print beside the measured");
   app.add_option("--taus-s", taus_s, "averaging times [s]")->capture_default_str()->check(imu_lab::option_range::positive());
   if (const auto status = imu_lab::parse_tool_options("bag_summary", app, argc, argv)) return *status;
 
-  imu_lab::ToolInput input{"bag", bag_path, topic};
+  imu_lab::ToolInput input{"bag", recording.recording().name(), topic};
   return imu_lab::run_tool_main("bag_summary", input, [&] {
-    input.topic = topic = imu_lab::ros_io::choose_imu_topic(bag_path, topic);
+    const imu_lab::ros_io::BagRecording bag = recording.recording();
+    const std::string bag_name = bag.name();
+    input.topic = topic = imu_lab::ros_io::choose_imu_topic(bag, topic);
     std::array<std::vector<double>, 6> channels;
     std::vector<std::int64_t> stamps_ns;
     // A triad no message carries (covariance[0] = -1) is left out; one that some lack is refused.
     imu_lab::ros_io::StrictImuCheck check(imu_lab::ros_io::ImuTriadsNeeded{false, false});
-    imu_lab::ros_io::for_each_imu_strictly(bag_path, topic, [&](const imu_lab::ros_io::ImuRecord& record) {
+    imu_lab::ros_io::for_each_imu_strictly(bag, topic, [&](const imu_lab::ros_io::ImuRecord& record) {
       stamps_ns.push_back(record.stamp_ns);
       for (int axis = 0; axis < 3; ++axis) {
         channels[axis].push_back(record.angular_rate_rad_s[axis]);
@@ -100,19 +103,19 @@ int main(int argc, char** argv) {
           std::tuple{check.specific_force_absent_throughout(), "accelerometer", "linear_acceleration"}}) {
       if (absent) {
         std::fprintf(stderr, "bag_summary: bag %s, topic %s: no message carries the %s triad (%s_covariance[0] = -1, "
-                     "not provided by the driver): left out\n", bag_path.c_str(), topic.c_str(), triad, field);
+                     "not provided by the driver): left out\n", bag_name.c_str(), topic.c_str(), triad, field);
       }
     }
     const std::size_t count = channels[0].size();
-    if (count < 3) throw imu_lab::InputError("bag " + bag_path + ": topic " + topic + " has too few messages");
+    if (count < 3) throw imu_lab::InputError("bag " + bag_name + ": topic " + topic + " has too few messages");
     const SampleTiming timing = timing_of(stamps_ns);
     const double tau0_s = timing.tau0_s;
-    std::printf("%s, topic %s: %zu samples over %.3f s, rate %.4f Hz (median interval)\n", bag_path.c_str(),
+    std::printf("%s, topic %s: %zu samples over %.3f s, rate %.4f Hz (median interval)\n", bag_name.c_str(),
                 topic.c_str(), count, (stamps_ns.back() - stamps_ns.front()) * 1e-9, 1.0 / tau0_s);
     if (timing.irregular_count > 0) {
       std::fprintf(stderr, "bag_summary: warning: bag %s, topic %s: %zu intervals off the sample period by over a "
                    "factor %.1f (%.6g .. %.6g s): gaps or a rate change; the Allan deviation below assumes evenly "
-                   "spaced samples (the allan tool splits the record at gaps)\n", bag_path.c_str(), topic.c_str(),
+                   "spaced samples (the allan tool splits the record at gaps)\n", bag_name.c_str(), topic.c_str(),
                    timing.irregular_count, kIrregularFactor, timing.shortest_interval_s, timing.longest_interval_s);
     }
 

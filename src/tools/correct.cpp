@@ -11,12 +11,14 @@
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
 #include "imu_lab/ros/bag_correction.h"
+#include "imu_lab/ros/recording_arguments.h"
 #include "imu_lab/thermal/thermal_model_yaml.h"
 
 namespace {
 
 struct CommandLine {
-  std::string bag_path, out_path, thermal_model_path, calibration_path;
+  imu_lab::ros_io::RecordingArguments recording;
+  std::string out_path, thermal_model_path, calibration_path;
   imu_lab::ros_io::BagCorrectionOptions options;
 };
 
@@ -54,7 +56,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Apply a thermal model and/or a calibration to a bag's IMU topic, as the live chain does."};
   CommandLine c;
   auto& o = c.options;
-  app.add_option("bag", c.bag_path, "bag to correct")->required();
+  imu_lab::ros_io::add_recording_arguments(app, c.recording, "bag to correct", false);
   app.add_option("-o,--out", c.out_path, "corrected bag to write (all other topics copied)")->required();
   app.add_option("--thermal-model", c.thermal_model_path, "thermal model YAML written by fit_thermal (applied first)");
   app.add_option("--calibration", c.calibration_path, "calibration YAML written by fit_calibration (applied second)");
@@ -77,7 +79,7 @@ int main(int argc, char** argv) {
     }
     if (!c.thermal_model_path.empty()) o.thermal_model = imu_lab::thermal::load_thermal_model(c.thermal_model_path);
     if (!c.calibration_path.empty()) o.calibration = imu_lab::calib::load_calibration(c.calibration_path);
-    print_summary(c, imu_lab::ros_io::correct_bag(c.bag_path, c.out_path, o));
+    print_summary(c, imu_lab::ros_io::correct_bag(c.recording.recording(), c.out_path, o));
     return 0;
   });
 }

@@ -8,15 +8,17 @@
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
 #include "imu_lab/ros/imu_csv_bag.h"
+#include "imu_lab/ros/recording_arguments.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Export a bag's IMU topic to CSV (header with units; SI unless asked otherwise)."};
   constexpr const char* kTool = "export_csv";
   constexpr const char* kCommandLine = "command line";
-  std::string bag_path, out_path, delimiter = ",", gyro_unit = "rad_s", accel_unit = "m_s2", temperature_topic;
+  imu_lab::ros_io::RecordingArguments recording;
+  std::string out_path, delimiter = ",", gyro_unit = "rad_s", accel_unit = "m_s2", temperature_topic;
   bool no_temperature = false;
   imu_lab::ros_io::CsvExportRequest request;
-  app.add_option("bag", bag_path, "bag to read")->required();
+  imu_lab::ros_io::add_recording_arguments(app, recording, "bag to read", false);
   app.add_option("-o,--out", out_path, "CSV file to write")->required();
   app.add_option("--topic", request.imu_topic, "sensor_msgs/Imu topic (default: the bag's only one)");
   auto* temperature_option = app.add_option(
@@ -39,7 +41,7 @@ int main(int argc, char** argv) {
       request.temperature_required = true;
     }
     if (no_temperature) request.temperature_topic.clear();
-    const auto report = imu_lab::ros_io::export_bag_to_csv(bag_path, request, out_path);
+    const auto report = imu_lab::ros_io::export_bag_to_csv(recording.recording(), request, out_path);
     std::printf("%s: wrote %s: %zu rows of %s (gyro %s, accel %s)", kTool, out_path.c_str(), report.rows,
                 report.imu_topic.c_str(), gyro_unit.c_str(), accel_unit.c_str());
     if (!report.temperature_topic.empty()) {

@@ -16,6 +16,7 @@
 #include "imu_lab/common/tool_options.h"
 #include "imu_lab/ros/config_paths.h"
 #include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/ros/recording_arguments.h"
 #include "imu_lab/ros/strict_imu_reading.h"
 
 namespace {
@@ -43,11 +44,12 @@ int main(int argc, char** argv) {
   using namespace imu_lab::option_range;
   const auto latitude_deg_range = imu_lab::option_range::latitude_deg;  // the names are taken by the options
   const auto height_m_range = imu_lab::option_range::height_m;
-  std::string bag_path, topic, schedule_name, out_path, earth_model = "wgs84_rotating";
+  imu_lab::ros_io::RecordingArguments recording;
+  std::string topic, schedule_name, out_path, earth_model = "wgs84_rotating";
   double latitude_deg = 0.0, height_m = 0.0;
   std::size_t held_out_last = 0;
   imu_lab::calib::CalibrationOptions options;
-  app.add_option("bag", bag_path, "calibration bag")->required();
+  imu_lab::ros_io::add_recording_arguments(app, recording, "calibration bag", true);
   app.add_option("-o,--out", out_path, "calibration YAML to write (beside it: *_kalibr_imu_chain.yaml, *_report.txt)")
       ->required();
   app.add_option("--topic", topic, "sensor_msgs/Imu topic (default: the only one in the bag)");
@@ -78,7 +80,7 @@ int main(int argc, char** argv) {
       ->check(positive());
   if (const auto status = imu_lab::parse_tool_options("fit_calibration", app, argc, argv)) return *status;
 
-  imu_lab::ToolInput input{"bag", bag_path, topic};
+  imu_lab::ToolInput input{"bag", recording.recording().name(), topic};
   return imu_lab::run_tool_main("fit_calibration", input, [&] {
     if (!schedule_name.empty()) {
       options.schedule = imu_lab::calib::schedule_from_scenario(
@@ -94,12 +96,14 @@ int main(int argc, char** argv) {
       options.site.height_m = height_m;
       options.site.earth_model = earth_model_named(earth_model);
     }
-    input.topic = topic = imu_lab::ros_io::choose_imu_topic(bag_path, topic);
+    const imu_lab::ros_io::BagRecording bag = recording.recording();
+    input.topic = topic = imu_lab::ros_io::choose_imu_topic(bag, topic);
     std::vector<imu_lab::calib::CalibrationSample> samples;
-    imu_lab::ros_io::for_each_imu_strictly(bag_path, topic, [&](const imu_lab::ros_io::ImuRecord& record) {
+    imu_lab::ros_io::for_each_imu_strictly(bag, topic, [&](const imu_lab::ros_io::ImuRecord& record) {
       samples.push_back({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2});
     });
-    if (samples.size() < 2) throw imu_lab::InputError("bag " + bag_path + ": topic " + topic + " has too few messages");
+    if (samples.size() < 2) throw imu_lab::InputError("bag " + bag.name() + ": topic " + topic + " has too few messages (" +
+                                                       imu_lab::ros_io::describe_time_window(bag.window) + ")");
     // Held out at the end, like the thesis's verification run after the calibration run.
     const std::size_t rests = imu_lab::calib::detect_static_intervals(samples, options.static_detection).intervals.size();
     for (std::size_t k = rests > held_out_last ? rests - held_out_last : 0; k < rests; ++k) {
@@ -115,7 +119,8 @@ int main(int argc, char** argv) {
     outputs.write(beside(out_path, "_report.txt"), report);
     outputs.commit();
     for (const std::string& warning : result.warnings) std::cerr << "fit_calibration: warning: " << warning << "\n";
-    std::cout << report << "\nwrote " << out_path << ", " << beside(out_path, "_kalibr_imu_chain.yaml") << ", "
+    std::cout << "fit_calibration: " << bag.name() << ", " << imu_lab::ros_io::describe_time_window(bag.window)
+              << "\n" << report << "\nwrote " << out_path << ", " << beside(out_path, "_kalibr_imu_chain.yaml") << ", "
               << beside(out_path, "_report.txt") << "\n";
     return 0;
   });

@@ -13,6 +13,7 @@
 #include "imu_lab/common/tool_options.h"
 #include "imu_lab/emulator/earth_model.h"
 #include "imu_lab/ros/config_paths.h"
+#include "imu_lab/ros/recording_arguments.h"
 #include "imu_lab/ros/thermal_bag.h"
 #include "imu_lab/thermal/thermal_fit.h"
 #include "imu_lab/thermal/thermal_model_yaml.h"
@@ -23,7 +24,8 @@ namespace {
 constexpr double kRadPerDeg = 3.14159265358979323846 / 180.0;
 
 struct Command {
-  std::string bag_path, out_path, csv_path, plot_path;
+  imu_lab::ros_io::RecordingArguments recording;
+  std::string out_path, csv_path, plot_path;
   imu_lab::ros_io::ThermalBagTopics topics;
   imu_lab::thermal::WindowSettings windows;
   imu_lab::thermal::ThermalFitOptions fit;
@@ -60,8 +62,8 @@ int main(int argc, char** argv) {
   CLI::App app{"Fit a thermal model (bias and scale factor against temperature) to a thermal-test bag."};
   using namespace imu_lab::option_range;
   Command c;
-  app.add_option("bag", c.bag_path, "thermal-test bag: the IMU static in several orientations over a temperature profile")
-      ->required();
+  imu_lab::ros_io::add_recording_arguments(
+      app, c.recording, "thermal-test bag: the IMU static in several orientations over a temperature profile", true);
   app.add_option("-o,--out", c.out_path, "thermal model YAML to write")->required();
   app.add_option("--csv", c.csv_path, "per-window residual CSV (default: <out>_residuals.csv)");
   app.add_option("--plot", c.plot_path, "also plot bias against temperature into this PNG (scripts/plot_thermal.py)");
@@ -113,7 +115,7 @@ int main(int argc, char** argv) {
                                                                      c.fit.earth.latitude_rad, c.height_m);
   if (c.csv_path.empty()) c.csv_path = default_csv_path(c.out_path);
 
-  imu_lab::ToolInput input{"bag", c.bag_path, c.topics.imu};
+  imu_lab::ToolInput input{"bag", c.recording.recording().name(), c.topics.imu};
   return imu_lab::run_tool_main("fit_thermal", input, [&] {
     // The scale-factor terms compare each orientation's output with its known input, gravity and
     // the Earth rate at the site; the bias terms do not depend on it.
@@ -123,8 +125,10 @@ int main(int argc, char** argv) {
                                  "relative to gravity and the Earth rate there; or fit the bias only "
                                  "(--no-scale-factor), which does not depend on the site");
     }
-    const auto data = imu_lab::ros_io::read_thermal_windows(c.bag_path, c.topics, c.windows);
+    const auto data = imu_lab::ros_io::read_thermal_windows(c.recording.recording(), c.topics, c.windows);
     input.topic = data.imu_topic;
+    std::printf("fit_thermal: %s, %s\n", c.recording.recording().name().c_str(),
+                imu_lab::ros_io::describe_time_window(c.recording.window).c_str());
     std::printf("fit_thermal: %zu IMU samples on %s, %zu temperature readings, %zu windows of %.6g s\n",
                 data.imu_messages, data.imu_topic.c_str(), data.temperature_messages, data.windows.size(),
                 c.windows.window_s);

@@ -1,7 +1,9 @@
-// navigate: bag -> strapdown navigation (static alignment, then free inertial navigation) ->
-// trajectory CSV; with the emulator's /imu/truth in the bag, also the error against it (printed,
-// written as a CSV beside the trajectory and, on request, plotted). The same NavigationSession as
-// the strapdown_navigator node, so both give the same solution on the same bag.
+// navigate: bag -> strapdown navigation (static alignment, or a given start state, then free
+// inertial navigation) -> trajectory CSV; with the emulator's /imu/truth in the bag, also the error
+// against it (printed, written as a CSV beside the trajectory and, on request, plotted). The same
+// NavigationSession as the strapdown_navigator node, so both give the same solution on the same
+// bag. The start state defaults to the truth's where the bag has it: the position always, and
+// without alignment the attitude (unless an angle is given) and the velocity.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -10,6 +12,8 @@
 #include <cstdlib>
 #include <iostream>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "imu_lab/common/atomic_file.h"
 #include "imu_lab/common/config_error.h"
@@ -19,6 +23,7 @@
 #include "imu_lab/ros/bag_navigation.h"
 #include "imu_lab/ros/config_paths.h"
 #include "imu_lab/ros/navigation_csv.h"
+#include "imu_lab/ros/recording_arguments.h"
 
 namespace {
 
@@ -27,17 +32,51 @@ constexpr double kArcsecPerRad = 180.0 / M_PI * 3600.0;
 constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
 
 struct CommandLine {
-  std::string bag_path, out_path, errors_path, plot_path;
+  imu_lab::ros_io::RecordingArguments recording;
+  std::string out_path, errors_path, plot_path;
   std::string input_type = "imu", heading_source = "gyrocompass", earth_model = "wgs84", vertical = "held";
+  std::string initial_velocity;  // "east,north,up"
   double alignment_duration_s = 300.0, initial_roll_deg = 0.0, initial_pitch_deg = 0.0, initial_yaw_deg = 0.0;
   double latitude_deg = kUnset, longitude_deg = kUnset, height_m = kUnset, reference_height_m = kUnset;
-  bool no_align = false, skip_bad_samples = false;
+  bool no_align = false, skip_bad_samples = false, no_coning_correction = false, no_sculling_correction = false;
+  imu_lab::ros_io::ExpectedSensorErrors expected;
+  // Options whose absence means something (take the truth's value, predict nothing).
+  std::vector<CLI::Option*> attitude_options, expected_options;
   imu_lab::ros_io::BagNavigationOptions bag;
   imu_lab::ros_io::NavigationSettings settings;
+  std::string initial_state_source;  // printed: where the start state came from
 };
 
+bool any_given(const std::vector<CLI::Option*>& options) {
+  return std::any_of(options.begin(), options.end(), [](const CLI::Option* option) { return option->count() > 0; });
+}
+
+// "east,north,up" in m/s: three finite numbers.
+Eigen::Vector3d parse_velocity(const std::string& key, const std::string& text) {
+  std::vector<std::string> fields(1);
+  for (char ch : text) {
+    if (ch == ',') {
+      fields.emplace_back();
+    } else {
+      fields.back().push_back(ch);
+    }
+  }
+  Eigen::Vector3d velocity;
+  bool good = fields.size() == 3;
+  for (std::size_t axis = 0; good && axis < 3; ++axis) {
+    char* end = nullptr;
+    velocity[axis] = std::strtod(fields[axis].c_str(), &end);
+    good = !fields[axis].empty() && end == fields[axis].c_str() + fields[axis].size() && std::isfinite(velocity[axis]);
+  }
+  if (!good) {
+    throw imu_lab::ConfigError("navigate", key,
+                               "is '" + text + "'; give three finite numbers east,north,up in m/s (e.g. 0,0,0 at rest)");
+  }
+  return velocity;
+}
+
 void add_options(CLI::App& app, CommandLine& c) {
-  app.add_option("bag", c.bag_path, "bag to navigate")->required();
+  imu_lab::ros_io::add_recording_arguments(app, c.recording, "bag to navigate", false);
   app.add_option("-o,--out", c.out_path, "trajectory CSV to write")->required();
   app.add_option("--errors-out", c.errors_path, "error CSV (default: <out>_errors.csv, only with truth)");
   app.add_option("--plot", c.plot_path, "also plot the errors into this PNG (scripts/plot_navigation.py)");
@@ -47,10 +86,15 @@ void add_options(CLI::App& app, CommandLine& c) {
   app.add_option("--truth-topic", c.bag.truth_topic, "imu_lab/ImuTruth topic to compare with")->capture_default_str();
   app.add_option("--alignment-duration-s", c.alignment_duration_s, "static alignment length [s]")->capture_default_str();
   app.add_option("--heading-source", c.heading_source, "gyrocompass or given (--initial-yaw-deg)")->capture_default_str();
-  app.add_flag("--no-align", c.no_align, "start from --initial-roll/pitch/yaw-deg instead of aligning");
-  app.add_option("--initial-roll-deg", c.initial_roll_deg, "given roll [deg] (with --no-align)");
-  app.add_option("--initial-pitch-deg", c.initial_pitch_deg, "given pitch [deg] (with --no-align)");
-  app.add_option("--initial-yaw-deg", c.initial_yaw_deg, "given yaw [deg], ENU: from east towards north");
+  app.add_flag("--no-align", c.no_align,
+               "start from a given state at the first sample instead of aligning at rest (default: the truth's)");
+  c.attitude_options = {
+      app.add_option("--initial-roll-deg", c.initial_roll_deg, "given roll [deg] (with --no-align; default 0)"),
+      app.add_option("--initial-pitch-deg", c.initial_pitch_deg, "given pitch [deg] (with --no-align; default 0)"),
+      app.add_option("--initial-yaw-deg", c.initial_yaw_deg, "given yaw [deg], ENU: from east towards north")};
+  app.add_option("--initial-velocity-enu-m-s", c.initial_velocity,
+                 "east,north,up velocity at the first sample [m/s] (with --no-align; default: the truth's, required "
+                 "without truth)");
   app.add_option("--latitude-deg", c.latitude_deg, "initial latitude (default: the truth's, if the bag has it)");
   app.add_option("--longitude-deg", c.longitude_deg, "initial longitude (default: the truth's)");
   app.add_option("--height-m", c.height_m, "initial height (default: the truth's)");
@@ -60,13 +104,24 @@ void add_options(CLI::App& app, CommandLine& c) {
   app.add_option("--reference-height-m", c.reference_height_m, "height the held channel holds (default: initial)");
   app.add_option("--gap-factor", c.settings.gap_factor, "interval over this many typical ones is a gap")
       ->capture_default_str();
+  app.add_flag("--no-coning-correction", c.no_coning_correction, "leave the coning term out");
+  app.add_flag("--no-sculling-correction", c.no_sculling_correction, "leave the sculling term out");
+  c.expected_options = {
+      app.add_option("--expected-gyro-bias-rad-s", c.expected.gyro_bias_rad_s,
+                     "a priori gyro bias, 1 sigma per axis (for the predicted alignment error)"),
+      app.add_option("--expected-accel-bias-m-s2", c.expected.accel_bias_m_s2,
+                     "a priori accelerometer bias, 1 sigma per axis"),
+      app.add_option("--gyro-noise-density-rad-s-per-sqrt-hz", c.expected.gyro_noise_density_rad_s_per_sqrt_hz,
+                     "gyro white noise (angle random walk)"),
+      app.add_option("--accel-noise-density-m-s2-per-sqrt-hz", c.expected.accel_noise_density_m_s2_per_sqrt_hz,
+                     "accelerometer white noise (velocity random walk)")};
   app.add_option("--every-s", c.bag.output_interval_s, "write a row at most this often [s] (0: every sample)")
       ->capture_default_str()
       ->check(imu_lab::option_range::non_negative());
   app.add_flag("--skip-bad-samples", c.skip_bad_samples, "skip NaN/unordered samples instead of refusing the bag");
 }
 
-// Command line -> settings; the initial position falls back to the bag's truth.
+// Command line -> settings; the start state falls back to the bag's truth at the first sample.
 void fill_settings(CommandLine& c) {
   using namespace imu_lab::ros_io;
   c.bag.input_type = parse_input_type("--input-type", c.input_type);
@@ -78,42 +133,76 @@ void fill_settings(CommandLine& c) {
   s.initial_roll_rad = c.initial_roll_deg * kDegToRad;
   s.initial_pitch_rad = c.initial_pitch_deg * kDegToRad;
   s.initial_yaw_rad = c.initial_yaw_deg * kDegToRad;
-  if (std::isnan(c.latitude_deg) || std::isnan(c.longitude_deg) || std::isnan(c.height_m)) {
-    const auto truth = first_truth(c.bag_path, c.bag.truth_topic);
-    if (!truth) {
-      throw imu_lab::ConfigError("navigate", "--latitude-deg/--longitude-deg/--height-m",
-                                 "the bag has no " + c.bag.truth_topic + " to take the initial position from; give all three");
-    }
-    if (std::isnan(c.latitude_deg)) c.latitude_deg = truth->latitude_rad / kDegToRad;
-    if (std::isnan(c.longitude_deg)) c.longitude_deg = truth->longitude_rad / kDegToRad;
-    if (std::isnan(c.height_m)) c.height_m = truth->height_m;
+  const bool velocity_given = !c.initial_velocity.empty();
+  if (velocity_given) s.initial_velocity_enu_m_s = parse_velocity("--initial-velocity-enu-m-s", c.initial_velocity);
+  const bool position_given = !std::isnan(c.latitude_deg) && !std::isnan(c.longitude_deg) && !std::isnan(c.height_m);
+  const bool attitude_given = any_given(c.attitude_options);
+  const bool truth_wanted = !position_given || (c.no_align && (!attitude_given || !velocity_given));
+  const auto truth = truth_wanted ? truth_at_start(c.recording.recording(), c.bag) : std::nullopt;
+  if (!position_given && !truth) {
+    throw imu_lab::ConfigError("navigate", "--latitude-deg/--longitude-deg/--height-m",
+                               "the bag has no " + c.bag.truth_topic + " to take the initial position from; give all three");
   }
-  s.latitude_rad = c.latitude_deg * kDegToRad;
-  s.longitude_rad = c.longitude_deg * kDegToRad;
-  s.height_m = c.height_m;
+  // The truth's own values, not converted to degrees and back.
+  s.latitude_rad = std::isnan(c.latitude_deg) ? truth->latitude_rad : c.latitude_deg * kDegToRad;
+  s.longitude_rad = std::isnan(c.longitude_deg) ? truth->longitude_rad : c.longitude_deg * kDegToRad;
+  s.height_m = std::isnan(c.height_m) ? truth->height_m : c.height_m;
+  if (velocity_given && !c.no_align) {
+    throw imu_lab::ConfigError("navigate", "--initial-velocity-enu-m-s",
+                               "needs --no-align: a static alignment starts at rest");
+  }
+  if (c.no_align) {
+    if (!velocity_given) {
+      if (!truth) {
+        throw imu_lab::ConfigError("navigate", "--initial-velocity-enu-m-s",
+                                   "is required with --no-align when the bag has no " + c.bag.truth_topic +
+                                       " to take it from: give east,north,up in m/s (0,0,0 if the IMU is at rest)");
+      }
+      s.initial_velocity_enu_m_s = truth->velocity_enu_m_s;
+    }
+    if (!attitude_given && truth) s.initial_attitude_body_to_enu = truth->q_body_to_enu;
+    c.initial_state_source = std::string("attitude ") + (s.initial_attitude_body_to_enu ? "from the truth" : "given") +
+                             ", velocity " + (velocity_given ? "given" : "from the truth") + ", position " +
+                             (position_given ? "given" : "from the truth");
+  }
   s.navigator.earth = parse_earth_model("--earth-model", c.earth_model);
   s.navigator.vertical.mode = parse_vertical_channel("--vertical", c.vertical);
-  s.navigator.vertical.fixed_reference_height_m = std::isnan(c.reference_height_m) ? c.height_m : c.reference_height_m;
+  s.navigator.vertical.fixed_reference_height_m = std::isnan(c.reference_height_m) ? s.height_m : c.reference_height_m;
+  s.navigator.corrections.coning_correction = !c.no_coning_correction;
+  s.navigator.corrections.sculling_correction = !c.no_sculling_correction;
+  if (any_given(c.expected_options)) s.expected_errors = c.expected;
   validate(s, "navigate");
+}
+
+// The alignment's predicted 1-sigma error as far as it can be predicted (alignment_error_budget.h).
+std::string predicted_error_text(const imu_lab::ros_io::AlignmentResult& a, bool expected_given) {
+  const Eigen::Vector3d arcsec = a.predicted_error_sigma_rad * kArcsecPerRad;
+  if (a.method == "given_attitude") return "no predicted error (attitude given, not estimated)";
+  if (!expected_given) {
+    return "no predicted error (give the expected sensor errors: --expected-gyro-bias-rad-s, "
+           "--expected-accel-bias-m-s2, --gyro-noise-density-rad-s-per-sqrt-hz, --accel-noise-density-m-s2-per-sqrt-hz)";
+  }
+  const std::string tilts = imu_lab::format_number(arcsec.x(), 3) + " " + imu_lab::format_number(arcsec.y(), 3);
+  if (!std::isfinite(arcsec.z())) return "predicted 1-sigma tilt error E/N " + tilts + " arcsec (heading given, not estimated)";
+  return "predicted 1-sigma error E/N/U " + tilts + " " + imu_lab::format_number(arcsec.z(), 3) + " arcsec";
 }
 
 void print_summary(const CommandLine& c, const imu_lab::ros_io::BagNavigationResult& result) {
   const auto& n = result.counters;
   std::printf("navigate: %s, topic %s: %zu messages, %llu used, skipped %llu invalid, %llu unordered, %llu after gaps\n",
-              c.bag_path.c_str(), result.topic.c_str(), result.messages, static_cast<unsigned long long>(n.used),
+              c.recording.recording().name().c_str(), result.topic.c_str(), result.messages, static_cast<unsigned long long>(n.used),
               static_cast<unsigned long long>(n.invalid), static_cast<unsigned long long>(n.unordered),
               static_cast<unsigned long long>(n.gaps));
   const auto& a = *result.alignment;
-  // A given attitude has no predicted error (NaN): say so rather than print "nan".
-  std::string predicted = "no predicted error (heading or attitude given, not estimated)";
-  if (a.predicted_error_sigma_rad.allFinite()) {
-    const Eigen::Vector3d sigma_arcsec = a.predicted_error_sigma_rad * kArcsecPerRad;
-    predicted = "predicted 1-sigma error E/N/U " + imu_lab::format_number(sigma_arcsec.x(), 3) + " " +
-                imu_lab::format_number(sigma_arcsec.y(), 3) + " " + imu_lab::format_number(sigma_arcsec.z(), 3) + " arcsec";
-  }
   std::printf("alignment (%s, %.1f s, ends %s): roll %.6f pitch %.6f yaw %.6f deg; %s\n", a.method.c_str(),
               a.duration_s, imu_lab::ros_io::format_stamp(a.stamp_ns).c_str(), a.roll_pitch_yaw_rad.x() / kDegToRad,
-              a.roll_pitch_yaw_rad.y() / kDegToRad, a.roll_pitch_yaw_rad.z() / kDegToRad, predicted.c_str());
+              a.roll_pitch_yaw_rad.y() / kDegToRad, a.roll_pitch_yaw_rad.z() / kDegToRad,
+              predicted_error_text(a, c.settings.expected_errors.has_value()).c_str());
+  if (!c.initial_state_source.empty()) {
+    const Eigen::Vector3d& v = c.settings.initial_velocity_enu_m_s;
+    std::printf("start without alignment (%s): velocity ENU %.6f %.6f %.6f m/s\n", c.initial_state_source.c_str(),
+                v.x(), v.y(), v.z());
+  }
   const auto& last = result.solutions.back();
   std::printf("final (%s): lat %.9f lon %.9f deg, height %.3f m, ENU %.3f %.3f %.3f m\n",
               imu_lab::ros_io::format_stamp(last.stamp_ns).c_str(), last.latitude_rad / kDegToRad,
@@ -153,13 +242,13 @@ int main(int argc, char** argv) {
   CommandLine c;
   add_options(app, c);
   if (const auto status = imu_lab::parse_tool_options("navigate", app, argc, argv)) return *status;
-  imu_lab::ToolInput input{"bag", c.bag_path, c.bag.topic};
+  imu_lab::ToolInput input{"bag", c.recording.recording().name(), c.bag.topic};
   return imu_lab::run_tool_main("navigate", input, [&] {
     fill_settings(c);
-    const auto result = imu_lab::ros_io::navigate_bag(c.bag_path, c.bag, c.settings);
+    const auto result = imu_lab::ros_io::navigate_bag(c.recording.recording(), c.bag, c.settings);
     const auto& n = result.counters;
     if (!c.skip_bad_samples && n.invalid + n.unordered > 0) {
-      throw imu_lab::InputError("bag " + c.bag_path + ", topic " + result.topic + ": " + std::to_string(n.invalid) +
+      throw imu_lab::InputError("bag " + c.recording.recording().name() + ", topic " + result.topic + ": " + std::to_string(n.invalid) +
                                 " samples with NaN/Inf, a value beyond +-1e100 or a bad interval and " + std::to_string(n.unordered) +
                                 " unordered stamps, first " + result.first_problem +
                                 "; nothing written (repair the bag, or pass --skip-bad-samples to skip them)");

@@ -1,7 +1,10 @@
-// rostest checker for strapdown_navigator: emulates a navigation-grade IMU at rest into a bag,
-// runs the navigate tool on it for the reference solution, then plays the bag with
-// `rosbag play --clock` into the node and checks that every published odometry equals the tool's
-// solution at the same stamp, that tf2 serves world -> imu_link, and that the alignment is latched.
+// rostest checker for strapdown_navigator: emulates an IMU into a bag (emulate_arguments), runs the
+// navigate tool on it for the reference solution, then plays the bag with `rosbag play --clock`
+// into the node and checks that every published odometry equals the tool's solution at the same
+// stamp, that tf2 serves world -> imu_link, and that the alignment (alignment_method) is latched.
+// With single_channel_velocity_east_m_s (a start at that east velocity on the non-rotating sphere,
+// at rest) every odometry's position must also follow the textbook's single-channel error
+// (v0 / w0) sin(w0 t) east, nothing north, within 2 % of its peak (seed 002 eq. 23).
 // Counts and generous time-outs only, never wall-clock rates.
 #include <gtest/gtest.h>
 #include <imu_lab/Alignment.h>
@@ -10,13 +13,16 @@
 #include <stdlib.h>
 #include <tf2_ros/transform_listener.h>
 
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <string>
 
 #include "connection_support.h"
+#include "imu_lab/nav/earth_model.h"
 #include "imu_lab/ros/navigation_csv.h"
 #include "imu_lab/ros/navigation_messages.h"
+#include "imu_lab/ros/navigation_settings.h"
 
 namespace {
 
@@ -103,8 +109,27 @@ TEST(StrapdownNavigatorNode, PublishesTheNavigateToolsSolutionAndTheTransform) {
   EXPECT_NEAR(transform.transform.rotation.z, last.pose.pose.orientation.z, 1e-12);
 
   ASSERT_EQ(alignments.size(), 1u);
-  EXPECT_EQ(alignments[0].method, "gyrocompass");
+  std::string method = "gyrocompass";
+  ros::param::get("~alignment_method", method);
+  EXPECT_EQ(alignments[0].method, method);
   EXPECT_EQ(alignments[0].header.stamp, odometry.begin()->first);  // navigation starts where alignment ends
+
+  double v0_m_s = 0.0;
+  if (!ros::param::get("~single_channel_velocity_east_m_s", v0_m_s)) return;
+  const double w0 = imu_lab::nav::EarthModel(imu_lab::ros_io::parse_earth_model("sphere", "sphere")).schulerRate_rad_s();
+  const double peak_m = std::abs(v0_m_s) / w0;
+  const ros::Time start = odometry.begin()->first;
+  double worst_m = 0.0, last_t = 0.0;
+  for (const auto& [stamp, message] : odometry) {
+    last_t = (stamp - start).toSec();
+    const auto& p = message.pose.pose.position;  // the truth stays at the origin
+    const double deviation_m = std::hypot(p.x - v0_m_s / w0 * std::sin(w0 * last_t), p.y);
+    worst_m = std::max(worst_m, deviation_m);
+    ASSERT_LE(deviation_m, 0.02 * peak_m) << "at t = " << last_t << " s";
+  }
+  std::printf("[navigator_check] single channel, v0 %.3g m/s: peak %.1f m, worst deviation %.3g m (%.3g %%) over %.0f s\n",
+              v0_m_s, peak_m, worst_m, 100.0 * worst_m / peak_m, last_t);
+  EXPECT_GE(last_t, 0.99 * 2.0 * M_PI / w0);  // at least a whole Schuler period
 }
 
 }  // namespace

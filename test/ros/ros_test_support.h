@@ -19,7 +19,7 @@ struct CommandResult {
 CommandResult run_tool(const std::string& tool, const std::string& arguments);
 // The path of one of the package's executables.
 std::string tool_path(const std::string& tool);
-// Runs a shell command line (/bin/sh -c), its stderr with its stdout.
+// Runs a shell command line (/bin/sh -c; e.g. one of the package's scripts), stderr with stdout.
 CommandResult run_command(const std::string& command);
 
 std::string read_file(const std::string& path);

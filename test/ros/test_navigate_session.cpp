@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -158,6 +159,127 @@ TEST(NavigationSettingsCheck, ASiteOrAnAttitudeNoSensorCanHaveIsRefusedByKey) {
   refused([&](NavigationSettings& s) { s.initial_roll_rad = 1e5 * kDeg; }, "initial_roll_deg");
   refused([&](NavigationSettings& s) { s.initial_yaw_rad = 1e300 * kDeg; }, "initial_yaw_deg");
   refused([&](NavigationSettings& s) { s.alignment.given_yaw_rad = -400.0 * kDeg; }, "initial_yaw_deg");
+TEST(NavigateSession, GivenStateIsTheStateAtTheFirstStampWithEitherInput) {
+  NavigationSettings s = settings();
+  s.align = false;
+  s.initial_velocity_enu_m_s = Eigen::Vector3d(3.0, -1.0, 0.5);
+  NavigationSession rates(s), increments(s);
+  const auto samples = static_samples(400);
+  const auto increment_of = [](const Sample& sample) {
+    imu_lab::nav::ImuIncrement increment;
+    increment.delta_angle_rad = sample.rate_rad_s * kInterval_s;
+    increment.delta_velocity_m_s = sample.force_m_s2 * kInterval_s;
+    increment.dt_s = kInterval_s;
+    return increment;
+  };
+  EXPECT_EQ(rates.add_rates(samples[0].stamp_ns, samples[0].rate_rad_s, samples[0].force_m_s2), SampleOutcome::kStarted);
+  // The first increment ends where the given state holds: it is not integrated.
+  EXPECT_EQ(increments.add_increment(samples[0].stamp_ns, increment_of(samples[0])), SampleOutcome::kStarted);
+  for (const NavigationSession* session : {&rates, &increments}) {
+    ASSERT_TRUE(session->navigating());
+    EXPECT_EQ(session->stamp_ns(), samples[0].stamp_ns);
+    EXPECT_EQ(session->alignment()->stamp_ns, samples[0].stamp_ns);
+    EXPECT_EQ(session->state().velocity_enu_m_s, s.initial_velocity_enu_m_s);
+    EXPECT_EQ(session->counters().used, 0u);
+  }
+  for (std::size_t k = 1; k < samples.size(); ++k) {
+    rates.add_rates(samples[k].stamp_ns, samples[k].rate_rad_s, samples[k].force_m_s2);
+    increments.add_increment(samples[k].stamp_ns, increment_of(samples[k]));
+    ASSERT_EQ(rates.stamp_ns(), increments.stamp_ns());
+    EXPECT_EQ(rates.state().velocity_enu_m_s, increments.state().velocity_enu_m_s) << "sample " << k;
+    EXPECT_EQ(rates.state().q_body_to_enu.coeffs(), increments.state().q_body_to_enu.coeffs()) << "sample " << k;
+  }
+  EXPECT_EQ(increments.counters().used, 400u);
+}
+
+TEST(NavigateSession, GivenAttitudeQuaternionOverridesTheAngles) {
+  NavigationSettings s = settings();
+  s.align = false;
+  s.initial_yaw_rad = 1.0;
+  // Pitch exactly 90 deg: roll and yaw are not separable, the quaternion keeps the attitude.
+  const Eigen::Quaterniond nose_up(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()) *
+                                   Eigen::AngleAxisd(-0.5 * M_PI, Eigen::Vector3d::UnitY()));
+  s.initial_attitude_body_to_enu = nose_up;
+  NavigationSession session(s);
+  const auto samples = static_samples(1);
+  session.add_rates(samples[0].stamp_ns, samples[0].rate_rad_s, samples[0].force_m_s2);
+  EXPECT_LT(session.state().q_body_to_enu.angularDistance(nose_up), 1e-15);
+}
+
+TEST(NavigateSession, RefusesAnInitialVelocityWithAnAlignment) {
+  NavigationSettings s = settings();
+  s.initial_velocity_enu_m_s = Eigen::Vector3d(1.0, 0.0, 0.0);
+  EXPECT_THROW(NavigationSession{s}, imu_lab::ConfigError);
+  s.align = false;
+  s.initial_velocity_enu_m_s.x() = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(NavigationSession{s}, imu_lab::ConfigError);
+}
+
+TEST(NavigateSession, PredictsTheAlignmentErrorOnlyFromGivenExpectedErrors) {
+  const auto samples = static_samples(300);
+  const auto aligned = [&](const NavigationSettings& s) {
+    NavigationSession session(s);
+    for (const Sample& sample : samples) session.add_rates(sample.stamp_ns, sample.rate_rad_s, sample.force_m_s2);
+    EXPECT_TRUE(session.alignment().has_value());
+    return session.alignment()->predicted_error_sigma_rad;
+  };
+  EXPECT_TRUE(aligned(settings()).array().isNaN().all());
+  NavigationSettings s = settings();
+  s.expected_errors = imu_lab::ros_io::ExpectedSensorErrors{};
+  s.expected_errors->accel_bias_m_s2 = 1e-3;  // sigma_E = sigma_N = b / g (alignment_error_budget.h)
+  const Eigen::Vector3d sigma = aligned(s);
+  EXPECT_NEAR(sigma.x(), 1e-3 / 9.806, 1e-3 / 9.806 * 0.01);
+  EXPECT_NEAR(sigma.y(), sigma.x(), 1e-15);
+  EXPECT_TRUE(std::isfinite(sigma.z()));
+}
+
+// Finite but absurd input (1e50 rad/s and m/s^2, e.g. a unit or parsing error upstream; beyond
+// +-1e100 a sample is skipped as invalid instead) makes the
+// state unusable; the session stops there, keeps the last usable solution, ignores what follows
+// and starts over only when told to.
+TEST(NavigateSession, StopsAtAnUnusableStateAndStartsAgainOnlyWhenTold) {
+  NavigationSettings s = settings();
+  s.align = false;
+  NavigationSession session(s);
+  const auto samples = static_samples(40);
+  for (int k = 0; k < 10; ++k) session.add_rates(samples[k].stamp_ns, samples[k].rate_rad_s, samples[k].force_m_s2);
+  const imu_lab::nav::NavState last_usable = session.state();
+  EXPECT_EQ(session.add_rates(samples[10].stamp_ns, Eigen::Vector3d::Constant(1e50), Eigen::Vector3d::Constant(1e50)),
+            SampleOutcome::kDiverged);
+  EXPECT_FALSE(session.new_solution());
+  ASSERT_TRUE(session.halted());
+  EXPECT_EQ(session.divergence()->stamp_ns, samples[10].stamp_ns);
+  EXPECT_FALSE(session.divergence()->problem.empty());
+  EXPECT_EQ(session.stamp_ns(), samples[9].stamp_ns);
+  EXPECT_EQ(session.state().velocity_enu_m_s, last_usable.velocity_enu_m_s);
+  for (int k = 11; k < 20; ++k) {
+    EXPECT_EQ(session.add_rates(samples[k].stamp_ns, samples[k].rate_rad_s, samples[k].force_m_s2),
+              SampleOutcome::kHalted);
+  }
+  EXPECT_EQ(session.counters().halted, 9u);
+  EXPECT_EQ(session.counters().divergences, 1u);
+  session.reinitialise();
+  EXPECT_FALSE(session.halted());
+  EXPECT_EQ(session.add_rates(samples[20].stamp_ns, samples[20].rate_rad_s, samples[20].force_m_s2),
+            SampleOutcome::kStarted);
+  EXPECT_EQ(session.add_rates(samples[21].stamp_ns, samples[21].rate_rad_s, samples[21].force_m_s2),
+            SampleOutcome::kNavigated);
+  EXPECT_EQ(session.alignment()->stamp_ns, samples[20].stamp_ns);
+  EXPECT_EQ(session.counters().reinitialisations, 1u);
+}
+
+// A height beyond +-1000 km is unusable too: 1e6 m/s^2 up for one 5 ms interval climbs ~12 m, a
+// 1e12 m/s^2 one past 1000 km while the latitude stays put.
+TEST(NavigateSession, StopsWhenTheHeightLeavesPlusMinus1000Km) {
+  NavigationSettings s = settings();
+  s.align = false;
+  NavigationSession session(s);
+  const auto samples = static_samples(3);
+  session.add_rates(samples[0].stamp_ns, samples[0].rate_rad_s, samples[0].force_m_s2);
+  EXPECT_EQ(session.add_rates(samples[1].stamp_ns, samples[1].rate_rad_s, Eigen::Vector3d(0.0, 0.0, 1e12)),
+            SampleOutcome::kDiverged);
+  ASSERT_TRUE(session.halted());
+  EXPECT_NE(session.divergence()->problem.find("beyond +-1000 km"), std::string::npos) << session.divergence()->problem;
 }
 
 }  // namespace

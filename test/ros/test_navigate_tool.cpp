@@ -9,17 +9,23 @@
 #include <sensor_msgs/Temperature.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "imu_lab/nav/alignment_error_budget.h"
 #include "imu_lab/nav/earth_model.h"
 #include "imu_lab/ros/imu_bag_reader.h"
 #include "imu_lab/ros/navigation_csv.h"
+#include "imu_lab/ros/navigation_settings.h"
 #include "ros_test_support.h"
 
 #ifndef IMU_LAB_CONFIG_DIR
 #define IMU_LAB_CONFIG_DIR "config"
+#endif
+#ifndef IMU_LAB_TEST_DATA_DIR
+#define IMU_LAB_TEST_DATA_DIR "test/data"
 #endif
 
 namespace {
@@ -167,23 +173,29 @@ void expect_refused(const std::string& arguments, const std::string& out, const 
 }
 
 // Copies the first `count` /imu/raw and /imu/truth messages of the suite's bag, setting the
-// angular rate of message `nan_index` to NaN.
-std::string copy_with_nan(const std::string& source, const std::string& target, int count, int nan_index) {
+// angular rate (y) of message `bad_index` to `bad_value`; returns the target and that message's stamp.
+std::pair<std::string, std::int64_t> copy_with_bad_value(const std::string& source, const std::string& target,
+                                                         int count, int bad_index, double bad_value) {
   rosbag::Bag in(source, rosbag::bagmode::Read);
   rosbag::Bag out(target, rosbag::bagmode::Write);
   int written = 0;
+  std::int64_t bad_stamp_ns = 0;
   rosbag::View view(in, rosbag::TopicQuery(std::vector<std::string>{"/imu/raw", "/imu/truth"}));
   for (const rosbag::MessageInstance& instance : view) {
     if (const auto imu = instance.instantiate<sensor_msgs::Imu>()) {
       sensor_msgs::Imu copy = *imu;
-      if (written++ == nan_index) copy.angular_velocity.y = std::nan("");
+      if (written++ == bad_index) {
+        copy.angular_velocity.y = bad_value;
+        copy.linear_acceleration.z = bad_value;
+        bad_stamp_ns = static_cast<std::int64_t>(copy.header.stamp.toNSec());
+      }
       if (written > count) break;
       out.write(instance.getTopic(), instance.getTime(), copy);
     } else {
       out.write(instance.getTopic(), instance.getTime(), instance);
     }
   }
-  return target;
+  return {target, bad_stamp_ns};
 }
 
 TEST_F(NavigateTool, RefusesABagWithoutAnImuTopic) {
@@ -206,7 +218,7 @@ TEST_F(NavigateTool, RefusesATruncatedBag) {
 }
 
 TEST_F(NavigateTool, RefusesNaNSamplesUnlessAskedToSkipThem) {
-  const std::string with_nan = copy_with_nan(bag(), *directory_ + "/nan.bag", 3000, 2000);
+  const std::string with_nan = copy_with_bad_value(bag(), *directory_ + "/nan.bag", 3000, 2000, std::nan("")).first;
   const std::string arguments = with_nan + " --alignment-duration-s 10";
   expect_refused(arguments, *directory_ + "/nan.csv", "NaN");
   const auto skipped = run_tool("navigate", arguments + " --skip-bad-samples --out " + *directory_ + "/nan.csv");
@@ -217,6 +229,134 @@ TEST_F(NavigateTool, RefusesNaNSamplesUnlessAskedToSkipThem) {
 
 TEST_F(NavigateTool, RefusesABagTooShortForTheAlignment) {
   expect_refused(bag() + " --alignment-duration-s 5000", *directory_ + "/short.csv", "alignment needs 5000");
+}
+
+// Finite but absurd values within +-1e100 (1e50 rad/s and m/s^2; beyond it a sample is refused as
+// invalid, like NaN) make the navigation state unusable: refused, exit 1,
+// naming the bag and the stamp where it happened, and nothing written (it once wrote rows of NaN
+// latitude and exited 0).
+TEST_F(NavigateTool, RefusesABagThatMakesTheStateUnusable) {
+  const auto [absurd, stamp_ns] = copy_with_bad_value(bag(), *directory_ + "/absurd.bag", 3000, 2000, 1e50);
+  const std::string out = *directory_ + "/absurd.csv";
+  const auto run = run_tool("navigate", absurd + " --alignment-duration-s 10 --out " + out);
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_NE(run.output.find("absurd.bag"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("unusable at stamp " + imu_lab::ros_io::format_stamp(stamp_ns)), std::string::npos)
+      << run.output;
+  EXPECT_FALSE(imu_lab::test_support::file_exists(out));
+  EXPECT_FALSE(imu_lab::test_support::file_exists(*directory_ + "/absurd_errors.csv"));
+}
+
+// --no-align without truth needs the initial velocity; a malformed one, or one given with an
+// alignment (which starts at rest), is a bad configuration: exit 2 naming the option.
+TEST_F(NavigateTool, RefusesAStartWithoutAlignmentWithoutAVelocity) {
+  const std::string out = *directory_ + "/no_velocity.csv";
+  const std::string position = " --latitude-deg 50 --longitude-deg 10 --height-m 0";
+  const auto expect_bad_configuration = [&](const std::string& arguments) {
+    const auto run = run_tool("navigate", bag() + position + " " + arguments + " --out " + out);
+    EXPECT_EQ(run.exit_code, 2) << arguments << ": " << run.output;
+    EXPECT_NE(run.output.find("--initial-velocity-enu-m-s"), std::string::npos) << run.output;
+    EXPECT_FALSE(imu_lab::test_support::file_exists(out));
+  };
+  expect_bad_configuration("--no-align --truth-topic /no_truth_here");  // as a bag without truth
+  expect_bad_configuration("--no-align --initial-velocity-enu-m-s 1,0");
+  expect_bad_configuration("--no-align --initial-velocity-enu-m-s 1,nan,0");
+  expect_bad_configuration("--no-align --initial-velocity-enu-m-s 1,0,0,0");
+  expect_bad_configuration("--initial-velocity-enu-m-s 0.5,0,0");
+  const auto given = run_tool("navigate", bag() + position +
+                                              " --no-align --truth-topic /no_truth_here --initial-velocity-enu-m-s 0,0,0 "
+                                              "--every-s 100 --out " + out);
+  EXPECT_EQ(given.exit_code, 0) << given.output;
+}
+
+// The expected_* options of the node, on the tool: the alignment's predicted error is printed when
+// it can be (sigma_E = sigma_N = b / g with only an accelerometer bias given,
+// alignment_error_budget.h), and the tool says what is missing when it cannot.
+TEST_F(NavigateTool, PrintsThePredictedAlignmentErrorFromTheExpectedErrors) {
+  const std::string out = *directory_ + "/predicted.csv";
+  const auto without = run_tool("navigate", bag() + " --alignment-duration-s 300 --every-s 100 --out " + out);
+  ASSERT_EQ(without.exit_code, 0) << without.output;
+  EXPECT_NE(without.output.find("no predicted error (give the expected sensor errors"), std::string::npos)
+      << without.output;
+  const double accel_bias_m_s2 = 5e-5;
+  const auto with = run_tool("navigate", bag() + " --alignment-duration-s 300 --every-s 100 --expected-accel-bias-m-s2 " +
+                                             std::to_string(accel_bias_m_s2) + " --out " + out);
+  ASSERT_EQ(with.exit_code, 0) << with.output;
+  const std::string label = "predicted 1-sigma error E/N/U ";
+  const auto at = with.output.find(label);
+  ASSERT_NE(at, std::string::npos) << with.output;
+  double east_arcsec = 0.0, north_arcsec = 0.0;
+  ASSERT_EQ(std::sscanf(with.output.c_str() + at + label.size(), "%lf %lf", &east_arcsec, &north_arcsec), 2);
+  const double g = imu_lab::nav::EarthModel().gravity_m_s2(50.0 * M_PI / 180.0, 0.0);
+  EXPECT_NEAR(east_arcsec, accel_bias_m_s2 / g * kArcsecPerRad, 0.01 * accel_bias_m_s2 / g * kArcsecPerRad);
+  EXPECT_NEAR(north_arcsec, east_arcsec, 0.01 * east_arcsec);
+  const auto negative = run_tool("navigate", bag() + " --expected-gyro-bias-rad-s -1 --out " + out);
+  EXPECT_EQ(negative.exit_code, 2) << negative.output;
+}
+
+// Through the binary, with either input: without alignment the start state is the truth's at the
+// first sample (position, attitude, velocity), and the increment ending there is not integrated.
+// The error-free IMU coning at 200 Hz for 30 s then ends within the 5 cm test_navigate_ideal.cpp
+// requires; a start one interval early costs metres here.
+TEST(NavigateToolStart, StartsFromTheTruthAtTheFirstSampleWithEitherInput) {
+  const std::string directory = scratch_directory();
+  const std::string coning = directory + "/coning.bag";
+  const auto made = run_tool("emulate", "--profile " + std::string(IMU_LAB_CONFIG_DIR) + "/sensors/ideal.yaml --scenario " +
+                                            IMU_LAB_CONFIG_DIR + "/scenarios/coning.yaml --duration-s 30 --rate-hz 200 --out " +
+                                            coning);
+  ASSERT_EQ(made.exit_code, 0) << made.output;
+  for (const std::string input : {"imu", "increment"}) {
+    const std::string out = directory + "/" + input + ".csv";
+    const auto run = run_tool("navigate", coning + " --no-align --input-type " + input + " --out " + out);
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    EXPECT_NE(run.output.find("attitude from the truth, velocity from the truth, position from the truth"),
+              std::string::npos)
+        << run.output;
+    const auto errors = read_error_csv(directory + "/" + input + "_errors.csv");
+    ASSERT_FALSE(errors.empty());
+    const auto& first = errors.front();
+    const auto& last = errors.back();
+    EXPECT_EQ(first.at("time_since_alignment_s"), 0.0);
+    EXPECT_EQ(first.at("horizontal_position_error_m"), 0.0);
+    EXPECT_NEAR(last.at("time_since_alignment_s"), 30.0 - 0.005, 1e-9);
+    std::printf("[navigate] ideal coning 30 s, %s input: final position error %.3g m\n", input.c_str(),
+                std::hypot(last.at("horizontal_position_error_m"), last.at("height_error_m")));
+    EXPECT_LT(std::hypot(last.at("horizontal_position_error_m"), last.at("height_error_m")), 0.05);
+  }
+}
+
+// Must-show: the textbook's single-channel error of an initial velocity error, through the tool.
+// On the non-rotating sphere at rest (error-free IMU), a start at v0 = 1 m/s east gives
+// east error (v0 / w0) sin(w0 t), w0 = sqrt(g / R) (seed 002 eq. 23; test_nav_schuler.cpp on the
+// core), and no north error; every output sample over 90 minutes within 2 % of the peak v0 / w0.
+TEST(NavigateToolSchuler, InitialVelocityErrorGivesTheSingleChannelSine) {
+  const std::string directory = scratch_directory();
+  const std::string at_rest = directory + "/sphere.bag";
+  const auto made = run_tool("emulate", "--profile " + std::string(IMU_LAB_CONFIG_DIR) + "/sensors/ideal.yaml --scenario " +
+                                            IMU_LAB_TEST_DATA_DIR + "/nav/static_sphere.yaml --rate-hz 10 --out " + at_rest);
+  ASSERT_EQ(made.exit_code, 0) << made.output;
+  const std::string out = directory + "/trajectory.csv";
+  const auto run = run_tool("navigate", at_rest + " --earth-model sphere --no-align --initial-velocity-enu-m-s 1,0,0 "
+                                                  "--every-s 10 --out " + out);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto errors = read_error_csv(directory + "/trajectory_errors.csv");
+  const imu_lab::nav::EarthModelConfig sphere = imu_lab::ros_io::parse_earth_model("sphere", "sphere");
+  const double w0 = imu_lab::nav::EarthModel(sphere).schulerRate_rad_s();
+  const double v0_m_s = 1.0, peak_m = v0_m_s / w0;
+  ASSERT_GE(errors.size(), 540u);
+  ASSERT_GE(errors.back().at("time_since_alignment_s"), 5390.0);
+  double worst_m = 0.0, largest_east_m = 0.0;
+  for (const auto& row : errors) {
+    const double t = row.at("time_since_alignment_s");
+    const double deviation_m = std::hypot(row.at("east_error_m") - peak_m * std::sin(w0 * t), row.at("north_error_m"));
+    worst_m = std::max(worst_m, deviation_m);
+    largest_east_m = std::max(largest_east_m, std::abs(row.at("east_error_m")));
+    EXPECT_LE(deviation_m, 0.02 * peak_m) << "at t = " << t << " s";
+  }
+  std::printf("[navigate] v0 = 1 m/s on the sphere: peak v0/w0 %.1f m, largest east error %.1f m, worst deviation "
+              "from the sine %.3g m (%.3g %% of the peak)\n",
+              peak_m, largest_east_m, worst_m, 100.0 * worst_m / peak_m);
+  EXPECT_GT(largest_east_m, 0.98 * peak_m);  // the sine is really there
 }
 
 }  // namespace

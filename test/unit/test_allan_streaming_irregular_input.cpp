@@ -23,6 +23,8 @@ void expect_pooled_batch(const std::vector<StabilityPoint>& streamed, const std:
   for (const StabilityPoint& point : streamed) {
     long long terms = 0;
     double weighted_variance = 0.0;
+    std::size_t samples = 0;
+    for (const std::vector<double>& segment : segments) samples += segment.size() + 1;  // phase points
     for (const std::vector<double>& segment : segments) {
       const auto batch = evaluate_frequency(statistic, segment, 1e-3, {point.averaging_factor});
       if (batch.empty()) continue;
@@ -31,6 +33,10 @@ void expect_pooled_batch(const std::vector<StabilityPoint>& streamed, const std:
     }
     const std::string where = what + " " + statistic_name(statistic) + " m=" + std::to_string(point.averaging_factor);
     EXPECT_EQ(point.term_count, terms) << where;
+    // One record of all the segments' phase points would hold term_count(samples, m) terms.
+    EXPECT_DOUBLE_EQ(point.pooled_term_fraction,
+                     std::min(1.0, static_cast<double>(terms) / term_count(statistic, samples, point.averaging_factor)))
+        << where;
     EXPECT_LE(relative_difference(point.deviation, std::sqrt(weighted_variance / terms)), 1e-9) << where;
   }
 }

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <variant>
 
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/emulator/imu_emulator.h"
@@ -112,6 +113,103 @@ TEST(EmulatorProfiles, InconsistentValuesNamed) {
             "gyro.noise.zero_dc_family.exponent_n");
 }
 
+TEST(EmulatorProfiles, FrontEndAndNoiseFamilyKeysLoad) {
+  YAML::Node root = YAML::Load(kValidProfile);
+  root["gyro"]["noise"]["resonance"] = YAML::Load(
+      "[{rms_rad_s: [0, 0, 1e-3], natural_frequency_hz: 20, width_hz: 1.5},"
+      " {rms_rad_s: 2e-4, natural_frequency_hz: 140, width_hz: 6}]");
+  root["gyro"]["noise"]["high_pass_white"] =
+      YAML::Load("{density_rad_s_per_sqrt_hz: 1e-4, corner_frequency_hz: 0.5}");
+  root["gyro"]["noise"]["zero_dc_family"] = YAML::Load(
+      "{exponent_n: 3, alpha_rad2_s2_per_hz_n_plus_1: 1e-8, beta_s: 0.05, cosine_s: 0.6,"
+      " cosine_weight: -0.5}");
+  root["gyro"]["noise"]["zero_dc_gaussian"] =
+      YAML::Load("{exponent_n: 3, alpha_rad2_s2_per_hz_n_plus_1: [1e-8, 0, 1e-8], beta_s2: 4e-4}");
+  root["gyro"]["noise"]["white_rate"]["axis_correlation"] =
+      YAML::Load("[[1, 0.2, 0], [0.2, 1, -0.1], [0, -0.1, 1]]");
+  root["gyro"]["output_lsb_rad_s"] = 8.7e-4;
+  root["accelerometer"]["output_lsb_m_s2"] = YAML::Load("[0.0327, 0.0327, 0]");
+  const SensorProfile profile = sensor_profile_from_yaml(root, "test.yaml");
+  // white + two Markov + resonance (z only for the first) + high-pass + zero-DC + Gaussian (not y)
+  EXPECT_EQ(profile.gyro.noise_per_axis[0].size(), 7u);
+  EXPECT_EQ(profile.gyro.noise_per_axis[1].size(), 6u);
+  EXPECT_EQ(profile.gyro.noise_per_axis[2].size(), 8u);
+  const auto& p = std::get<noise::ZeroDcFamilyParameters>(profile.gyro.noise_per_axis[0][3]);
+  EXPECT_EQ(p.exponent_n, 3.0);
+  EXPECT_EQ(p.cosine_weight, -0.5);
+  EXPECT_EQ(profile.gyro.white_rate_correlation(1, 2), -0.1);
+  EXPECT_EQ(profile.accelerometer.output_lsb, Eigen::Vector3d(0.0327, 0.0327, 0.0));
+  ImuEmulator emulator(profile, load_scenario(test::config_path("scenarios/static.yaml")), {200.0, 0.0, 1});
+  for (int k = 0; k < 10; ++k) ASSERT_TRUE(emulator.next().angular_rate_rad_s.allFinite());
+}
+
+TEST(EmulatorProfiles, FrontEndAndNoiseFamilyRefusalsNamed) {
+  auto with = [](const char* triad, const char* key, const char* yaml) {
+    return refused_key([&](YAML::Node& r) { r[triad][key] = YAML::Load(yaml); });
+  };
+  auto with_noise = [](const char* key, const char* yaml) {
+    return refused_key([&](YAML::Node& r) { r["gyro"]["noise"][key] = YAML::Load(yaml); });
+  };
+  const struct {
+    const char* block;
+    const char* yaml;
+    const char* named;
+  } noise_refusals[] = {
+      {"resonance", "{rms_rad_s: 1e-3, natural_frequency_hz: 20, width_hz: 40}", "gyro.noise.resonance.width_hz"},
+      {"resonance",
+       "[{rms_rad_s: 1e-3, natural_frequency_hz: 20, width_hz: 1}, {rms_rad_s: 1e-3, natural_frequency_hz: -5, width_hz: 1}]",
+       "gyro.noise.resonance[1].natural_frequency_hz"},
+      {"resonance", "{rms_rad_s: -1e-3, natural_frequency_hz: 20, width_hz: 1}", "gyro.noise.resonance.rms_rad_s"},
+      {"resonance", "{rms_m_s2: 1e-3, natural_frequency_hz: 20, width_hz: 1}", "gyro.noise.resonance.rms_m_s2"},
+      {"high_pass_white", "{density_rad_s_per_sqrt_hz: 1e-4, corner_frequency_hz: 0}",
+       "gyro.noise.high_pass_white.corner_frequency_hz"},
+      {"zero_dc_family",
+       "{exponent_n: 2, alpha_rad2_s2_per_hz_n_plus_1: 1e-8, beta_s: 0.05, cosine_s: 0.5, cosine_weight: 1.5}",
+       "gyro.noise.zero_dc_family.cosine_weight"},
+      {"zero_dc_family", "{exponent_n: 2, alpha_rad2_s2_per_hz_n_plus_1: 1e-8, beta_s: 0.05, cosine_s: -0.5}",
+       "gyro.noise.zero_dc_family.cosine_s"},
+      {"zero_dc_gaussian", "{exponent_n: 0.5, alpha_rad2_s2_per_hz_n_plus_1: 1e-8, beta_s2: 1e-3}",
+       "gyro.noise.zero_dc_gaussian.exponent_n"},
+      {"zero_dc_gaussian", "{exponent_n: 3, alpha_rad2_s2_per_hz_n_plus_1: 1e-8, beta_s: 1e-3}",
+       "gyro.noise.zero_dc_gaussian.beta_s"},
+  };
+  for (const auto& refusal : noise_refusals) {
+    EXPECT_EQ(with_noise(refusal.block, refusal.yaml), refusal.named) << refusal.yaml;
+  }
+  EXPECT_EQ(with("gyro", "output_lsb_rad_s", "-1e-3"), "gyro.output_lsb_rad_s");
+  EXPECT_EQ(refused_key([](YAML::Node& r) {
+              r["gyro"]["quantization"] = YAML::Load("{model: pulses, pulse_weight_rad: 1e-6}");
+              r["gyro"]["output_lsb_rad_s"] = 1e-3;
+            }),
+            "gyro.output_lsb_rad_s");
+  EXPECT_EQ(with("accelerometer", "dead_zone_m_s2", "[0, -1, 0]"), "accelerometer.dead_zone_m_s2");
+  EXPECT_EQ(with("gyro", "scale_factor_asymmetry_ppm", "high"), "gyro.scale_factor_asymmetry_ppm");
+  EXPECT_EQ(with("gyro", "scale_factor_nonlinearity", "{quadratic_ppm_fs: 100}"),
+            "gyro.scale_factor_nonlinearity.full_scale_rad_s");
+  EXPECT_EQ(with("gyro", "scale_factor_nonlinearity", "{full_scale_rad_s: [5, 0, 5], cubic_ppm_fs: 100}"),
+            "gyro.scale_factor_nonlinearity.full_scale_rad_s");
+  EXPECT_EQ(refused_key([](YAML::Node& r) {
+              r["gyro"]["quadratic_nonlinearity_per_rad_s"] = 1e-4;
+              r["gyro"]["scale_factor_nonlinearity"] = YAML::Load("{full_scale_rad_s: 5, quadratic_ppm_fs: 100}");
+            }),
+            "gyro.scale_factor_nonlinearity.quadratic_ppm_fs");
+  auto correlation = [](const char* matrix) {
+    return refused_key([&](YAML::Node& r) {
+      r["gyro"]["noise"]["white_rate"]["axis_correlation"] = YAML::Load(matrix);
+    });
+  };
+  EXPECT_EQ(correlation("[[1, 0.2, 0], [0.3, 1, 0], [0, 0, 1]]"), "gyro.noise.white_rate.axis_correlation");
+  EXPECT_EQ(correlation("[[2, 0, 0], [0, 1, 0], [0, 0, 1]]"), "gyro.noise.white_rate.axis_correlation");
+  EXPECT_EQ(correlation("[[1, 0.9, -0.9], [0.9, 1, 0.9], [-0.9, 0.9, 1]]"),
+            "gyro.noise.white_rate.axis_correlation");
+  EXPECT_EQ(correlation("[[1, 0, 0], [0, 1, 0]]"), "gyro.noise.white_rate.axis_correlation");
+  EXPECT_EQ(refused_key([](YAML::Node& r) {
+              r["gyro"]["noise"]["white_rate"] = YAML::Load(
+                  "{density_rad_s_per_sqrt_hz: [1e-4, 0, 1e-4], axis_correlation: [[1, 0.5, 0], [0.5, 1, 0], [0, 0, 1]]}");
+            }),
+            "gyro.noise.white_rate.axis_correlation");
+}
+
 TEST(EmulatorProfiles, MissingFileNamed) {
   try {
     load_sensor_profile(test::config_path("sensors/no_such_profile.yaml"));
@@ -190,7 +288,8 @@ INSTANTIATE_TEST_SUITE_P(Shipped, EmulatorShippedProfiles,
                          ::testing::Values(ShippedProfile{"consumer_mems.yaml", 200.0},
                                            ShippedProfile{"tactical_mems.yaml", 400.0},
                                            ShippedProfile{"fog_markov_hump.yaml", 2000.0},
-                                           ShippedProfile{"rlg_navigation.yaml", 100.0}));
+                                           ShippedProfile{"rlg_navigation.yaml", 100.0},
+                                           ShippedProfile{"mems_front_end.yaml", 100.0}));
 
 }  // namespace
 }  // namespace emulator

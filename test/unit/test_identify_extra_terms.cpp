@@ -30,7 +30,7 @@ TEST(IdentifyExtraTerms, SinusoidIsFoundWithItsFrequency) {
   NoiseModel truth;
   truth.terms = {{TermKind::kWhiteRate, 1e-4, 0.0}, {TermKind::kSinusoid, 2e-4, 0.05}};
   const FitResult fit = fit_noise_model(exact_curve(truth), kTau0, kLength);
-  const TermEstimate& sinusoid = expect_present(fit, "sinusoid");
+  const TermEstimate& sinusoid = expect_present(fit, "sinusoid_1");
   EXPECT_NEAR(sinusoid.amplitude.value, 2e-4, 2e-6);
   EXPECT_NEAR(sinusoid.shape.value, 0.05, 5e-4);
   EXPECT_EQ(fit.model.terms.size(), 2u);

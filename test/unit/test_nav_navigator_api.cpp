@@ -3,6 +3,7 @@
 
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/nav/navigator.h"
@@ -40,6 +41,42 @@ TEST(NavNavigatorApi, RefusesBadIncrementsAndKeepsTheState) {
                                 Eigen::Vector3d::Zero(), 0.01),
                InputError);
   EXPECT_EQ(navigator.state().stamp_s, 0.0);
+}
+
+TEST(NavNavigatorApi, RefusesAnInitialHeightBeyond1000Km) {
+  Navigator navigator;
+  NavState state;
+  state.height_m = -1.001e6;
+  EXPECT_THROW(navigator.initialise(state), InputError);
+  state.height_m = 1.0e6;  // the limit itself is still a state
+  navigator.initialise(state);
+  EXPECT_TRUE(navigator.initialised());
+}
+
+// The navigator checks the state each step makes: absurd but finite increments (a unit error
+// upstream) leave it unusable; update() says why, keeps the last usable state and stops.
+TEST(NavNavigatorApi, StopsWhenAStepMakesTheStateUnusable) {
+  Navigator navigator;
+  navigator.initialise(NavState());
+  const Eigen::Vector3d up_force(0.0, 0.0, 9.78);
+  navigator.update(Eigen::Vector3d::Zero(), up_force * 0.01, 0.01);
+  const NavState usable = navigator.state();
+  // 1e14 m/s^2 up for 10 ms: 5e9 m of climb in one step.
+  try {
+    navigator.update(Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, 1e12), 0.01);
+    ADD_FAILURE() << "no UnusableStateError";
+  } catch (const UnusableStateError& error) {
+    EXPECT_NE(std::string(error.what()).find("beyond +-1000 km"), std::string::npos) << error.what();
+  }
+  EXPECT_FALSE(navigator.initialised());
+  EXPECT_EQ(navigator.state().height_m, usable.height_m);
+  EXPECT_EQ(navigator.state().stamp_s, usable.stamp_s);
+  EXPECT_THROW(navigator.update(Eigen::Vector3d::Zero(), up_force * 0.01, 0.01), std::logic_error);
+  // Finite increments whose step overflows: NaN/Inf in the state.
+  navigator.initialise(NavState());
+  EXPECT_THROW(navigator.update(Eigen::Vector3d::Constant(1e300), Eigen::Vector3d::Constant(1e300), 0.01),
+               UnusableStateError);
+  EXPECT_TRUE(stateProblem(usable).empty());
 }
 
 TEST(NavNavigatorApi, RateAveragesBecomeIncrements) {

@@ -2,7 +2,6 @@
 // checked against a numerical evaluation of AVAR = 4 int S(f) sin^4(pi f tau)/(pi f tau)^2 df.
 #include <gtest/gtest.h>
 
-#include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
 
 #include "imu_lab/allan/batch.h"
@@ -56,33 +55,17 @@ TEST(NoiseDeterministic, SinusoidIntervalAverageIsExact) {
   }
 }
 
-// 4 int_0^inf S(f) sin^4(pi f tau) / (pi f tau)^2 df, piecewise over half-periods of sin^2.
-double numerical_avar(const std::function<double(double)>& psd, double tau, double f_max) {
-  const double step = 1.0 / tau;
-  double sum = 0.0;
-  for (double f = 0.0; f < f_max; f += step) {
-    sum += boost::math::quadrature::gauss_kronrod<double, 61>::integrate(
-        [&](double x) {
-          if (x <= 0.0) return 0.0;
-          const double s = std::sin(kPi * x * tau);
-          return 4.0 * psd(x) * s * s * s * s / ((kPi * x * tau) * (kPi * x * tau));
-        },
-        f, std::min(f + step, f_max), 3, 1e-12);
-  }
-  return sum;
-}
-
 TEST(NoiseAnalyticAvar, MarkovFlickerAndZeroDcAgainstNumericalIntegral) {
   for (double tau : {0.03, 0.3, 3.0}) {
     const double q = 1e-2, tc = 0.1;
-    EXPECT_NEAR(numerical_avar([&](double f) { return q * q * tc * tc / (1.0 + std::pow(2 * kPi * f * tc, 2)); },
+    EXPECT_NEAR(test::numerical_avar([&](double f) { return q * q * tc * tc / (1.0 + std::pow(2 * kPi * f * tc, 2)); },
                                tau, 200.0) / markov_avar(q, tc, tau), 1.0, 2e-3) << tau;
     const double b = 1e-3, f0 = 5.0;
-    EXPECT_NEAR(numerical_avar([&](double f) { return f <= f0 ? b * b / (2 * kPi * f) : 0.0; }, tau, f0) /
+    EXPECT_NEAR(test::numerical_avar([&](double f) { return f <= f0 ? b * b / (2 * kPi * f) : 0.0; }, tau, f0) /
                     bias_instability_avar(b, f0, tau), 1.0, 1e-6) << tau;
     for (double n : {1.0, 2.0, 3.0, 2.5}) {
       const double alpha = 1e-6, beta = 0.2;
-      EXPECT_NEAR(numerical_avar([&](double f) { return alpha * std::pow(f, n) * std::exp(-beta * f); }, tau, 300.0) /
+      EXPECT_NEAR(test::numerical_avar([&](double f) { return alpha * std::pow(f, n) * std::exp(-beta * f); }, tau, 300.0) /
                       zero_dc_family_avar(n, alpha, beta, tau), 1.0, 1e-6) << "n " << n << " tau " << tau;
     }
   }

@@ -41,6 +41,9 @@ struct StabilityPoint {
   int averaging_factor = 0;   // m = tau / tau0
   double tau_s = 0.0;
   long long term_count = 0;   // number of terms in the average (Stable32's '#')
+  // term_count over the terms one contiguous record of all the segments' samples would give:
+  // below 1 when the run was split (gaps, knocks) and the segments pooled; 1 for one segment.
+  double pooled_term_fraction = 1.0;
   int alpha = 0;              // power-law noise estimate: frequency PSD ~ f^alpha (2 WPM ... -2 RWFM)
   double edf = 0.0;           // equivalent degrees of freedom
   double deviation = 0.0;     // sigma(tau)

@@ -9,7 +9,9 @@ namespace emulator {
 
 // tau0_s is needed for the bandwidth-defined terms (white angle noise given as a density). The
 // anti-alias filter is included exactly where the emulator applies it (on the white rate noise).
-// Biases (fixed and turn-on) are constant and have no AVAR.
+// The output LSB adds LSB^2 tau0 / (12 tau) (white rounding noise, while the other noise spans
+// several LSBs). Biases (fixed and turn-on) are constant and have no AVAR; cross-axis
+// correlation does not change one axis's AVAR.
 double analytic_axis_avar(const TriadErrorModel& triad, int axis, double tau_s, double tau0_s);
 
 }  // namespace emulator

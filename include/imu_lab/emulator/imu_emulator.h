@@ -24,12 +24,14 @@ struct EmulatorSettings {
   std::uint64_t seed = 1;
 };
 
-// Truth at the sample's stamp.
+// Truth of one sample: attitude, position, velocity and temperature at the stamp (the end of the
+// interval); angular rate and specific force averaged over the interval, exactly the averages the
+// sensor measured (the motion's integrals / dt), so an error-free sensor reads them bit for bit.
 struct TruthSample {
   double stamp_s = 0.0;
   Eigen::Quaterniond attitude_body_to_enu = Eigen::Quaterniond::Identity();
-  Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();    // body axes
-  Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();   // body axes
+  Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();    // body axes, interval average
+  Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();   // body axes, interval average
   double latitude_rad = 0.0;
   double longitude_rad = 0.0;
   double height_m = 0.0;

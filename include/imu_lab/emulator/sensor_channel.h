@@ -1,7 +1,12 @@
-// One triad's measurement: output = b_fixed + b_turn_on + b(T, dT/dt) + K(T, dT/dt) * input + c .* input.^2
-// + G * specific_force (gyro) + sum of noise processes, then optional pulse quantization of the
-// increment. Rates in and out are interval averages. The quadratic term is applied to the
-// interval average of the input (exact for static and constant-rate inputs only).
+// One triad's measurement: per axis i, with w the input (the true interval average),
+//   r = K(T, dT/dt) * w + c2 .* w.^2 + c3 .* w.^3 + 1e-6 A / 2 .* |w|   (rate-dependent response)
+//   r_i = 0 where |r_i| < dead_zone_i
+//   output = b_fixed + b_turn_on + b(T, dT/dt) + r + G * specific_force (gyro) + sum of noise
+// then optional pulse quantization of the increment, and last the output register's LSB
+// (round to nearest). Rates in and out are interval averages. The nonlinear terms are applied to
+// the interval average of the input (exact for static and constant-rate inputs only).
+// Noise processes are independent except the white rate noise, correlated across the three axes
+// by the profile's white_rate_correlation (Cholesky factor on the unit-variance deviates).
 // Bandwidth (first-order anti-alias low-pass) is applied exactly to the white rate noise only
 // (white -> Gauss-Markov with the same PSD, still exact interval averages). It does not filter
 // the truth (a unity-gain low-pass leaves the static truth unchanged; moving scenarios will need
@@ -45,7 +50,9 @@ class TriadChannel {
                           const Eigen::Vector3d& specific_force_average, double elapsed_start_s,
                           double interval_s);
 
-  // Per-axis variance of one sample's stationary noise (see ImuSample).
+  // The rate-dependent response r above, dead zone included (no bias, no noise).
+  Eigen::Vector3d response(const Eigen::Vector3d& true_average, const Eigen::Vector3d& thermal_scale) const;
+  // Per-axis variance of one sample's stationary noise (see ImuSample); the LSB adds LSB^2 / 12.
   Eigen::Vector3d sample_variance(double interval_s) const;
   // b_fixed + the run-to-run bias drawn for this run.
   Eigen::Vector3d total_bias() const { return model_.bias_fixed + turn_on_bias_; }
@@ -60,6 +67,12 @@ class TriadChannel {
   Eigen::Vector3d turn_on_bias_;
   std::array<std::vector<std::unique_ptr<noise::NoiseProcess>>, 3> processes_;
   std::array<noise::PulseQuantizer, 3> quantizers_;
+  // Cross-axis white rate noise: the index of each axis's white process (-1: none), its density,
+  // and the Cholesky factor of white_rate_correlation; correlate_white_ false for identity.
+  bool correlate_white_ = false;
+  std::array<int, 3> white_index_{-1, -1, -1};
+  Eigen::Vector3d white_density_ = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d white_factor_ = Eigen::Matrix3d::Identity();
 };
 
 }  // namespace emulator

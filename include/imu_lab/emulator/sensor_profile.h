@@ -1,5 +1,6 @@
 // Sensor error-model profile: per triad, output = b + K * input + nonlinearity + g-sensitivity
-// + noise (seed 001 section 3.3), with K = I + diag(scale_factor_error) + misalignment.
+// + noise (seed 001 section 3.3), with K = I + diag(scale_factor_error) + misalignment, then the
+// output register's LSB.
 // Loaded from YAML with strict validation (every refusal is a ConfigError naming the dotted key).
 #pragma once
 
@@ -41,8 +42,16 @@ struct TriadErrorModel {
   Eigen::Vector3d scale_factor_error_ppm = Eigen::Vector3d::Zero();
   // Off-diagonal small-angle misalignment / non-orthogonality [rad]; the diagonal is zero.
   Eigen::Matrix3d misalignment_rad = Eigen::Matrix3d::Zero();
-  // output_i += c_i * input_i^2  [1/u]
-  Eigen::Vector3d quadratic_nonlinearity_per_unit = Eigen::Vector3d::Zero();
+  // Rate-dependent scale-factor errors of axis i, in its input w_i (IEEE Std 528 terms):
+  //   + c2_i w_i^2 + c3_i w_i^3 + 1e-6 A_i / 2 |w_i|   (K+ - K- = A_i ppm of K)
+  // The profile gives c2, c3 either directly or in ppm of full scale FS at full scale:
+  // c2 = 1e-6 k2 / FS, c3 = 1e-6 k3 / FS^2.
+  Eigen::Vector3d quadratic_nonlinearity_per_unit = Eigen::Vector3d::Zero();  // c2 [1/u]
+  Eigen::Vector3d cubic_nonlinearity_per_unit2 = Eigen::Vector3d::Zero();     // c3 [1/u^2]
+  Eigen::Vector3d scale_factor_asymmetry_ppm = Eigen::Vector3d::Zero();       // A
+  // The axis's whole rate-dependent response (K, thermal scale and the terms above) reads zero
+  // while its magnitude is below this [u]; 0 = none.
+  Eigen::Vector3d dead_zone = Eigen::Vector3d::Zero();
   // Gyro only: rate error = G * specific_force  [rad/s per m/s^2]. Zero for accelerometers.
   Eigen::Matrix3d g_sensitivity = Eigen::Matrix3d::Zero();
   // Anti-alias low-pass corner (first order); 0 = none. Applied exactly to the white rate noise
@@ -51,8 +60,16 @@ struct TriadErrorModel {
   // Physical quantization: cumulative increment rounded to whole pulses of this weight [v]
   // with carry; 0 = none. (The white-angle model is a noise process instead.)
   double pulse_weight = 0.0;
-  // Independent noise processes per axis (x, y, z), each switchable and combinable.
+  // The output register: every output sample (rate, hence increment) rounded to a whole number
+  // of this step [u], last, after the anti-alias filter, the pulses and every error; 0 = none.
+  Eigen::Vector3d output_lsb = Eigen::Vector3d::Zero();
+  // Noise processes per axis (x, y, z), each switchable and combinable; independent across axes
+  // except the white rate noise, whose three axes are correlated by white_rate_correlation.
   std::array<std::vector<noise::ProcessParameters>, 3> noise_per_axis;
+  // Correlation matrix of the three axes' white rate noise (applied through its Cholesky factor
+  // to the unit-variance white deviates, before the anti-alias filter, which is the same on all
+  // axes and so keeps it). Identity = independent.
+  Eigen::Matrix3d white_rate_correlation = Eigen::Matrix3d::Identity();
   ThermalSensitivity thermal;
 
   // K = I + diag(scale_factor_error_ppm * 1e-6) + misalignment_rad.

@@ -1,5 +1,5 @@
 // Options of the noise identification: which terms may enter, how bias instability's cutoff is
-// chosen, the significance a term needs to be reported present, robustness and bounds.
+// chosen, the sensor's front end, the significance a term needs to be reported present, bounds.
 #pragma once
 
 #include <vector>
@@ -22,30 +22,34 @@ struct FitOptions {
   bool allow_random_walk = true;
   bool allow_rate_ramp = true;
   int max_markov_terms = 2;
-  bool allow_sinusoid = true;
-  bool allow_zero_dc_family = false;  // seed 003 table 7.1, PSD alpha f^2 exp(-beta f)
+  int max_sinusoids = 2;
+  int max_resonances = 2;
+  bool allow_zero_dc_family = false;  // Krobka table 7.1, PSD alpha f^2 exp(-beta f)
 
   BiasCutoff bias_cutoff = BiasCutoff::kNyquist;
   double bias_cutoff_hz = 0.0;  // for kGiven
 
-  // Known first-order anti-alias corner of the white rate noise (0 = none / unknown). When it
-  // is unknown and the filter pulls the leftmost points down, the fit describes the low-passed
-  // white noise as a short Markov term and says so in a warning.
-  double white_rate_corner_hz = 0.0;
+  // The sensor's front end: a first-order low-pass on the white rate noise (the anti-alias
+  // filter), its corner fitted when the data ask for it. A known corner (datasheet) can be
+  // given instead; 0 = fitted (or none, if the data do not need one).
+  bool allow_front_end = true;
+  double front_end_corner_hz = 0.0;
+  // The output's quantization step (LSB) in the rate unit, 0 = unquantised: rounding adds white
+  // noise of variance step^2 / 12 per sample behind the front end. Known from the data.
+  double output_quantization_step = 0.0;
 
-  // Likelihood-ratio test level: a term enters, and stays, only if it improves the
-  // log-likelihood by more than chi2 quantile (1 - significance, its parameter count) / 2.
-  double significance = 0.001;
-  // Huber threshold on the deviance residual (0 = plain maximum likelihood).
-  double robust_loss_scale = 3.0;
-  // One-sided profile-likelihood bound reported for absent and unconstrained terms.
+  // Selection test level: a term enters, and stays, only if the GMM distance falls by more than
+  // the chi2 quantile (1 - significance, its parameter count) (Bonferroni over the searched
+  // shapes for terms whose shape is fitted).
+  double significance = 0.01;
+  // One-sided profile bound reported for absent and unconstrained terms.
   double upper_bound_confidence = 0.95;
   // A present term whose relative sigma exceeds this is reported unconstrained (+ upper bound).
   double unconstrained_relative_sigma = 1.0;
   // Starts of a new term, as fractions of its envelope amplitude (start_values.h).
   std::vector<double> envelope_fractions = {0.5, 0.1, 0.01};
-  // Solves per candidate term in each selection step (the best starts by initial cost).
-  int solves_per_candidate = 6;
+  // Solves per candidate term in each selection step (the best starts by initial distance).
+  int solves_per_candidate = 4;
 };
 
 }  // namespace identify

@@ -1,6 +1,8 @@
-// The AVAR points the likelihood uses. Neighbouring overlapping-Allan points are strongly
-// correlated (DESIGN.md section 5); points an octave or more apart are nearly independent, so the
-// fit keeps one point per octave and treats them as independent chi-squared variates.
+// The AVAR points the estimator uses. Neighbouring overlapping-Allan points are strongly
+// correlated; the estimator carries that correlation (avar_covariance.h), so it may use many of
+// them, but a grid much denser than ten per decade adds little information and a nearly
+// singular covariance. The fit therefore keeps points at least `min_ratio` apart in tau, the
+// same set (up to rounding) whatever the grid the curve was computed on.
 #pragma once
 
 #include <vector>
@@ -12,16 +14,25 @@ namespace identify {
 
 struct FitPoint {
   double tau_s = 0.0;
-  double avar = 0.0;  // measured overlapping Allan variance
-  double edf = 0.0;   // its equivalent degrees of freedom
+  int averaging_factor = 0;  // m = tau / tau0
+  double avar = 0.0;         // measured overlapping Allan variance
+  double pooled_term_fraction = 1.0;  // allan::StabilityPoint's: below 1 when pooled over segments
 };
 
-// Keeps, in increasing tau, each usable point (finite, deviation > 0, edf > 0) whose tau is at
-// least `min_ratio` times the last kept one (default: octaves, with slack for rounding).
-// Throws InputError (common/config_error.h) naming the problem when fewer than 3 points remain
-// or taus are not increasing.
-std::vector<FitPoint> select_octave_points(const std::vector<allan::StabilityPoint>& points,
-                                           double min_ratio = 1.99);
+// The default spacing of the fit points: a factor sqrt(2) in tau (two per octave).
+constexpr double kFitPointRatio = 1.41;
+// The ladder of averaging factors round(10^(k / 5)), k = 0, 1, ...: every decade grid of 5, 10,
+// 20, 30 ... points per decade holds it exactly.
+constexpr double kLadderPointsPerDecade = 5.0;
+
+// When the curve's grid holds at least 80 % of the ladder up to its largest usable factor, the
+// usable points on the ladder: the same points whatever the grid's density, so a denser grid
+// changes neither the estimate nor the selection. Otherwise (octaves, hand-picked taus) each
+// usable point (finite, deviation > 0, m >= 1) whose tau is at least `min_ratio` times the last
+// kept one. Throws InputError (common/config_error.h) naming the problem when fewer than 3
+// points remain or taus are not increasing.
+std::vector<FitPoint> select_fit_points(const std::vector<allan::StabilityPoint>& points,
+                                        double min_ratio = kFitPointRatio);
 
 // Octave averaging factors 1, 2, 4, ... up to the largest the overlapping Allan variance can
 // evaluate for sample_count samples (2 m <= sample_count - 1 phase steps).

@@ -1,6 +1,8 @@
-// Warnings that set the graphical readings against the fit, as seed 003 section 6 describes:
-// a slope -1/2 segment that is a Markov flank, a minimum that over-states B, a low-pass filter
-// pulling the leftmost points down, and a model that does not describe the data.
+// Warnings that set the graphical readings against the fit, as Krobka section 6 describes (a
+// slope -1/2 segment that is a Markov flank, a minimum that over-states B), and say where the
+// model does not describe the curve: every tau range where the fitted total leaves the measured
+// curve's 95 % band, a discrepancy the estimates needed, terms the data do not constrain, terms
+// whose selection was borderline.
 #pragma once
 
 #include <string>
@@ -13,6 +15,17 @@ namespace identify {
 
 // Ratio above which a reading is said to disagree with the fit.
 constexpr double kReadingDisagreementRatio = 1.5;
+
+// Contiguous runs of curve points where the fitted total is outside the band: first and last
+// tau, and the largest excursion beyond the band as a fraction of the measured deviation
+// (positive: above the band).
+struct BandExcursion {
+  double first_tau_s = 0.0;
+  double last_tau_s = 0.0;
+  int point_count = 0;
+  double largest_excursion = 0.0;
+};
+std::vector<BandExcursion> band_excursions(const std::vector<BandPoint>& band);
 
 std::vector<std::string> fit_warnings(const FitResult& fit);
 

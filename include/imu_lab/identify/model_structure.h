@@ -1,6 +1,7 @@
 // Which terms a candidate model has and how its parameters are laid out for the optimiser:
-// every parameter positive, so the optimiser works on logarithms (ln amplitude, then ln shape when
-// the shape is free). A bias instability whose cutoff is fixed has no shape parameter.
+// every parameter positive, so the optimiser works on logarithms (ln amplitude, then ln shape
+// when the shape is free, then ln relative width for a resonance). A bias instability whose
+// cutoff is fixed, or a white rate without a front end, has no shape parameter.
 #pragma once
 
 #include <vector>
@@ -14,16 +15,18 @@ struct TermSlot {
   TermKind kind = TermKind::kWhiteRate;
   bool shape_free = false;
   double fixed_shape = 0.0;  // used when the kind has a shape and it is not free
+  // Resonances fit their width relative to their natural frequency (width / f_n), so a bound on
+  // the damping is a box; the slot carries it whenever it carries a shape.
 };
 
 struct ModelStructure {
   std::vector<TermSlot> slots;
-  double white_rate_corner_hz = 0.0;
+  double output_quantization_density = 0.0;  // see NoiseModel
 };
 
 int slot_parameter_count(const TermSlot& slot);
 int parameter_count(const ModelStructure& structure);
-// Index of slot i's ln-amplitude in the parameter vector (its ln-shape, if free, follows).
+// Index of slot i's ln-amplitude in the parameter vector (its ln-shapes, if free, follow).
 int parameter_offset(const ModelStructure& structure, int slot_index);
 
 NoiseModel model_from_log_parameters(const ModelStructure& structure,

@@ -12,9 +12,23 @@
 namespace imu_lab {
 namespace identify {
 
+// A disturbance found before the Allan pass (a knock, a spike): its samples were left out and the
+// record split there, so the curves and this fit never saw it; listed so that nothing hides it.
+struct ReportEvent {
+  double onset_s = 0.0;         // first sample over the screen's threshold, from the first stamp
+  double window_start_s = 0.0;  // the samples left out, from the first stamp
+  double window_end_s = 0.0;
+  std::string peak_channel;  // "accel_z", ...
+  double peak_sigma = 0.0;   // signed, in the channel's robust scales
+  long long dropped_samples = 0;
+};
+
 struct ReportMetadata {
   std::string source;  // bag or file the curves came from
   double update_rate_hz = 0.0;  // measured
+  bool events_screened = false;  // whether a screen looked for events at all
+  long long event_count = 0;     // all events (the list may be truncated)
+  std::vector<ReportEvent> events;
 };
 
 // Key of a parameter in the report: "<symbol>_<unit>" (e.g. "N_deg_per_sqrt_h"), with suffix

@@ -17,13 +17,17 @@ struct PartialCurves {
   std::vector<double> total_deviation;
   std::vector<std::string> term_names;               // FitResult::model order
   std::vector<std::vector<double>> term_deviations;  // [term][tau]
+  // The 95 % band the fit was checked against (fit_result.h BandPoint), NaN where not checked.
+  std::vector<double> band_lower_deviation;
+  std::vector<double> band_upper_deviation;
 };
 
 PartialCurves partial_curves(const FitResult& fit,
                              const std::vector<allan::StabilityPoint>& measured);
 
 // CSV, unit in every column name (rate_unit_key: "rad_s" or "m_s2"):
-//   tau_s,measured_dev_<unit>,fit_total_dev_<unit>,<term>_dev_<unit>,...
+//   tau_s,measured_dev_<unit>,fit_total_dev_<unit>,<term>_dev_<unit>,...,band95_low_<unit>,band95_high_<unit>
+// with the output's quantization as a term ("output_quantization") when the fit had an LSB.
 std::string format_partial_curves_csv(const PartialCurves& curves,
                                       const std::string& rate_unit_key);
 // Written atomically (common/atomic_file.h).

@@ -1,6 +1,6 @@
-// One-sided profile-likelihood upper bound of a term's amplitude: the amplitude at which the
-// best fit with that amplitude held fixed (all other parameters free) is worse than the best
-// fit by chi2_1(2 confidence - 1) / 2 in log-likelihood (e.g. 2.71 / 2 for 95 %).
+// One-sided profile bound of a term's amplitude: the amplitude at which the best fit with that
+// amplitude held fixed (all other parameters free) has a GMM distance larger than the best fit's
+// by chi2_1(2 confidence - 1) (e.g. 2.71 for 95 %): the distance plays the role of -2 log L.
 #pragma once
 
 #include <vector>
@@ -15,14 +15,13 @@ namespace identify {
 // slot_index's amplitude bound for the fitted (structure, log_parameters, best_cost). For an
 // absent term, first append its slot with a negligible amplitude (append_negligible_slot).
 double profile_upper_bound(const std::vector<FitPoint>& points, const ModelStructure& structure,
-                           const std::vector<double>& log_parameters, double best_cost,
-                           int slot_index, const DataSpan& span, const SolverSettings& settings,
-                           double confidence);
+                           const std::vector<double>& log_parameters, double best_cost, int slot_index,
+                           const DataSpan& span, const MomentWeights& weights, double confidence);
 
 // Appends `slot` (its shape fixed) with an amplitude far below its envelope, so the fit is
 // unchanged. Throws std::invalid_argument for a slot with a free shape.
-void append_negligible_slot(const std::vector<FitPoint>& points, const TermSlot& slot,
-                            ModelStructure* structure, std::vector<double>* log_parameters);
+void append_negligible_slot(const std::vector<FitPoint>& points, const TermSlot& slot, ModelStructure* structure,
+                            std::vector<double>* log_parameters);
 
 }  // namespace identify
 }  // namespace imu_lab

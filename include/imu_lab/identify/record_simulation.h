@@ -11,9 +11,10 @@
 namespace imu_lab {
 namespace identify {
 
-// The emulator's parameter set for each term. Bias instability is realised by the emulator's
-// flicker bank over [max(1 / f0, tau0), record_length_s]; its low-passed white noise uses the
-// model's white_rate_corner_hz as the emulator's bandwidth.
+// The emulator's parameter set for each term, and a white one for the output's quantization.
+// Bias instability is realised by the emulator's flicker bank over [max(1 / f0, tau0),
+// record_length_s]; white noise behind a front end is the Markov process it is exactly.
+// Throws std::invalid_argument for a term the emulator cannot generate.
 std::vector<noise::ProcessParameters> emulator_processes(const NoiseModel& model, double tau0_s,
                                                          double record_length_s);
 

@@ -15,9 +15,17 @@
 //  - vertical channel feedback (vertical_channel.h);
 //  - attitude: q(k) = exp(-zeta) q(k-1) exp(phi), zeta evaluated at mid-interval, normalised.
 // Not valid within a few metres of the poles (ENU and longitude are singular there).
+//
+// The navigator checks its own state after every step (stateProblem): NaN/Inf anywhere, a latitude
+// at or beyond a pole, or a height beyond +-1000 km (kMaxAbsoluteHeight_m) means the input was
+// absurd (units, a wild sample) or the free vertical channel has run away; update() then throws
+// UnusableStateError and the navigator stops until initialise() is called again.
 #pragma once
 
 #include <Eigen/Core>
+#include <string>
+
+#include "imu_lab/common/config_error.h"
 
 #include "imu_lab/nav/coning_sculling.h"
 #include "imu_lab/nav/earth_model.h"
@@ -27,6 +35,20 @@
 
 namespace imu_lab {
 namespace nav {
+
+// Beyond this height no vehicle the navigator serves can be, and normal gravity's height
+// correction (earth_model.h, second order in h / a) is no longer a model of anything.
+constexpr double kMaxAbsoluteHeight_m = 1.0e6;
+
+// Why a state cannot be navigated from or published (empty when it can): NaN/Inf in any field or
+// a zero quaternion, a latitude not strictly between the poles, |height| > kMaxAbsoluteHeight_m.
+std::string stateProblem(const NavState& state);
+
+// The step that made the state unusable: bad data, so an InputError.
+class UnusableStateError : public InputError {
+ public:
+  using InputError::InputError;
+};
 
 struct NavigatorConfig {
   EarthModelConfig earth;
@@ -39,11 +61,14 @@ class Navigator {
   explicit Navigator(const NavigatorConfig& config = NavigatorConfig());
 
   // Starts (or restarts) navigation from a known state; forgets the previous increment.
+  // Throws InputError naming the problem for a state stateProblem() refuses.
   void initialise(const NavState& initial_state);
   bool initialised() const { return initialised_; }
 
   // One IMU interval: increments in the body frame; stamp advances by dt_s.
-  // Throws std::logic_error before initialise(), InputError for a bad increment.
+  // Throws std::logic_error before initialise(), InputError for a bad increment, and
+  // UnusableStateError when the new state is unusable (stateProblem); then state() keeps the last
+  // usable state and initialised() is false until the next initialise().
   const NavState& update(const Eigen::Vector3d& delta_angle_rad,
                          const Eigen::Vector3d& delta_velocity_m_s, double dt_s);
   const NavState& update(const ImuIncrement& increment);

@@ -5,7 +5,8 @@
 //   var I = q^2 h^3 g3(u),   g3(u) = (2u - 3 + 4 e^{-u} - e^{-2u}) / (2 u^3)
 //   cov   = q^2 h^2 (1 - e^{-u})^2 / (2 u^2).
 // lambda = 0 is the random walk (all factors take their limits 1, 1, 1/3, 1/2). One propagator
-// serves Markov noise, rate random walk, the flicker bank and band-limited white noise.
+// serves Markov noise, rate random walk, the flicker bank, band-limited white noise and the
+// Markov angle of high-pass white noise.
 #pragma once
 
 namespace imu_lab {
@@ -22,6 +23,8 @@ class IntegratedGaussMarkov {
   // Advances `state` by one interval of length interval_s using two independent standard
   // normals and returns the exact integral of the state over the interval.
   double advance(double& state, double interval_s, double normal_1, double normal_2);
+  // Advances `state` alone (its exact AR(1) step) with one standard normal.
+  void advance_state(double& state, double interval_s, double normal);
 
   double decay_rate_per_s() const { return decay_rate_per_s_; }
   double drive_density() const { return drive_density_; }

@@ -56,18 +56,47 @@ struct WhiteAngleParameters {
   double density_per_sqrt_hz = 0.0;   // sqrt(Q' tau0'^2) of seed 003 [v/sqrt(Hz)]
 };
 
-// Seed 003 table 7.1 family, rate PSD alpha |f|^n exp(-beta |f|). Only n = 2 is generated
-// (angle = stationary process with PSD alpha/(4 pi^2) exp(-beta |f|)); see zero_dc_noise.h.
+// Krobka's zero-at-DC families (ICINS 2015, section 7; doc/noise_families.md), each generated
+// as the derivative of a stationary angle (zero_dc_noise.h). Rate PSD
+//   alpha |f|^n exp(-beta |f|) (1 + cosine_weight cos(cosine_s |f|)),  real n > 1,
+// the exponential row of table 7.1 and, with cosine_weight != 0, its cosine row (|weight| <= 1
+// keeps the PSD non-negative; the cosine row alone is not a PSD).
 struct ZeroDcFamilyParameters {
-  int exponent_n = 2;
+  double exponent_n = 2.0;
   double alpha = 0.0;   // [u^2 / Hz^(n+1)]
   double beta_s = 0.0;  // [s]
+  double cosine_s = 0.0;       // c [s]
+  double cosine_weight = 0.0;  // w, |w| <= 1
+};
+
+// Rate PSD alpha |f|^n exp(-beta f^2), real n > 1 (table 7.1 row 2; n = 3 is the Dawson row).
+struct ZeroDcGaussianParameters {
+  double exponent_n = 2.0;
+  double alpha = 0.0;    // [u^2 / Hz^(n+1)]
+  double beta_s2 = 0.0;  // [s^2]
+};
+
+// Table 7.3, rate PSD alpha f^2 / (beta^2 + f^2): white rate noise N = sqrt(alpha) through a
+// first-order high-pass with corner beta (AC coupling); generated exactly.
+struct HighPassWhiteParameters {
+  double density_per_sqrt_hz = 0.0;  // N = sqrt(alpha) [u/sqrt(Hz)]
+  double corner_frequency_hz = 0.0;  // beta
+};
+
+// Damped second-order band-pass resonance (a mechanical mode): rate y = dz/dt with
+// z'' + 2 zeta w_n z' + w_n^2 z = white, RMS rate `rms`, natural frequency f_n = w_n / 2 pi and
+// -3 dB width 2 zeta f_n (< 2 f_n: underdamped). Generated exactly (resonance_noise.h).
+struct ResonanceParameters {
+  double rms = 0.0;  // [u]
+  double natural_frequency_hz = 0.0;
+  double width_hz = 0.0;
 };
 
 using ProcessParameters =
     std::variant<WhiteRateParameters, BiasInstabilityParameters, RandomWalkParameters,
                  RateRampParameters, MarkovParameters, SinusoidParameters, WhiteAngleParameters,
-                 ZeroDcFamilyParameters>;
+                 ZeroDcFamilyParameters, ResonanceParameters, HighPassWhiteParameters,
+                 ZeroDcGaussianParameters>;
 
 // Short stable name ("white_rate", "markov", ...): used in RNG stream seeds and reports.
 std::string process_kind(const ProcessParameters& parameters);

@@ -6,7 +6,12 @@
 // Publishes every publish_period_s (wall clock) once warmed up: allan/gyro and allan/accel
 //   (imu_lab/AllanDeviation), one message per statistic in `statistics`; /diagnostics (input
 //   rate from stamps against expected_rate_hz, gaps, NaN/Inf samples, duplicate and out-of-order
-//   stamps: input_health.h; the engine's tau0 and jitter).
+//   stamps: input_health.h; knocks and spikes the impulse screen found (a warning, counted); the
+//   engine's tau0 and jitter).
+// Between the input and the engine sits the impulse screen (impulse_screen.h, unless
+//   impulse_screen is false): it delays the input by about guard_before_s + merge_gap_s (1.25 s),
+//   and the samples of each knock or spike never reach the engine, which splits the run there.
+//   The report's allan_summary.yaml lists the events and each channel's output step (LSB).
 //   allan/noise (imu_lab/NoiseParameters, latched): the identified noise model, after each report.
 // Service: ~write_report (std_srvs/Trigger): the allan tool's report files (allan_report.h) in
 //   report_dir, with the noise identification (allan_noise_report.h) unless identify is false;
@@ -28,6 +33,8 @@
 #include <mutex>
 #include <optional>
 
+#include "imu_lab/allan/impulse_screen.h"
+#include "imu_lab/allan/output_step.h"
 #include "imu_lab/allan/streaming_allan.h"
 #include "imu_lab/ros/allan_monitor_settings.h"
 #include "imu_lab/ros/input_health.h"
@@ -50,6 +57,17 @@ class AllanMonitorNode {
   void on_increment(const imu_lab::ImuIncrement::ConstPtr& message);
   // incomplete: the record when it lacks a triad (covariance[0] = -1), for the diagnostics.
   void add(const AllanSample& sample, const std_msgs::Header& header, const ImuRecord* incomplete);
+  void push_screened();  // what the screen passed, into the engine
+  // The curves and the screen's report as they would end if the input ended now: the samples the
+  // screen still holds go through a copy of it into a copy of the engine, so that what is
+  // published and reported covers every sample received.
+  struct Current {
+    bool warmed_up = false;
+    std::int64_t samples = 0;
+    allan::StreamingSnapshot snapshot;
+    allan::ImpulseScreenReport impulses;
+  };
+  Current current() const;
   void publish_curves();
   void save_checkpoint();
   bool on_write_report(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
@@ -59,6 +77,11 @@ class AllanMonitorNode {
   std::mutex mutex_;  // a nodelet may run the callbacks on several threads
   AllanMonitorSettings settings_;
   std::unique_ptr<allan::StreamingAllan> engine_;
+  allan::ImpulseScreen screen_;
+  allan::ScreenedSamples screened_;
+  allan::OutputStepDetector output_steps_;
+  std::int64_t counted_impulse_events_ = 0;
+  std::size_t impulse_condition_ = 0;
   std::optional<std::int64_t> resume_after_stamp_ns_;
   std::int64_t skipped_before_checkpoint_ = 0;
   std::optional<allan::StreamingSnapshot> latest_snapshot_;

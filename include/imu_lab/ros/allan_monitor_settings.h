@@ -7,6 +7,8 @@
 //   the engine's (streaming_options.h): points_per_decade (10), max_tau_s (1e4),
 //   exact_max_averaging_factor (1000), confidence (0.683), warm_up_sample_count (1000),
 //   gap_factor (1.5). Gaps always split and pool: a live node never stops on bad stamps.
+//   impulse_screen (true: knocks and spikes are reported and their samples kept from the engine,
+//   impulse_screen.h), impulse_threshold_sigma (12).
 #pragma once
 
 #include <ros/node_handle.h>
@@ -15,6 +17,7 @@
 #include <vector>
 
 #include "imu_lab/allan/batch.h"
+#include "imu_lab/allan/impulse_screen.h"
 #include "imu_lab/allan/streaming_options.h"
 #include "imu_lab/ros/allan_noise_report.h"
 #include "imu_lab/ros/allan_samples.h"
@@ -34,6 +37,7 @@ struct AllanMonitorSettings {
   int queue_size = 20000;
   AllanIdentifyOptions identify;
   allan::StreamingOptions engine;
+  allan::ImpulseScreenOptions screen;  // channel_count and gap_factor follow the engine's
 };
 
 // Throws ConfigError naming the parameter that is wrong.

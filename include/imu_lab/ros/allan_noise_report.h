@@ -22,7 +22,7 @@ namespace ros_io {
 struct AllanIdentifyOptions {
   bool enabled = true;
   identify::FitOptions fit;
-  // 0: sigmas from the Ceres covariance (fast). >= 2: parametric bootstrap with this many
+  // 0: sigmas from the fit's moment covariance (fast). >= 2: parametric bootstrap with this many
   // replicas per axis (slow: each replica is a simulated record and a refit).
   int bootstrap_replicas = 0;
   std::uint64_t bootstrap_seed = 1;

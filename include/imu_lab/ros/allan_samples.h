@@ -30,6 +30,8 @@ constexpr std::array<const char*, kAllanChannelCount> kAllanChannelNames = {"gyr
                                                                             "accel_x", "accel_y", "accel_z"};
 constexpr std::array<const char*, kAllanChannelCount> kAllanChannelUnits = {"rad_s", "rad_s", "rad_s",
                                                                             "m_s2",  "m_s2",  "m_s2"};
+// The unit of one pushed value: a rate's (kAllanChannelUnits) or an increment's (rad, m_s).
+const char* allan_value_unit(AllanInput input, std::size_t channel);
 
 struct AllanSample {
   std::int64_t stamp_ns = 0;

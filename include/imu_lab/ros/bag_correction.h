@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "imu_lab/calib/imu_calibration.h"
+#include "imu_lab/ros/imu_bag_reader.h"
 #include "imu_lab/thermal/thermal_model.h"
 
 namespace imu_lab {
@@ -42,7 +43,7 @@ struct BagCorrectionSummary {
 // Writes out_bag_path atomically (nothing there on any failure). Throws InputError naming the bag
 // and what to do: unreadable bag, missing or wrong topic, missing temperature for a thermal
 // model, NaN/Inf or unordered IMU samples or temperatures, no sample corrected at all.
-BagCorrectionSummary correct_bag(const std::string& bag_path, const std::string& out_bag_path,
+BagCorrectionSummary correct_bag(const BagRecording& recording, const std::string& out_bag_path,
                                  const BagCorrectionOptions& options);
 
 }  // namespace ros_io

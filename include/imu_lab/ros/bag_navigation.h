@@ -42,11 +42,14 @@ struct BagNavigationResult {
 // Throws InputError naming the bag when it cannot be read, has no suitable topic, is damaged, or
 // ends before the navigation starts (too short for the alignment, or an alignment that failed).
 // Bad samples are skipped and counted, as in the node; callers decide whether that is fatal.
-BagNavigationResult navigate_bag(const std::string& bag_path, const BagNavigationOptions& options,
+BagNavigationResult navigate_bag(const BagRecording& recording, const BagNavigationOptions& options,
                                  const NavigationSettings& settings);
 
-// The first truth sample of the bag, if it has the truth topic (e.g. for the initial position).
-std::optional<TruthRecord> first_truth(const std::string& bag_path, const std::string& truth_topic);
+// The truth where a run starts: the sample at the stamp of the input topic's first sample with
+// finite values (where NavigationSession starts a run without alignment), if the bag has the
+// truth topic. Throws InputError naming the bag when it has the truth topic but no sample at that
+// stamp (a start state from another instant would be wrong by the motion in between).
+std::optional<TruthRecord> truth_at_start(const BagRecording& recording, const BagNavigationOptions& options);
 
 }  // namespace ros_io
 }  // namespace imu_lab

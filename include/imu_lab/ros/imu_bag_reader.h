@@ -1,6 +1,14 @@
 // Streams sensor_msgs/Imu messages out of a bag without loading it whole. Shared by every
 // offline tool, so each reports a missing topic, a wrong message type or a corrupt bag the
 // same clear way (imu_lab::InputError naming the bag and what to do).
+//
+// A recording may be one bag or the files `rosbag record --split` cut it into (BagRecording):
+// the files are read one after the other in stamp order, whatever order they are named in, as
+// one stream; the time between one file's last stamp and the next file's first is whatever the
+// recorder lost there, which the consumers treat like any other gap in the stamps (the Allan
+// engine's split-and-pool policy) and which is reported (OpenBag::joins). Files whose recording
+// times overlap, or whose header stamps do not follow on across a join, are refused naming both
+// files. See doc/recordings.md.
 #pragma once
 
 #include <Eigen/Core>
@@ -11,8 +19,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rosbag {
@@ -65,21 +75,60 @@ struct TemperatureRecord {
 struct TopicInfo {
   std::string name;
   std::string datatype;
-  std::size_t message_count = 0;
+  std::size_t message_count = 0;  // over every file of the recording, whatever the window
 };
 
-// A bag opened once for several questions. Opening reads the bag's whole index (about 70 bytes of
-// memory and a good part of the read time per message), so a tool that lists the topics, counts
-// one and streams it should do all three on one OpenBag. Not thread-safe: one thread at a time.
+// The part of a recording to use, in seconds from the first header stamp of the topic read
+// (e.g. leave out a warm-up with start_s); both ends included.
+struct TimeWindow {
+  double start_s = 0.0;
+  double end_s = std::numeric_limits<double>::infinity();
+  bool is_whole() const { return start_s <= 0.0 && end_s == std::numeric_limits<double>::infinity(); }
+};
+// Empty if usable, otherwise why not (start negative or not finite, end not after start).
+std::string time_window_problem(const TimeWindow& window);
+// "whole recording" or "from 600 s to 3600 s after the first stamp".
+std::string describe_time_window(const TimeWindow& window);
+
+// One recording: a bag, or the split files of one (read in stamp order), and the window to read.
+struct BagRecording {
+  BagRecording(const std::string& path) : paths{path} {}  // NOLINT: a bag is a recording
+  BagRecording(const char* path) : paths{path} {}         // NOLINT
+  BagRecording(std::vector<std::string> file_paths, TimeWindow time_window = TimeWindow())
+      : paths(std::move(file_paths)), window(time_window) {}
+  std::vector<std::string> paths;
+  TimeWindow window;
+  // How messages name the recording: the path, or "a.bag (+ 2 split files)".
+  std::string name() const;
+  BagRecording whole() const { return BagRecording(paths); }  // the same files without the window
+};
+
+// Where one file of a recording hands over to the next, on the topic last streamed.
+struct FileJoin {
+  std::string before_path, after_path;
+  double gap_s = 0.0;  // after's first header stamp minus before's last
+};
+
+// A recording opened once for several questions. Opening reads each bag's whole index (about 70
+// bytes of memory and a good part of the read time per message), so a tool that lists the topics,
+// counts one and streams it should do all three on one OpenBag. Not thread-safe: one thread at a
+// time. The for_each_* calls stream the recording's window only, and return how many messages
+// they handed over.
 class OpenBag {
  public:
-  // Throws InputError if the bag cannot be read.
-  explicit OpenBag(const std::string& bag_path);
+  // Throws InputError if a bag cannot be read, if no bag is named, or if two files' recording
+  // (receive) times overlap, naming both; ConfigError for an unusable window.
+  explicit OpenBag(const BagRecording& recording);
   ~OpenBag();
   OpenBag(const OpenBag&) = delete;
   OpenBag& operator=(const OpenBag&) = delete;
 
+  // The recording's name for messages (BagRecording::name).
   const std::string& path() const { return path_; }
+  // The files in the order they are read (stamp order).
+  std::vector<std::string> ordered_paths() const;
+  // The joins between files met by the last for_each_* call (empty for one bag).
+  const std::vector<FileJoin>& joins() const { return joins_; }
   std::vector<TopicInfo> topics() const;
   // As the free choose_topic below, with the topic's type and message count.
   TopicInfo choose_topic(const std::string& requested, const std::string& datatype) const;
@@ -87,38 +136,51 @@ class OpenBag {
   std::size_t for_each_imu(const std::string& topic, const std::function<void(const ImuRecord&)>& on_record);
   std::size_t for_each_increment(const std::string& topic,
                                  const std::function<void(const IncrementRecord&)>& on_record);
+  std::size_t for_each_truth(const std::string& topic, const std::function<void(const TruthRecord&)>& on_record);
+  std::size_t for_each_temperature(const std::string& topic,
+                                   const std::function<void(const TemperatureRecord&)>& on_record);
   // Every message of every topic in bag (receive-time) order, as rosbag play sends them, for a
   // tool that rewrites a bag; a truncated or corrupt bag -> InputError as above.
   std::size_t for_each_message_in_order(const std::function<void(const rosbag::MessageInstance&)>& on_message);
 
  private:
+  struct File;
+  template <class Message>
+  std::size_t stream(const std::string& topic, const std::string& datatype,
+                     const std::function<void(const Message&)>& on_message);
+
   std::string path_;
-  std::unique_ptr<rosbag::Bag> bag_;
+  TimeWindow window_;
+  std::vector<std::unique_ptr<File>> files_;  // in stamp order
+  std::vector<FileJoin> joins_;
 };
+
+// "joins between split files: a.bag -> b.bag 0.01 s, ..." (empty for none).
+std::string describe_joins(const std::vector<FileJoin>& joins);
 
 // The records of one message, as the readers below give them; live nodes use the same conversion.
 ImuRecord to_imu_record(const sensor_msgs::Imu& message);
 IncrementRecord to_increment_record(const imu_lab::ImuIncrement& message);
 
 // All topics of a bag with their types and counts. Throws InputError if the bag cannot be read.
-std::vector<TopicInfo> list_topics(const std::string& bag_path);
+std::vector<TopicInfo> list_topics(const BagRecording& recording);
 
 // The IMU topic to read: `requested` if given (checked to exist and to be sensor_msgs/Imu),
 // otherwise the only sensor_msgs/Imu topic; several candidates or none -> InputError listing them.
-std::string choose_imu_topic(const std::string& bag_path, const std::string& requested);
+std::string choose_imu_topic(const BagRecording& recording, const std::string& requested);
 // The same for any message type, e.g. "imu_lab/ImuIncrement".
-std::string choose_topic(const std::string& bag_path, const std::string& requested, const std::string& datatype);
+std::string choose_topic(const BagRecording& recording, const std::string& requested, const std::string& datatype);
 
 // Calls `on_record` for each message of `topic` in bag order. Returns the number of messages.
 // A bag that ends early (truncated, unindexed) or whose chunks are corrupt -> InputError.
-std::size_t for_each_imu(const std::string& bag_path, const std::string& topic,
+std::size_t for_each_imu(const BagRecording& recording, const std::string& topic,
                          const std::function<void(const ImuRecord&)>& on_record);
 // The same for imu_lab/ImuIncrement and imu_lab/ImuTruth topics.
-std::size_t for_each_increment(const std::string& bag_path, const std::string& topic,
+std::size_t for_each_increment(const BagRecording& recording, const std::string& topic,
                                const std::function<void(const IncrementRecord&)>& on_record);
-std::size_t for_each_truth(const std::string& bag_path, const std::string& topic,
+std::size_t for_each_truth(const BagRecording& recording, const std::string& topic,
                            const std::function<void(const TruthRecord&)>& on_record);
-std::size_t for_each_temperature(const std::string& bag_path, const std::string& topic,
+std::size_t for_each_temperature(const BagRecording& recording, const std::string& topic,
                                  const std::function<void(const TemperatureRecord&)>& on_record);
 
 }  // namespace ros_io

@@ -8,6 +8,7 @@
 
 #include "imu_lab/io/csv_imu_export.h"
 #include "imu_lab/io/csv_imu_import.h"
+#include "imu_lab/ros/imu_bag_reader.h"
 
 namespace imu_lab {
 namespace ros_io {
@@ -46,7 +47,7 @@ struct CsvExportReport {
 };
 
 // Reads the IMU topic (and the temperature readings at the same header stamps) into csv_path.
-CsvExportReport export_bag_to_csv(const std::string& bag_path, const CsvExportRequest& request,
+CsvExportReport export_bag_to_csv(const BagRecording& recording, const CsvExportRequest& request,
                                   const std::string& csv_path);
 
 }  // namespace ros_io

@@ -1,4 +1,4 @@
-// One strapdown run over a stream of IMU samples: static alignment (or a given attitude), then
+// One strapdown run over a stream of IMU samples: static alignment (or a given state), then
 // navigation, with the input checks a live node needs. The strapdown_navigator node and the
 // navigate tool both feed it, so they give the same solution on the same data.
 //
@@ -6,6 +6,15 @@
 // between consecutive header stamps) or the sensor's own increments (imu_lab/ImuIncrement).
 // Stamps are header stamps in integer nanoseconds (a double near 1e9 s would put ~0.1 us of false
 // jitter into every interval, i.e. ~20 ppm of scale-factor noise at 200 Hz).
+//
+// Without alignment the given state (settings: attitude, velocity, position) is the state at the
+// first sample's stamp, with either input: a rate sample only starts the first interval, and the
+// first increment, which covers the interval ending there, is not integrated either.
+//
+// The navigator checks its state after every step (nav::stateProblem): when it becomes unusable
+// (NaN/Inf, |height| > 1000 km, ...) the session stops (kDiverged, then kHalted for every sample),
+// keeps the last usable solution and the stamp and reason (divergence()), and starts again from
+// scratch only when reinitialise() is called.
 //
 // Bad samples never stop the run; they are skipped and counted:
 //  - NaN/Inf values or a non-positive interval_s: skipped; its stamp still ends the interval,
@@ -38,6 +47,8 @@ enum class SampleOutcome {
   kSkippedUnordered,  // stamp not after the previous one
   kSkippedGap,        // rate sample after a gap
   kAlignmentFailed,   // alignment could not resolve an attitude; it starts again
+  kDiverged,          // this sample made the navigation state unusable: navigation stopped
+  kHalted,            // ignored: navigation stopped at a divergence, waiting for reinitialise()
 };
 
 // True for the outcomes that skip the sample (for logging and diagnostics).
@@ -49,6 +60,15 @@ struct InputCounters {
   std::uint64_t unordered = 0;  // duplicate or out-of-order stamps
   std::uint64_t gaps = 0;       // intervals over gap_factor typical intervals
   std::uint64_t failed_alignments = 0;
+  std::uint64_t halted = 0;         // samples ignored after a divergence
+  std::uint64_t divergences = 0;
+  std::uint64_t reinitialisations = 0;
+};
+
+// Where and why the navigation state became unusable.
+struct Divergence {
+  std::int64_t stamp_ns = 0;  // the sample whose step made it unusable
+  std::string problem;
 };
 
 struct AlignmentResult {
@@ -61,7 +81,7 @@ struct AlignmentResult {
   Eigen::Vector3d mean_specific_force_m_s2 = Eigen::Vector3d::Zero();
   // 1-sigma error of the small rotation (east tilt, north tilt, heading; alignment_error_budget.h)
   // predicted from the settings' expected sensor errors; NaN where the method does not estimate
-  // that angle (a given heading or attitude).
+  // that angle (a given heading or attitude) and everywhere when no expected errors were given.
   Eigen::Vector3d predicted_error_sigma_rad = Eigen::Vector3d::Zero();
 };
 
@@ -77,9 +97,16 @@ class NavigationSession {
   SampleOutcome add_increment(std::int64_t stamp_ns, const nav::ImuIncrement& increment);
 
   bool navigating() const { return navigator_.initialised(); }
+  // The navigation stopped at a divergence (until reinitialise()).
+  bool halted() const { return divergence_.has_value(); }
+  const std::optional<Divergence>& divergence() const { return divergence_; }
+  // Starts over as a new session would (alignment or the given state at the next sample's stamp);
+  // the counters carry on.
+  void reinitialise();
   // Whether the last add_* produced a solution to publish (navigation started or advanced).
   bool new_solution() const { return new_solution_; }
-  // The latest solution (valid while navigating()) and its stamp.
+  // The latest solution (valid while navigating(), and the last usable one after a divergence)
+  // and its stamp.
   const nav::NavState& state() const { return navigator_.state(); }
   std::int64_t stamp_ns() const { return last_stamp_ns_; }
   // Angular rate of the body relative to the ENU frame, body axes, over the last interval.
@@ -94,9 +121,10 @@ class NavigationSession {
   void set_reference_height(double reference_height_m) { navigator_.setReferenceHeight(reference_height_m); }
 
  private:
-  // Resets the per-sample flags; false (counted) for a stamp not after the previous one, else the
+  // Resets the per-sample flags. Returns the outcome (counted) of a sample that goes no further: a
+  // halted session's, or one whose stamp is not after the previous one; otherwise sets the
   // interval's start (none for the first sample) and this stamp becomes the previous one.
-  bool begin_sample(std::int64_t stamp_ns, std::optional<std::int64_t>& interval_start_ns);
+  std::optional<SampleOutcome> begin_sample(std::int64_t stamp_ns, std::optional<std::int64_t>& interval_start_ns);
   SampleOutcome skip(SampleOutcome outcome, std::uint64_t& counter, const std::string& problem);
   SampleOutcome integrate(std::int64_t stamp_ns, const nav::ImuIncrement& increment);
   SampleOutcome finish_alignment(std::int64_t stamp_ns);
@@ -107,6 +135,7 @@ class NavigationSession {
   nav::StaticAligner aligner_;
   nav::Navigator navigator_;
   std::optional<AlignmentResult> alignment_;
+  std::optional<Divergence> divergence_;
   InputCounters counters_;
   std::string last_problem_;
   std::optional<std::int64_t> previous_stamp_ns_;

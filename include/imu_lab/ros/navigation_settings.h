@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <optional>
 #include <string>
 
 #include "imu_lab/nav/navigator.h"
@@ -17,6 +18,8 @@ namespace ros_io {
 constexpr double kDegToRad = M_PI / 180.0;
 
 // A priori sensor errors, used only to predict the alignment errors reported with the result.
+// Zero is a value (an error-free sensor); not giving them at all (std::nullopt in the settings)
+// means no prediction.
 struct ExpectedSensorErrors {
   double gyro_bias_rad_s = 0.0;           // per axis, 1 sigma
   double accel_bias_m_s2 = 0.0;           // per axis, 1 sigma
@@ -25,13 +28,18 @@ struct ExpectedSensorErrors {
 };
 
 struct NavigationSettings {
-  // Static alignment first (levelling, heading from gyrocompassing or given), or start from a
-  // given attitude (align = false: initial roll, pitch and yaw, REP-103 ENU, yaw from east).
+  // Static alignment first (levelling, heading from gyrocompassing or given), starting at rest;
+  // or (align = false) start from a given state at the first sample's stamp: attitude (initial
+  // roll, pitch and yaw, REP-103 ENU, yaw from east; or initial_attitude when set, e.g. the
+  // truth's, which keeps attitudes that Euler angles cannot), velocity and position.
   bool align = true;
   nav::StaticAlignmentConfig alignment;
   double initial_roll_rad = 0.0;
   double initial_pitch_rad = 0.0;
   double initial_yaw_rad = 0.0;
+  std::optional<Eigen::Quaterniond> initial_attitude_body_to_enu;  // align = false only
+  // Velocity relative to the Earth at the start (align = false only; an alignment starts at rest).
+  Eigen::Vector3d initial_velocity_enu_m_s = Eigen::Vector3d::Zero();
   // Initial position (geodetic); also the origin of the published local ENU position.
   double latitude_rad = 0.0;
   double longitude_rad = 0.0;
@@ -40,7 +48,7 @@ struct NavigationSettings {
   // A stamp interval longer than this many times the typical one is a gap: the sample after it is
   // not integrated (its rate says nothing about the missing time).
   double gap_factor = 3.0;
-  ExpectedSensorErrors expected_errors;
+  std::optional<ExpectedSensorErrors> expected_errors;  // none: no predicted alignment error
 };
 
 // Parsers shared by the node's parameters and the tool's options; each throws ConfigError naming
@@ -49,8 +57,9 @@ nav::HeadingSource parse_heading_source(const std::string& key, const std::strin
 nav::EarthModelConfig parse_earth_model(const std::string& key, const std::string& value);
 nav::VerticalChannelMode parse_vertical_channel(const std::string& key, const std::string& value);
 
-// Checks ranges (latitude inside (-90, 90) deg, positive durations, finite angles); throws
-// ConfigError naming the offending key (`source` says where the settings came from).
+// Checks ranges (latitude inside (-90, 90) deg, positive durations, finite angles and velocity, no
+// initial velocity with an alignment); throws ConfigError naming the offending key (`source` says
+// where the settings came from).
 void validate(const NavigationSettings& settings, const std::string& source);
 
 // Roll, pitch, yaw of a body->ENU attitude with q = Rz(yaw) Ry(pitch) Rx(roll), the inverse of

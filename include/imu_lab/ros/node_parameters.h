@@ -17,7 +17,7 @@
 namespace imu_lab {
 namespace ros_io {
 
-// Value: double, int, bool, std::string or std::vector<std::string>.
+// Value: double, int, bool, std::string, std::vector<std::string> or std::vector<double> (ints will do).
 template <class Value>
 Value parameter(const ros::NodeHandle& node, const std::string& name, const Value& fallback);
 

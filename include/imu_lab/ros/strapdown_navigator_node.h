@@ -19,6 +19,11 @@
 //   expected_rate_hz (input_health.h; gap_factor is the navigation's own).
 // Bad input (NaN, gaps, unordered stamps) is skipped, logged (throttled) and counted in the
 // diagnostics (input_health.h); the node keeps running.
+// When the navigation state becomes unusable (NaN/Inf, |height| > 1000 km: nav::stateProblem) the
+// node stops publishing solutions, logs the stamp and reason once and reports them on
+// /diagnostics at ERROR level at every update; it starts again (alignment, or the given initial
+// state at the next sample) only when told to: service ~reinitialise (std_srvs/Trigger), which
+// also works at any other time.
 #pragma once
 
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -27,6 +32,7 @@
 #include <ros/ros.h>
 #include <sensor_msgs/Imu.h>
 #include <std_msgs/Float64.h>
+#include <std_srvs/Trigger.h>
 #include <tf2_ros/transform_broadcaster.h>
 
 #include <memory>
@@ -54,6 +60,7 @@ class StrapdownNavigatorNode {
   void after_sample(SampleOutcome outcome, const ros::Time& stamp);
   void publish_solution();
   void report(diagnostic_updater::DiagnosticStatusWrapper& status);
+  bool on_reinitialise(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
 
   std::mutex mutex_;  // a nodelet may run the callbacks on several threads
   std::unique_ptr<NavigationSession> session_;
@@ -71,6 +78,7 @@ class StrapdownNavigatorNode {
   ros::Publisher odometry_publisher_;
   ros::Publisher path_publisher_;
   ros::Publisher alignment_publisher_;
+  ros::ServiceServer reinitialise_service_;
   tf2_ros::TransformBroadcaster transform_broadcaster_;
   diagnostic_updater::Updater diagnostics_;
   ros::WallTimer diagnostics_timer_;

@@ -33,7 +33,7 @@ class StrictImuCheck {
   bool accept(const ImuRecord& record);
   // Throws the InputError described above if any record was bad, or if a triad the tool can do
   // without is absent from some messages but not all.
-  void throw_if_refused(const std::string& bag_path, const std::string& topic) const;
+  void throw_if_refused(const BagRecording& recording, const std::string& topic) const;
   // After a pass that was not refused: the triads no message carried.
   bool angular_rate_absent_throughout() const { return accepted_ > 0 && absent_rate_ == accepted_; }
   bool specific_force_absent_throughout() const { return accepted_ > 0 && absent_force_ == accepted_; }
@@ -47,7 +47,7 @@ class StrictImuCheck {
 // Calls `on_record` in bag order for each message before the first bad one (so for every message
 // of a good bag), then throws if there was any. Returns the number of messages. `check` (optional)
 // is the check used, for a tool that asks afterwards which triads were absent.
-std::size_t for_each_imu_strictly(const std::string& bag_path, const std::string& topic,
+std::size_t for_each_imu_strictly(const BagRecording& recording, const std::string& topic,
                                   const std::function<void(const ImuRecord&)>& on_record,
                                   StrictImuCheck* check = nullptr);
 

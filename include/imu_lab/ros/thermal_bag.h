@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "imu_lab/ros/imu_bag_reader.h"
 #include "imu_lab/thermal/thermal_windows.h"
 
 namespace imu_lab {
@@ -25,7 +26,7 @@ struct ThermalBagWindows {
 
 // Throws InputError: missing or empty temperature topic (naming what the bag has and what to
 // do), stale temperature, unordered stamps, unreadable bag.
-ThermalBagWindows read_thermal_windows(const std::string& bag_path, const ThermalBagTopics& topics,
+ThermalBagWindows read_thermal_windows(const BagRecording& recording, const ThermalBagTopics& topics,
                                        const thermal::WindowSettings& settings);
 
 }  // namespace ros_io

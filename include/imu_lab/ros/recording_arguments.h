@@ -1,0 +1,35 @@
+// The command-line arguments every bag tool that reads a recording shares: one bag or the split
+// files of one (`rosbag record --split`, read as one recording in stamp order), and for the tools
+// that analyse it, a time window (--start-s, --end-s from the first stamp) to leave out a warm-up.
+// Header-only: CLI11 is the tools' dependency, not the library's. See doc/recordings.md.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+#include "imu_lab/ros/imu_bag_reader.h"
+
+namespace imu_lab {
+namespace ros_io {
+
+struct RecordingArguments {
+  std::vector<std::string> bags;
+  TimeWindow window;
+  BagRecording recording() const { return BagRecording(bags, window); }
+};
+
+inline void add_recording_arguments(CLI::App& app, RecordingArguments& arguments, const std::string& what,
+                                    bool with_window) {
+  app.add_option("bags", arguments.bags,
+                 what + ", or the split files of one recording (several files are read in stamp order as one)")
+      ->required();
+  if (!with_window) return;
+  app.add_option("--start-s", arguments.window.start_s, "use the recording from this many seconds after its first stamp")
+      ->capture_default_str();
+  app.add_option("--end-s", arguments.window.end_s, "... up to this many seconds after its first stamp (default: the end)");
+}
+
+}  // namespace ros_io
+}  // namespace imu_lab

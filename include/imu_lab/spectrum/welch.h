@@ -1,0 +1,38 @@
+// Welch's averaged periodogram (Welch 1967; NIST SP 1065 section 7): the record cut into
+// segments of `segment_length` samples overlapping by half, each detrended by its mean and
+// weighted by a Hann window, the periodograms averaged. One-sided power spectral density in
+// u^2/Hz for a signal in u: white noise of variance s^2 sampled every tau0 has 2 s^2 tau0, so
+// the white rate density N of the Allan variance (AVAR = N^2 / tau) is sqrt(PSD / 2).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace imu_lab {
+namespace spectrum {
+
+struct WelchOptions {
+  std::size_t segment_length = 4096;  // samples per segment; a power of two is fastest
+};
+
+struct PowerSpectrum {
+  std::vector<double> frequency_hz;  // k / (segment_length tau0), k = 0 .. segment_length / 2
+  std::vector<double> density;       // one-sided PSD [u^2/Hz]
+  std::size_t segment_count = 0;
+  double resolution_hz = 0.0;  // bin spacing 1 / (segment_length tau0)
+  // Equivalent degrees of freedom of each bin (away from 0 and Nyquist): 2 K / (1 + 2 c^2) for
+  // K segments, c = 0.167 the correlation of neighbouring Hann segments at 50 % overlap
+  // (Welch 1967): about 1.89 per segment.
+  double degrees_of_freedom = 0.0;
+};
+
+// Throws InputError (common/config_error.h) naming the problem if tau0 is not positive, the
+// segment length is below 8, or the record holds fewer samples than one segment. Values that
+// are not finite are refused too: a spectrum has no gaps.
+PowerSpectrum welch_psd(const std::vector<double>& values, double tau0_s, const WelchOptions& options = {});
+
+// Median of the density over [low_hz, high_hz] (bins inside); NaN when no bin lies there.
+double median_density(const PowerSpectrum& spectrum, double low_hz, double high_hz);
+
+}  // namespace spectrum
+}  // namespace imu_lab

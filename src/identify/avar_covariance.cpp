@@ -1,0 +1,462 @@
+#include "imu_lab/identify/avar_covariance.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "imu_lab/noise/analytic_avar.h"
+
+namespace imu_lab {
+namespace identify {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// u - T (1 - e^{-u/T}) for u >= 0, without the cancellation at u << T.
+double markov_excess(double u, double correlation_time_s) {
+  const double x = u / correlation_time_s;
+  if (x < 1e-3) return correlation_time_s * x * x * (0.5 - x / 6.0 + x * x / 24.0);
+  return u - correlation_time_s * (-std::expm1(-x));
+}
+
+// Six-point Gauss-Legendre nodes and weights on [-1, 1].
+constexpr std::array<double, 6> kGaussNodes = {-0.9324695142031521, -0.6612093864662645, -0.2386191860831969,
+                                               0.2386191860831969,  0.6612093864662645,  0.9324695142031521};
+constexpr std::array<double, 6> kGaussWeights = {0.1713244923791704, 0.3607615730481386, 0.4679139345726910,
+                                                 0.4679139345726910, 0.3607615730481386, 0.1713244923791704};
+
+// Gauss-Legendre points of the integral over [a, b], on sub-intervals that grow geometrically
+// from both ends, where the integrand's kinks and boundary layers (a Markov term's e^{-u/T}) sit.
+template <class Visit>
+void visit_graded_integral(double a, double b, const Visit& visit) {
+  constexpr double kFirstWidth = 8.0;
+  constexpr double kGrowth = 4.0;
+  std::vector<double> edges = {a};
+  const double middle = 0.5 * (a + b);
+  for (double width = kFirstWidth; edges.back() + width < middle; width *= kGrowth) edges.push_back(edges.back() + width);
+  const size_t left_count = edges.size();
+  edges.push_back(middle);
+  for (size_t i = left_count; i-- > 1;) edges.push_back(b - (edges[i] - a));
+  edges.push_back(b);
+  for (size_t i = 0; i + 1 < edges.size(); ++i) {
+    const double half = 0.5 * (edges[i + 1] - edges[i]);
+    if (!(half > 0.0)) continue;
+    const double centre = 0.5 * (edges[i + 1] + edges[i]);
+    for (size_t k = 0; k < kGaussNodes.size(); ++k) visit(centre + half * kGaussNodes[k], half * kGaussWeights[k]);
+  }
+}
+
+// The points and weights of sum_{h = lo}^{hi} f(h) over integers for an f smooth between the
+// given nodes: every lag within half_width of a node (weight 1), the integral (midpoint
+// correspondence) in between.
+template <class Visit>
+void visit_lags(long long lo, long long hi, std::vector<long long> nodes, long long half_width, const Visit& visit) {
+  nodes.push_back(lo);
+  nodes.push_back(hi);
+  std::vector<std::pair<long long, long long>> windows;
+  for (long long node : nodes) {
+    const long long first = std::max(lo, node - half_width);
+    const long long last = std::min(hi, node + half_width);
+    if (first <= last) windows.push_back({first, last});
+  }
+  std::sort(windows.begin(), windows.end());
+  std::vector<std::pair<long long, long long>> merged;
+  for (const auto& window : windows) {
+    if (!merged.empty() && window.first <= merged.back().second + 1) {
+      merged.back().second = std::max(merged.back().second, window.second);
+    } else {
+      merged.push_back(window);
+    }
+  }
+  for (size_t i = 0; i < merged.size(); ++i) {
+    for (long long h = merged[i].first; h <= merged[i].second; ++h) visit(static_cast<double>(h), 1.0);
+    if (i + 1 < merged.size() && merged[i + 1].first - merged[i].second > 1) {
+      visit_graded_integral(merged[i].second + 0.5, merged[i + 1].first - 0.5, visit);
+    }
+  }
+}
+
+// Everything one pair (m, n) needs: the lag range, the offsets of C_mn and the count of pairs.
+struct PairGeometry {
+  long long terms_m = 0;  // M_m
+  long long terms_n = 0;
+  std::array<double, 9> offsets{};  // j n - i m
+  std::array<double, 9> weights{};  // w_i w_j
+  double scale = 0.0;               // -1 / (4 m n tau0^2)
+
+  PairGeometry(int m, int n, double tau0_s, long long sample_count)
+      : terms_m(sample_count + 1 - 2LL * m), terms_n(sample_count + 1 - 2LL * n) {
+    constexpr std::array<double, 3> kWeights = {1.0, -2.0, 1.0};
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        offsets[3 * i + j] = static_cast<double>(j) * n - static_cast<double>(i) * m;
+        weights[3 * i + j] = kWeights[i] * kWeights[j];
+      }
+    }
+    scale = -1.0 / (4.0 * static_cast<double>(m) * n * tau0_s * tau0_s);
+  }
+  long long lowest_lag() const { return -(terms_m - 1); }
+  long long highest_lag() const { return terms_n - 1; }
+  double count(double h) const {
+    return std::max(0.0, std::min<double>(terms_m - 1, terms_n - 1 - h) - std::max(0.0, -h) + 1.0);
+  }
+  std::vector<long long> nodes() const {
+    std::vector<long long> result = {0, terms_n - terms_m};
+    for (double offset : offsets) result.push_back(static_cast<long long>(-offset));
+    return result;
+  }
+  // 2 / (M_m M_n): the factor in front of the lag sum.
+  double normaliser() const { return 2.0 / (static_cast<double>(terms_m) * static_cast<double>(terms_n)); }
+};
+
+void check_factor(int m, long long sample_count) {
+  if (m < 1 || 2LL * m > sample_count - 1) {
+    throw std::invalid_argument("oavar_covariance: averaging factor " + std::to_string(m) +
+                                " outside [1, (samples - 1) / 2] for " + std::to_string(sample_count) + " samples");
+  }
+}
+
+// How far, in lags, the terms' correlations reach beyond a filter's own span, and how many lags
+// around each kink must be summed exactly (a resonance oscillates every few lags; seven decay
+// times leave e^-7 of it to the quadrature between the windows).
+struct LagReach {
+  double tail_lags = 0.0;
+  long long exact_half_width = 8;
+  // Above this averaging factor the oscillating terms have decayed within a small part of each
+  // filter's span and hold a negligible share of its variance: the default window suffices.
+  double oscillation_factor_limit = 0.0;
+};
+
+double decay_time_s(const Term& term) {
+  switch (term.kind) {
+    case TermKind::kMarkov:
+    case TermKind::kZeroDcFamily:
+      return term.shape;
+    case TermKind::kWhiteRate:
+      return term.shape > 0.0 ? 1.0 / (2.0 * kPi * term.shape) : 0.0;
+    case TermKind::kResonance:
+      return 1.0 / (kPi * term.width);
+    default:
+      return 0.0;
+  }
+}
+
+LagReach lag_reach(const std::vector<Term>& terms, double tau0_s) {
+  constexpr double kTailDecayTimes = 30.0;
+  constexpr double kExactDecayTimes = 7.0;
+  constexpr long long kMaxExactHalfWidth = 4096;
+  LagReach reach;
+  for (const Term& term : terms) {
+    const double decay_s = decay_time_s(term);
+    if (term.kind == TermKind::kResonance) {
+      const double lags = std::ceil(kExactDecayTimes * decay_s / tau0_s);
+      reach.exact_half_width =
+          std::max(reach.exact_half_width, static_cast<long long>(std::min<double>(kMaxExactHalfWidth, lags)));
+      reach.oscillation_factor_limit = std::max(reach.oscillation_factor_limit, 3.0 * lags);
+    }
+    reach.tail_lags = std::max(reach.tail_lags, kTailDecayTimes * decay_s / tau0_s);
+  }
+  return reach;
+}
+
+// D at a lag where the short-memory terms have settled on their asymptotes (beyond 30 decay
+// times), cheaper than the exact form.
+double settled_term_structure_function(const Term& term, double u, double tau0_s) {
+  constexpr double kSettledDecayTimes = 30.0;
+  const double decay_s = decay_time_s(term);
+  if (decay_s > 0.0 && u > kSettledDecayTimes * decay_s) {
+    const double a2 = term.amplitude * term.amplitude;
+    if (term.kind == TermKind::kResonance) {
+      const double angle_sigma = term.amplitude / (2.0 * kPi * term.shape);
+      return 2.0 * angle_sigma * angle_sigma;
+    }
+    if (term.kind == TermKind::kMarkov || term.kind == TermKind::kWhiteRate) return a2 * (u - decay_s);
+  }
+  return term_structure_function(term, u, tau0_s);
+}
+
+// One unit-amplitude term's D at integer lags 0..size-1 (the exact windows ask for these, most
+// of them short), its settled form elsewhere.
+class UnitTable {
+ public:
+  UnitTable(const Term& unit, double tau0_s, long long size)
+      : unit_(unit), tau0_s_(tau0_s), values_(static_cast<size_t>(std::max(1LL, size))) {
+    for (size_t k = 0; k < values_.size(); ++k) values_[k] = term_structure_function(unit, k * tau0_s, tau0_s);
+  }
+  double at(double lag) const {
+    const double magnitude = std::abs(lag);
+    const double rounded = std::round(magnitude);
+    if (rounded == magnitude && rounded < static_cast<double>(values_.size())) {
+      return values_[static_cast<size_t>(rounded)];
+    }
+    return settled_term_structure_function(unit_, magnitude * tau0_s_, tau0_s_);
+  }
+  const Term& unit() const { return unit_; }
+
+ private:
+  Term unit_;
+  double tau0_s_;
+  std::vector<double> values_;
+};
+
+// The stochastic terms of a model as (unit term, weight = amplitude^2); the output quantization
+// is a unit white noise.
+std::vector<std::pair<Term, double>> weighted_units(const NoiseModel& model) {
+  std::vector<std::pair<Term, double>> units;
+  if (model.output_quantization_density > 0.0) {
+    units.push_back({Term{TermKind::kWhiteRate, 1.0, 0.0, 0.0},
+                     model.output_quantization_density * model.output_quantization_density});
+  }
+  for (const Term& term : model.terms) {
+    if (term.kind == TermKind::kRateRamp || term.kind == TermKind::kSinusoid) continue;
+    Term unit = term;
+    unit.amplitude = 1.0;
+    units.push_back({unit, term.amplitude * term.amplitude});
+  }
+  return units;
+}
+
+std::pair<int, int> unit_pair(int a, int b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); }
+
+bool close_shape(double a, double b) {
+  constexpr double kTolerance = 0.1;
+  if (a == b) return true;
+  return a > 0.0 && b > 0.0 && std::abs(std::log(a / b)) < kTolerance;
+}
+
+}  // namespace
+
+struct OavarCovariance::Cache {
+  std::vector<int> factors;
+  double tau0_s = 0.0;
+  long long sample_count = 0;
+  std::vector<double> variance_inflation;  // per factor: 1 / pooled term fraction (>= 1)
+  std::vector<UnitTable> units;
+  // Lag sums sum_h count c_i c_j (times the normaliser) per unit pair i <= j: the whole matrix
+  // over factor pairs, or its diagonal only.
+  std::map<std::pair<int, int>, Eigen::MatrixXd> full;
+  std::map<std::pair<int, int>, Eigen::VectorXd> diagonal;
+
+  int unit_index(const Term& unit) {
+    for (size_t i = 0; i < units.size(); ++i) {
+      const Term& cached = units[i].unit();
+      if (cached.kind == unit.kind && close_shape(cached.shape, unit.shape) && close_shape(cached.width, unit.width)) {
+        return static_cast<int>(i);
+      }
+    }
+    int largest = 1;
+    for (int m : factors) largest = std::max(largest, m);
+    std::vector<Term> alone = {unit};
+    const LagReach reach = lag_reach(alone, tau0_s);
+    constexpr long long kMaxTable = 1LL << 16;
+    units.emplace_back(unit, tau0_s, std::min(kMaxTable, 4LL * largest + 2 * reach.exact_half_width + 2));
+    return static_cast<int>(units.size()) - 1;
+  }
+
+  // Fills every missing kernel among `indices` (for every factor pair, or the diagonal only).
+  void compute_missing(const std::vector<int>& indices, bool diagonal_only) {
+    std::vector<std::pair<int, int>> missing;
+    for (size_t a = 0; a < indices.size(); ++a) {
+      for (size_t b = a; b < indices.size(); ++b) {
+        const std::pair<int, int> key = unit_pair(indices[a], indices[b]);
+        if (full.count(key) || (diagonal_only && diagonal.count(key))) continue;
+        if (std::find(missing.begin(), missing.end(), key) == missing.end()) missing.push_back(key);
+      }
+    }
+    if (missing.empty()) return;
+    std::vector<int> involved;
+    for (const auto& key : missing) {
+      for (int index : {key.first, key.second}) {
+        if (std::find(involved.begin(), involved.end(), index) == involved.end()) involved.push_back(index);
+      }
+    }
+    std::vector<Term> involved_terms;
+    for (int index : involved) involved_terms.push_back(units[index].unit());
+    const LagReach reach = lag_reach(involved_terms, tau0_s);
+    const int count = static_cast<int>(factors.size());
+    for (const auto& key : missing) {
+      if (diagonal_only) {
+        diagonal[key] = Eigen::VectorXd::Zero(count);
+      } else {
+        full[key] = Eigen::MatrixXd::Zero(count, count);
+      }
+    }
+    std::vector<double> c(units.size());
+    std::vector<double> sums(missing.size());
+    for (int i = 0; i < count; ++i) {
+      for (int j = i; j < count; ++j) {
+        if (diagonal_only && j != i) break;
+        const int m = factors[i], n = factors[j];
+        const PairGeometry pair(m, n, tau0_s, sample_count);
+        std::fill(sums.begin(), sums.end(), 0.0);
+        const auto visit = [&](double h, double weight) {
+          for (int index : involved) {
+            double value = 0.0;
+            for (size_t k = 0; k < pair.offsets.size(); ++k) value += pair.weights[k] * units[index].at(h + pair.offsets[k]);
+            c[index] = value * pair.scale;
+          }
+          const double counted = weight * pair.count(h);
+          for (size_t k = 0; k < missing.size(); ++k) sums[k] += counted * c[missing[k].first] * c[missing[k].second];
+        };
+        // Outside the two filters' joint span C_mn vanishes for white, random-walk and
+        // white-angle terms, decays like e^{-u / T} for Markov ones and like (span / u)^2 for
+        // flicker, whose squared tail beyond 16 spans holds under 3e-4 of the sum.
+        const double span = 2.0 * (static_cast<double>(m) + n);
+        const double reach_lags = 16.0 * span + reach.tail_lags;
+        const long long lo = std::max<long long>(pair.lowest_lag(), static_cast<long long>(-reach_lags));
+        const long long hi = std::min<long long>(pair.highest_lag(), static_cast<long long>(reach_lags));
+        constexpr long long kDefaultHalfWidth = 8;
+        const bool oscillating = std::min(m, n) < reach.oscillation_factor_limit;
+        visit_lags(lo, hi, pair.nodes(), oscillating ? reach.exact_half_width : kDefaultHalfWidth, visit);
+        for (size_t k = 0; k < missing.size(); ++k) {
+          const double value = sums[k] * pair.normaliser();
+          if (diagonal_only) {
+            diagonal[missing[k]](i) = value;
+          } else {
+            full[missing[k]](i, j) = full[missing[k]](j, i) = value;
+          }
+        }
+      }
+    }
+  }
+
+  // sum over unit pairs of weight_i weight_j (2 for i != j) times their kernel.
+  template <class Kernel, class Result>
+  void assemble(const NoiseModel& model, bool diagonal_only, Result* result) {
+    const auto weighted = weighted_units(model);
+    std::vector<int> indices;
+    for (const auto& entry : weighted) indices.push_back(unit_index(entry.first));
+    compute_missing(indices, diagonal_only);
+    for (size_t a = 0; a < weighted.size(); ++a) {
+      for (size_t b = 0; b < weighted.size(); ++b) {
+        const std::pair<int, int> key = unit_pair(indices[a], indices[b]);
+        const double weight = weighted[a].second * weighted[b].second;
+        if (diagonal_only) {
+          *result += weight * (full.count(key) ? Eigen::VectorXd(full[key].diagonal()) : diagonal[key]);
+        } else {
+          *result += weight * full[key];
+        }
+      }
+    }
+  }
+};
+
+OavarCovariance::OavarCovariance(std::vector<int> averaging_factors, double tau0_s, long long sample_count)
+    : cache_(new Cache) {
+  for (int m : averaging_factors) check_factor(m, sample_count);
+  cache_->factors = std::move(averaging_factors);
+  cache_->tau0_s = tau0_s;
+  cache_->sample_count = sample_count;
+  cache_->variance_inflation.assign(cache_->factors.size(), 1.0);
+}
+
+OavarCovariance::~OavarCovariance() = default;
+
+void OavarCovariance::set_pooled_term_fractions(const std::vector<double>& fractions) {
+  if (fractions.size() != cache_->factors.size()) {
+    throw std::invalid_argument("OavarCovariance: " + std::to_string(fractions.size()) + " term fractions for " +
+                                std::to_string(cache_->factors.size()) + " averaging factors");
+  }
+  for (size_t i = 0; i < fractions.size(); ++i) {
+    if (!(fractions[i] > 0.0 && fractions[i] <= 1.0)) {
+      throw std::invalid_argument("OavarCovariance: a pooled term fraction must lie in (0, 1], not " +
+                                  std::to_string(fractions[i]));
+    }
+    cache_->variance_inflation[i] = 1.0 / fractions[i];
+  }
+}
+
+Eigen::MatrixXd OavarCovariance::covariance(const NoiseModel& model) {
+  const int count = static_cast<int>(cache_->factors.size());
+  Eigen::MatrixXd result = Eigen::MatrixXd::Zero(count, count);
+  cache_->assemble<Eigen::MatrixXd>(model, false, &result);
+  const Eigen::VectorXd scale =
+      Eigen::Map<const Eigen::VectorXd>(cache_->variance_inflation.data(), count).cwiseSqrt();
+  return scale.asDiagonal() * result * scale.asDiagonal();
+}
+
+std::vector<double> OavarCovariance::variance(const NoiseModel& model) {
+  Eigen::VectorXd result = Eigen::VectorXd::Zero(static_cast<int>(cache_->factors.size()));
+  cache_->assemble<Eigen::VectorXd>(model, true, &result);
+  std::vector<double> variances(result.data(), result.data() + result.size());
+  for (size_t i = 0; i < variances.size(); ++i) variances[i] *= cache_->variance_inflation[i];
+  return variances;
+}
+
+double term_structure_function(const Term& term, double lag_s, double tau0_s) {
+  const double u = std::abs(lag_s);
+  const double a2 = term.amplitude * term.amplitude;
+  switch (term.kind) {
+    case TermKind::kWhiteAngle:
+      return u < 0.5 * tau0_s ? 0.0 : 2.0 * a2;
+    case TermKind::kWhiteRate:
+      if (term.shape > 0.0) return a2 * markov_excess(u, 1.0 / (2.0 * kPi * term.shape));
+      return a2 * u;
+    case TermKind::kBiasInstability:
+      // Flicker rate: generalised covariance u^2 ln u (its AVAR tends to 2 ln 2 B^2 / pi); the
+      // cutoff only shapes taus near 1 / f0.
+      return u > 0.0 ? -a2 / kPi * u * u * std::log(u) : 0.0;
+    case TermKind::kRandomWalk:
+      return -a2 * u * u * u / 6.0;
+    case TermKind::kMarkov:
+      return a2 * markov_excess(u, term.shape);
+    case TermKind::kZeroDcFamily: {
+      // PSD alpha f^2 e^{-beta f}: D(u) = alpha / pi^2 Re[1 / beta - 1 / (beta - 2 pi i u)].
+      const std::complex<double> z(term.shape, -2.0 * kPi * u);
+      return a2 / (kPi * kPi) * (1.0 / term.shape - (1.0 / z).real());
+    }
+    case TermKind::kResonance: {
+      const double angle_sigma = term.amplitude / (2.0 * kPi * term.shape);
+      return 2.0 * angle_sigma * angle_sigma *
+             (1.0 - noise::resonance_angle_correlation(term.shape, term.width, u));
+    }
+    case TermKind::kRateRamp:
+    case TermKind::kSinusoid:
+      return 0.0;
+  }
+  return 0.0;
+}
+
+double model_structure_function(const NoiseModel& model, double lag_s, double tau0_s) {
+  const double quantization = model.output_quantization_density;
+  double total = quantization * quantization * std::abs(lag_s);
+  for (const Term& term : model.terms) total += term_structure_function(term, lag_s, tau0_s);
+  return total;
+}
+
+Eigen::MatrixXd oavar_covariance(const NoiseModel& model, const std::vector<int>& averaging_factors, double tau0_s,
+                                 long long sample_count) {
+  OavarCovariance covariance(averaging_factors, tau0_s, sample_count);
+  return covariance.covariance(model);
+}
+
+std::vector<double> oavar_variance(const NoiseModel& model, const std::vector<int>& averaging_factors, double tau0_s,
+                                   long long sample_count) {
+  OavarCovariance covariance(averaging_factors, tau0_s, sample_count);
+  return covariance.variance(model);
+}
+
+double oavar_covariance_by_direct_sum(const NoiseModel& model, int m, int n, double tau0_s, long long sample_count) {
+  check_factor(m, sample_count);
+  check_factor(n, sample_count);
+  const PairGeometry pair(m, n, tau0_s, sample_count);
+  double sum = 0.0;
+  for (long long h = pair.lowest_lag(); h <= pair.highest_lag(); ++h) {
+    double c = 0.0;
+    for (size_t k = 0; k < pair.offsets.size(); ++k) {
+      c += pair.weights[k] * model_structure_function(model, (h + pair.offsets[k]) * tau0_s, tau0_s);
+    }
+    c *= pair.scale;
+    sum += pair.count(static_cast<double>(h)) * c * c;
+  }
+  return sum * pair.normaliser();
+}
+
+}  // namespace identify
+}  // namespace imu_lab

@@ -1,0 +1,203 @@
+// The identification on real recordings nobody here generated: three static ADIS16405 units
+// (../shared/reference/real_static, 2.78 h at 100 Hz each), imported and analysed as a user
+// would (`import_csv`, then `allan` with default options). What it must show (doc/identification.md):
+// - the fitted total inside the measured 95 % band at >= 90 % of the taus pooled over the 18
+//   axes and >= 75 % on each, every excursion named in the warnings;
+// - N present with a sigma on every axis, within 10 % of the record's Welch PSD plateau (median
+//   over 0.2-5 Hz), and the three units agreeing per axis within a ratio of 1.2;
+// - no present term whose own partial curve exceeds the band's upper bound (the white rate
+//   noise, the floor of every model, can only do so where the total leaves the band, and that
+//   excursion is named);
+// - unit 4's knocks near 4045 s and 5146 s listed in noise.yaml to within 1 s, none on 5 and 6.
+// (Stability across tau grids does not hold yet: doc/identification.md, "Not yet shown".)
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "imu_lab/io/csv_imu_import.h"
+#include "imu_lab/spectrum/welch.h"
+#include "ros_test_support.h"
+
+#ifndef IMU_LAB_REFERENCE_DIR
+#define IMU_LAB_REFERENCE_DIR "../shared/reference"
+#endif
+
+namespace {
+
+using imu_lab::test_support::read_file;
+using imu_lab::test_support::run_command;
+using imu_lab::test_support::run_tool;
+using imu_lab::test_support::scratch_directory;
+
+constexpr std::array<const char*, 6> kChannels = {"gyro_x", "gyro_y", "gyro_z", "accel_x", "accel_y", "accel_z"};
+constexpr std::array<int, 3> kUnits = {4, 5, 6};
+
+struct AxisOutcome {
+  int band_points = 0;
+  int band_inside = 0;
+  int excursions = 0;
+  int band_warnings = 0;
+  std::string n_status;
+  double n_value = std::nan("");  // SI
+  double n_sigma = std::nan("");
+  double psd_plateau_density = std::nan("");  // sqrt(PSD / 2), SI
+  std::vector<std::string> partials_over_band;  // "term at tau"
+};
+
+struct UnitOutcome {
+  std::array<AxisOutcome, 6> axes;
+  std::vector<double> event_onsets_s;
+  bool screened = false;
+};
+
+// Columns of a CSV with a header line, by name.
+std::map<std::string, std::vector<double>> read_csv_columns(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  std::stringstream header(line);
+  for (std::string name; std::getline(header, name, ',');) names.push_back(name);
+  std::map<std::string, std::vector<double>> columns;
+  while (std::getline(in, line)) {
+    std::stringstream row(line);
+    std::string cell;
+    for (std::size_t c = 0; c < names.size() && std::getline(row, cell, ','); ++c) {
+      columns[names[c]].push_back(std::strtod(cell.c_str(), nullptr));
+    }
+  }
+  return columns;
+}
+
+// sqrt(PSD / 2) per channel: the white rate density the Allan variance calls N.
+std::array<double, 6> psd_plateaus(const std::string& csv) {
+  std::ifstream in(csv);
+  imu_lab::io::CsvImportOptions options;
+  options.gyro_unit = imu_lab::io::AngularRateUnit::kDegreePerSecond;
+  options.accel_unit = imu_lab::io::SpecificForceUnit::kStandardGravity;
+  std::array<std::vector<double>, 6> values;
+  imu_lab::io::parse_imu_csv(in, options, csv, [&values](const imu_lab::io::ImuCsvSample& sample) {
+    for (int i = 0; i < 3; ++i) {
+      values[i].push_back(sample.angular_rate_rad_s[i]);
+      values[3 + i].push_back(sample.specific_force_m_s2[i]);
+    }
+  });
+  std::array<double, 6> plateaus{};
+  for (int c = 0; c < 6; ++c) {
+    const auto spectrum = imu_lab::spectrum::welch_psd(values[c], 0.01, {1024});
+    plateaus[c] = std::sqrt(imu_lab::spectrum::median_density(spectrum, 0.2, 5.0) / 2.0);
+  }
+  return plateaus;
+}
+
+UnitOutcome analyse_unit(int unit) {
+  const std::string directory = scratch_directory();
+  const std::string csv = directory + "/u" + std::to_string(unit) + ".csv";
+  const std::string source =
+      std::string(IMU_LAB_REFERENCE_DIR) + "/real_static/adis16405_unit" + std::to_string(unit) + ".csv.xz";
+  UnitOutcome outcome;
+  const auto unpacked = run_command("xzcat '" + source + "' > '" + csv + "'");
+  EXPECT_EQ(unpacked.exit_code, 0) << unpacked.output;
+  const std::string bag = directory + "/u" + std::to_string(unit) + ".bag";
+  const auto imported = run_tool("import_csv", csv + " -o " + bag + " --gyro-unit deg_s --accel-unit g --time-offset-s 1");
+  EXPECT_EQ(imported.exit_code, 0) << imported.output;
+  const std::string report = directory + "/report";
+  const auto analysed = run_tool("allan", bag + " --no-plot --out " + report);
+  EXPECT_EQ(analysed.exit_code, 0) << analysed.output;
+  if (analysed.exit_code != 0) return outcome;
+
+  const YAML::Node noise = YAML::Load(read_file(report + "/noise.yaml"));
+  outcome.screened = noise["events"]["screened"].as<bool>();
+  for (const YAML::Node& event : noise["events"]["listed"]) outcome.event_onsets_s.push_back(event["onset_s"].as<double>());
+  const std::array<double, 6> plateaus = psd_plateaus(csv);
+  for (int c = 0; c < 6; ++c) {
+    const std::string channel = kChannels[c];
+    const std::string sensor = c < 3 ? "gyro" : "accel";
+    const std::string unit_key = c < 3 ? "rad_s" : "m_s2";
+    const YAML::Node axis = noise["triads"][sensor]["axes"][channel];
+    AxisOutcome& result = outcome.axes[c];
+    result.band_points = axis["band_check"]["points"].as<int>();
+    result.band_inside = axis["band_check"]["inside"].as<int>();
+    result.excursions = static_cast<int>(axis["band_check"]["outside_ranges"].size());
+    for (const YAML::Node& warning : axis["warnings"]) {
+      result.band_warnings += warning.as<std::string>().find("leaves the measured curve's 95 % band") != std::string::npos;
+    }
+    const YAML::Node white = axis["terms"]["white_rate"];
+    result.n_status = white["status"].as<std::string>();
+    const std::string n_key = "N_" + unit_key + "_per_sqrt_hz";
+    if (white[n_key]) result.n_value = white[n_key].as<double>();
+    if (white[n_key + "_sigma"]) result.n_sigma = white[n_key + "_sigma"].as<double>();
+    result.psd_plateau_density = plateaus[c];
+
+    // Present terms' partial curves against the band (noise_partial_<channel>.csv).
+    const auto columns = read_csv_columns(report + "/noise_partial_" + channel + ".csv");
+    const auto& taus = columns.at("tau_s");
+    const auto& upper = columns.at("band95_high_" + unit_key);
+    for (const auto& term : axis["terms"]) {
+      const std::string name = term.first.as<std::string>();
+      if (term.second["status"].as<std::string>() != "present" || name == "white_rate") continue;
+      const auto column = columns.find(name + "_dev_" + unit_key);
+      if (column == columns.end()) {
+        result.partials_over_band.push_back(name + " has no partial curve");
+        continue;
+      }
+      for (std::size_t k = 0; k < taus.size(); ++k) {
+        if (std::isfinite(upper[k]) && column->second[k] > upper[k]) {
+          result.partials_over_band.push_back(name + " at tau " + std::to_string(taus[k]));
+          break;
+        }
+      }
+    }
+  }
+  run_command("rm -f '" + csv + "' '" + bag + "'");
+  return outcome;
+}
+
+TEST(IdentifyRealData, ThreeAdisUnitsAsAUserRunsThem) {
+  std::map<int, UnitOutcome> units;
+  for (int unit : kUnits) units[unit] = analyse_unit(unit);
+
+  int pooled_points = 0, pooled_inside = 0;
+  for (int unit : kUnits) {
+    for (int c = 0; c < 6; ++c) {
+      const AxisOutcome& axis = units[unit].axes[c];
+      const std::string where = "unit " + std::to_string(unit) + " " + kChannels[c];
+      pooled_points += axis.band_points;
+      pooled_inside += axis.band_inside;
+      ASSERT_GT(axis.band_points, 30) << where;
+      EXPECT_GE(axis.band_inside, 0.75 * axis.band_points) << where;
+      EXPECT_EQ(axis.band_warnings, axis.excursions) << where << ": every excursion is named in the warnings";
+      EXPECT_EQ(axis.n_status, "present") << where;
+      EXPECT_GT(axis.n_sigma, 0.0) << where;
+      EXPECT_NEAR(axis.n_value / axis.psd_plateau_density, 1.0, 0.10) << where;
+      EXPECT_TRUE(axis.partials_over_band.empty()) << where << ": " << (axis.partials_over_band.empty() ? "" : axis.partials_over_band[0]);
+    }
+  }
+  EXPECT_GE(pooled_inside, 0.90 * pooled_points) << pooled_inside << " of " << pooled_points;
+
+  for (int c = 0; c < 6; ++c) {
+    double smallest = INFINITY, largest = 0.0;
+    for (int unit : kUnits) {
+      smallest = std::min(smallest, units[unit].axes[c].n_value);
+      largest = std::max(largest, units[unit].axes[c].n_value);
+    }
+    EXPECT_LE(largest / smallest, 1.2) << kChannels[c] << ": the three units' N";
+  }
+
+  for (int unit : kUnits) EXPECT_TRUE(units[unit].screened) << "unit " << unit;
+  const auto& onsets = units[4].event_onsets_s;
+  for (double knock_s : {4045.0, 5146.0}) {
+    EXPECT_TRUE(std::any_of(onsets.begin(), onsets.end(), [knock_s](double onset) { return std::abs(onset - knock_s) < 1.0; }))
+        << "unit 4's knock near " << knock_s << " s";
+  }
+  EXPECT_TRUE(units[5].event_onsets_s.empty());
+  EXPECT_TRUE(units[6].event_onsets_s.empty());
+}
+
+}  // namespace

@@ -1,0 +1,163 @@
+// Unit conversions against hand values, the fit point selection, and the moment weights
+// (checked through the covariance of ln N against a generalised least squares by hand).
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <random>
+
+#include "imu_lab/common/config_error.h"
+#include "imu_lab/identify/avar_covariance.h"
+#include "imu_lab/identify/chi_squared.h"
+#include "imu_lab/identify/fit_points.h"
+#include "imu_lab/identify/fit_problem.h"
+#include "imu_lab/identify/units.h"
+
+namespace imu_lab {
+namespace identify {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double scale_of(const std::vector<UnitScale>& units, const std::string& key) {
+  for (const auto& unit : units) {
+    if (unit.key == key) return unit.per_si;
+  }
+  ADD_FAILURE() << "no unit " << key;
+  return 0.0;
+}
+
+TEST(IdentifyUnits, HandValues) {
+  // 1 deg/sqrt(h) = pi/180/60 rad/sqrt(s) = 2.90888e-4 rad/s/sqrt(Hz).
+  EXPECT_DOUBLE_EQ(units::kDegPerSqrtHour_rad_per_sqrt_s, kPi / 180.0 / 60.0);
+  EXPECT_NEAR(units::kDegPerSqrtHour_rad_per_sqrt_s, 2.908882086657216e-4, 1e-18);
+  EXPECT_NEAR(units::kDegPerHour_rad_s, 4.84813681109536e-6, 1e-19);
+  EXPECT_NEAR(units::kDegPerHourPerSqrtHour_rad_s_per_sqrt_s, 4.84813681109536e-6 / 60.0, 1e-20);
+  EXPECT_NEAR(units::kArcsecond_rad, 4.84813681109536e-6, 1e-19);
+  EXPECT_DOUBLE_EQ(units::kMicroG_m_s2, 9.80665e-6);
+  EXPECT_DOUBLE_EQ(units::kMeterPerSecondPerSqrtHour_m_s2_per_sqrt_hz, 1.0 / 60.0);
+
+  const auto gyro_n = amplitude_units(SensorKind::kGyroscope, TermKind::kWhiteRate);
+  EXPECT_NEAR(2.908882086657216e-4 * scale_of(gyro_n, "deg_per_sqrt_h"), 1.0, 1e-12);
+  EXPECT_NEAR(kPi / 180.0 * scale_of(gyro_n, "deg_s_per_sqrt_hz"), 1.0, 1e-12);
+  const auto gyro_b = amplitude_units(SensorKind::kGyroscope, TermKind::kBiasInstability);
+  EXPECT_NEAR(4.84813681109536e-6 * scale_of(gyro_b, "deg_h"), 1.0, 1e-12);
+  const auto gyro_k = amplitude_units(SensorKind::kGyroscope, TermKind::kRandomWalk);
+  EXPECT_NEAR(4.84813681109536e-6 / 60.0 * scale_of(gyro_k, "deg_h_per_sqrt_h"), 1.0, 1e-12);
+  const auto gyro_q = amplitude_units(SensorKind::kGyroscope, TermKind::kWhiteAngle);
+  EXPECT_NEAR(4.84813681109536e-6 * scale_of(gyro_q, "arcsec"), 1.0, 1e-12);
+  const auto gyro_r = amplitude_units(SensorKind::kGyroscope, TermKind::kRateRamp);
+  EXPECT_NEAR(4.84813681109536e-6 / 3600.0 * scale_of(gyro_r, "deg_h_per_h"), 1.0, 1e-12);
+
+  const auto accel_n = amplitude_units(SensorKind::kAccelerometer, TermKind::kWhiteRate);
+  EXPECT_NEAR(scale_of(accel_n, "m_s_per_sqrt_h"), 60.0, 1e-12);  // 1 m/s^2/sqrt(Hz) = 60 m/s/sqrt(h)
+  EXPECT_NEAR(9.80665e-6 * scale_of(accel_n, "micro_g_per_sqrt_hz"), 1.0, 1e-12);
+  const auto accel_b = amplitude_units(SensorKind::kAccelerometer, TermKind::kBiasInstability);
+  EXPECT_NEAR(9.80665e-6 * scale_of(accel_b, "micro_g"), 1.0, 1e-12);
+  const auto accel_k = amplitude_units(SensorKind::kAccelerometer, TermKind::kRandomWalk);
+  // 1 m/s^2/sqrt(s) = 3600 m/s/h * 60 /sqrt(h).
+  EXPECT_NEAR(scale_of(accel_k, "m_s_per_h_per_sqrt_h"), 216000.0, 1e-9);
+}
+
+TEST(IdentifyLikelihood, ChiSquaredTailAndQuantile) {
+  EXPECT_NEAR(chi_squared_quantile(0.999, 1.0), 10.827566, 1e-5);
+  EXPECT_NEAR(chi_squared_upper_tail(3.841459, 1.0), 0.05, 1e-6);
+}
+
+std::vector<allan::StabilityPoint> curve(const std::vector<double>& taus) {
+  std::vector<allan::StabilityPoint> points;
+  for (double tau : taus) {
+    allan::StabilityPoint p;
+    p.tau_s = tau;
+    p.averaging_factor = static_cast<int>(std::lround(tau));
+    p.deviation = 1.0 / std::sqrt(tau);
+    p.edf = 100.0 / tau;
+    points.push_back(p);
+  }
+  return points;
+}
+
+// Off a decade grid (here hand-picked taus): points at least a factor 1.41 apart; an unusable
+// point is skipped and the next one taken.
+TEST(IdentifyFitPoints, KeepsPointsAFactorApartOffTheLadder) {
+  auto points = curve({1, 1.5, 2, 5, 7, 8, 16, 40});
+  points[3].deviation = 0.0;  // unusable (tau 5): tau 7 is kept instead
+  const auto kept = select_fit_points(points);
+  std::vector<double> taus;
+  for (const FitPoint& point : kept) taus.push_back(point.tau_s);
+  EXPECT_EQ(taus, (std::vector<double>{1, 1.5, 7, 16, 40}));
+  EXPECT_DOUBLE_EQ(kept[1].avar, 1.0 / 1.5);
+  EXPECT_THROW(select_fit_points(curve({1, 2})), InputError);
+  EXPECT_THROW(select_fit_points(curve({1, 4, 2, 8})), InputError);
+  EXPECT_EQ(octave_averaging_factors(10), (std::vector<int>{1, 2, 4}));
+}
+
+// On a decade grid the points are the ladder's, round(10^(k / 5)): 10 and 30 points per decade
+// give the same set, so a denser grid cannot change the fit.
+TEST(IdentifyFitPoints, DecadeGridsOfAnyDensityGiveTheLadder) {
+  const auto grid = [](double per_decade) {
+    std::vector<double> taus;
+    for (int i = 0; std::pow(10.0, i / per_decade) < 2000.0; ++i) {
+      const double m = static_cast<double>(std::llround(std::pow(10.0, i / per_decade)));
+      if (taus.empty() || m != taus.back()) taus.push_back(m);
+    }
+    return taus;
+  };
+  const auto at_ten = select_fit_points(curve(grid(10.0)));
+  const auto at_thirty = select_fit_points(curve(grid(30.0)));
+  std::vector<int> ten, thirty;
+  for (const FitPoint& point : at_ten) ten.push_back(point.averaging_factor);
+  for (const FitPoint& point : at_thirty) thirty.push_back(point.averaging_factor);
+  EXPECT_EQ(ten, (std::vector<int>{1, 2, 3, 4, 6, 10, 16, 25, 40, 63, 100, 158, 251, 398, 631, 1000, 1585}));
+  EXPECT_EQ(thirty, ten);
+}
+
+// For a white-noise-only model the GMM information about ln N is 4 (1' R^-1 1) with R the
+// relative covariance of the AVAR estimates: sigma(ln N) = 1 / (2 sqrt(1' R^-1 1)). R here comes
+// from the brute-force lag sum, independent of the weights' quadrature; dropping the correlation
+// across taus (or the factor 2 of ln N in ln AVAR) breaks it.
+TEST(IdentifyMoments, CovarianceOfLnNIsTheGeneralisedLeastSquaresOne) {
+  const double tau0_s = 0.01, density = 2e-5;
+  const long long samples = 20000;
+  NoiseModel model;
+  model.terms = {{TermKind::kWhiteRate, density, 0.0}};
+  std::vector<FitPoint> points;
+  for (int m : {1, 2, 4, 8, 16, 32, 64, 128}) {
+    points.push_back({m * tau0_s, m, model_avar(model, m * tau0_s)});
+  }
+  ModelStructure structure;
+  structure.slots = {{TermKind::kWhiteRate, false, 0.0}};
+  DataSpan span;
+  span.tau0_s = tau0_s;
+  span.record_length_s = samples * tau0_s;
+  span.sample_count = samples;
+  span.tau_min_s = points.front().tau_s;
+  span.tau_max_s = points.back().tau_s;
+  span.smallest_avar = points.back().avar;
+  span.largest_avar = points.front().avar;
+  OavarCovariance covariance(averaging_factors(points), tau0_s, samples);
+  const MomentWeights weights = moment_weights(points, model, covariance, 0.0);
+  const SolveOutcome outcome = solve_model(points, structure, {std::log(1e-4)}, span, weights);
+  ASSERT_TRUE(outcome.usable);
+  // The moments are bias-corrected logarithms, so the noiseless curve returns N up to that
+  // correction's second order (1e-4 relative at these EDFs).
+  EXPECT_NEAR(std::exp(outcome.log_parameters[0]) / density, 1.0, 1e-3);
+  const std::size_t n = points.size();
+  Eigen::MatrixXd relative(n, n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < n; ++j) {
+      relative(i, j) = oavar_covariance_by_direct_sum(model, points[i].averaging_factor, points[j].averaging_factor,
+                                                      tau0_s, samples) /
+                       (points[i].avar * points[j].avar);
+    }
+  }
+  const double information = Eigen::VectorXd::Ones(n).dot(relative.ldlt().solve(Eigen::VectorXd::Ones(n)));
+  const Eigen::MatrixXd log_covariance =
+      log_parameter_covariance(points, structure, outcome.log_parameters, weights);
+  EXPECT_NEAR(std::sqrt(log_covariance(0, 0)) * 2.0 * std::sqrt(information), 1.0, 1e-3);
+}
+
+}  // namespace
+}  // namespace identify
+}  // namespace imu_lab
