@@ -13,8 +13,16 @@ double degrees_parameter_rad(const ros::NodeHandle& node, const std::string& nam
   return parameter(node, name, 0.0) * kDegToRad;
 }
 
-Eigen::Vector3d initial_velocity_parameter(const ros::NodeHandle& node) {
+// Without alignment the node starts from the given state and has no truth to take the velocity
+// from (the tool has, in a bag with /imu/truth): a silent [0, 0, 0] would be a moving start's
+// whole error, so it must be given then. With an alignment the start is at rest.
+Eigen::Vector3d initial_velocity_parameter(const ros::NodeHandle& node, bool align) {
   const std::string name = "initial_velocity_enu_m_s";
+  if (!align && !node.hasParam(name)) {
+    throw parameter_error(node, name,
+                          "is required with align: false (the start is the given state; [0, 0, 0] for a start at "
+                          "rest)");
+  }
   const std::vector<double> value = parameter(node, name, std::vector<double>{0.0, 0.0, 0.0});
   if (value.size() != 3) {
     throw parameter_error(node, name, "expected [east, north, up] in m/s, got " + std::to_string(value.size()) +
@@ -51,7 +59,7 @@ NavigationSettings load_navigation_settings(const ros::NodeHandle& private_node)
   settings.initial_pitch_rad = degrees_parameter_rad(p, "initial_pitch_deg");
   settings.initial_yaw_rad = degrees_parameter_rad(p, "initial_yaw_deg");
   settings.alignment.given_yaw_rad = settings.initial_yaw_rad;
-  settings.initial_velocity_enu_m_s = initial_velocity_parameter(p);
+  settings.initial_velocity_enu_m_s = initial_velocity_parameter(p, settings.align);
   settings.latitude_rad = degrees_parameter_rad(p, "latitude_deg");
   settings.longitude_rad = degrees_parameter_rad(p, "longitude_deg");
   settings.height_m = parameter(p, "height_m", 0.0);

@@ -203,6 +203,9 @@ TEST(NodeBinaries, AWrongTypedOrNegativeParameterStopsTheNodeNamingIt) {
       {"imu_emulator", "negative_rate_emulator", "_rate_hz:=-100", "/negative_rate_emulator/rate_hz"},
       {"allan_monitor", "bad_plot_monitor", "_plot:=1", "/bad_plot_monitor/plot"},
       {"strapdown_navigator", "bad_latitude_navigator", "_latitude_deg:=north", "/bad_latitude_navigator/latitude_deg"},
+      // Without alignment the start velocity must be given: a silent [0, 0, 0] was a moving start's error.
+      {"strapdown_navigator", "no_velocity_navigator", "_align:=false",
+       "/no_velocity_navigator/initial_velocity_enu_m_s"},
       {"thermal_compensator", "bad_queue_compensator", "_model_file:=/nonexistent.yaml _queue_size:=-3",
        "/bad_queue_compensator/queue_size"},
       {"calibration_corrector", "bad_file_corrector", "_calibration_file:=5", "/bad_file_corrector/calibration_file"},

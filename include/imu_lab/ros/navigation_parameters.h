@@ -2,7 +2,8 @@
 //   align (true); alignment_duration_s (300); heading_source (gyrocompass | given);
 //   initial_roll_deg, initial_pitch_deg (used with align: false), initial_yaw_deg (with
 //   heading_source given or align: false; REP-103: from east towards north) (0);
-//   initial_velocity_enu_m_s ([0, 0, 0]; align: false only: an alignment starts at rest);
+//   initial_velocity_enu_m_s (required with align: false; with align: true only [0, 0, 0]: an
+//   alignment starts at rest);
 //   latitude_deg, longitude_deg, height_m (0): initial position, origin of the world frame;
 //   earth_model (wgs84 | sphere); vertical_channel (held | free); reference_height_m (height_m);
 //   coning_correction, sculling_correction (true); gap_factor (3);
