@@ -49,6 +49,7 @@ std::vector<FitPoint> ladder_points(const std::vector<allan::StabilityPoint>& po
   for (int target : ladder) {
     const allan::StabilityPoint* nearest = nullptr;
     for (const auto& point : points) {
+      if (point.averaging_factor < 1) continue;  // no place on a log axis
       if (nearest == nullptr || log_distance(point.averaging_factor, target) <
                                     log_distance(nearest->averaging_factor, target)) {
         nearest = &point;

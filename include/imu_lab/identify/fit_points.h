@@ -22,7 +22,7 @@ struct FitPoint {
 // The default spacing of the fit points: a factor sqrt(2) in tau (two per octave).
 constexpr double kFitPointRatio = 1.41;
 // The ladder of averaging factors round(10^(k / 5)), k = 0, 1, ...: every decade grid of 5, 10,
-// 20, 30 ... points per decade holds it exactly.
+// 20, 30 ... points per decade holds it, exactly within the engine's exact range.
 constexpr double kLadderPointsPerDecade = 5.0;
 // How far (relative, in tau) a curve point may lie from a ladder factor and still stand for it.
 // Beyond its exact range the streaming engine reports each factor rounded up to a multiple of the
