@@ -72,28 +72,27 @@ VarianceEstimate estimate(Statistic statistic, const ResolutionLevel& level, std
   throw std::invalid_argument("streaming_points: unknown statistic");
 }
 
-// Independent segments add their degrees of freedom.
-double pooled_edf(Statistic statistic, const ResolutionLevel& level, int m, int alpha) {
-  double edf = 0.0;
+struct SegmentPooling {
+  double edf = 0.0;            // independent segments add their degrees of freedom
+  double term_fraction = 1.0;  // the terms against those of one record holding every segment's phase points
+};
+
+// One pass over the level's segments for both.
+SegmentPooling pool_segments(Statistic statistic, const ResolutionLevel& level, int m, int alpha, long long terms) {
+  SegmentPooling pooled;
+  std::size_t phase_points = 0;
   for (const auto& entry : level.segment_phase_counts()) {
+    phase_points += static_cast<std::size_t>(entry.first * entry.second);
     if (term_count(statistic, static_cast<std::size_t>(entry.first), m) <= 0) continue;
     try {
-      edf += entry.second * equivalent_degrees_of_freedom(statistic, alpha, m, entry.first);
+      pooled.edf += entry.second * equivalent_degrees_of_freedom(statistic, alpha, m, entry.first);
     } catch (const std::invalid_argument&) {
       // Too short a segment for an EDF: it adds its terms but no confidence.
     }
   }
-  return edf;
-}
-
-// The terms against those of one record holding every segment's phase points.
-double pooled_term_fraction(Statistic statistic, const ResolutionLevel& level, int m, long long terms) {
-  std::size_t phase_points = 0;
-  for (const auto& entry : level.segment_phase_counts()) {
-    phase_points += static_cast<std::size_t>(entry.first * entry.second);
-  }
   const long long contiguous = term_count(statistic, phase_points, m);
-  return contiguous > 0 ? std::min(1.0, static_cast<double>(terms) / static_cast<double>(contiguous)) : 1.0;
+  if (contiguous > 0) pooled.term_fraction = std::min(1.0, static_cast<double>(terms) / static_cast<double>(contiguous));
+  return pooled;
 }
 
 }  // namespace
@@ -112,13 +111,14 @@ std::vector<StabilityPoint> streaming_points(Statistic statistic, const ChannelA
       const VarianceEstimate variance = estimate(statistic, level, i, point.tau_s);
       if (variance.term_count <= 0) continue;
       point.term_count = variance.term_count;
-      point.pooled_term_fraction = pooled_term_fraction(statistic, level, level_m, variance.term_count);
       point.deviation = std::sqrt(variance.variance) * units.value_scale;
       // Sums that overflowed (samples beyond ~1e150) estimate nothing.
       if (!std::isfinite(point.deviation)) continue;
       point.alpha = streaming_noise_alpha(statistic, level.block_autocorrelation().summary(i), history_phase, level_m,
                                           units.tau0_s);
-      point.edf = pooled_edf(statistic, level, level_m, point.alpha);
+      const SegmentPooling pooled = pool_segments(statistic, level, level_m, point.alpha, variance.term_count);
+      point.pooled_term_fraction = pooled.term_fraction;
+      point.edf = pooled.edf;
       if (point.edf > 0.0 && std::isfinite(point.edf)) {
         const DeviationBounds bounds = chi_squared_bounds(point.deviation, point.edf, units.confidence);
         point.deviation_lower = bounds.lower;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 #include <string>
 
 #include "imu_lab/common/config_error.h"
@@ -21,7 +20,7 @@ bool usable(const allan::StabilityPoint& point) {
 }
 
 // The ladder's factors round(10^(k / 5)) up to `largest`.
-std::vector<int> ladder_factors(int largest) {
+std::vector<int> ladder_factors(double largest) {
   std::vector<int> factors;
   for (int k = 0;; ++k) {
     const long long m = std::llround(std::pow(10.0, k / kLadderPointsPerDecade));
@@ -31,25 +30,36 @@ std::vector<int> ladder_factors(int largest) {
   return factors;
 }
 
-// The usable points on the ladder, when the curve's grid holds (nearly) all of it.
+// |ln(a / b)|: how far apart two averaging factors lie on a log tau axis.
+double log_distance(int a, int b) { return std::abs(std::log(static_cast<double>(a) / b)); }
+
+// The usable points nearest the ladder's factors, when the curve's grid holds (nearly) all of it.
+// Each factor takes the curve point nearest it in log tau, if within kLadderTolerance: the
+// engine's reported factor beyond its exact range is the target rounded to a pyramid block, and
+// every decade grid rounds it to the same block, so any density yields the same points.
 std::vector<FitPoint> ladder_points(const std::vector<allan::StabilityPoint>& points) {
-  std::set<int> on_curve;
   int largest = 0;
   for (const auto& point : points) {
-    on_curve.insert(point.averaging_factor);
     if (usable(point)) largest = std::max(largest, point.averaging_factor);
   }
-  const std::vector<int> ladder = ladder_factors(largest);
+  const std::vector<int> ladder = ladder_factors(largest * (1.0 + kLadderTolerance));
+  const double tolerance = std::log1p(kLadderTolerance);
   std::size_t present = 0;
-  for (int m : ladder) present += on_curve.count(m);
-  if (ladder.empty() || present < 0.8 * static_cast<double>(ladder.size())) return {};
   std::vector<FitPoint> kept;
-  for (const auto& point : points) {
-    const bool first_at_factor = kept.empty() || kept.back().averaging_factor != point.averaging_factor;
-    if (usable(point) && first_at_factor && std::binary_search(ladder.begin(), ladder.end(), point.averaging_factor)) {
-      kept.push_back(fit_point(point));
+  for (int target : ladder) {
+    const allan::StabilityPoint* nearest = nullptr;
+    for (const auto& point : points) {
+      if (point.averaging_factor < 1) continue;  // no place on a log axis
+      if (nearest == nullptr || log_distance(point.averaging_factor, target) <
+                                    log_distance(nearest->averaging_factor, target)) {
+        nearest = &point;
+      }
     }
+    if (nearest == nullptr || log_distance(nearest->averaging_factor, target) > tolerance) continue;
+    ++present;
+    if (usable(*nearest)) kept.push_back(fit_point(*nearest));
   }
+  if (ladder.empty() || present < 0.8 * static_cast<double>(ladder.size())) return {};
   return kept;
 }
 

@@ -5,7 +5,12 @@
 #include <sensor_msgs/Temperature.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
 #include <random>
+#include <sstream>
+#include <stdexcept>
 
 namespace imu_lab {
 namespace test_support {
@@ -68,6 +73,42 @@ void write_imu_bag(const std::string& path, const std::vector<ros_io::AllanSampl
 
 YAML::Node read_allan_summary(const std::string& report_directory) {
   return YAML::LoadFile(report_directory + "/allan_summary.yaml");
+}
+
+bool CsvTable::has_column(const std::string& name) const {
+  return std::find(header.begin(), header.end(), name) != header.end();
+}
+
+std::vector<double> CsvTable::column(const std::string& name) const {
+  const auto found = std::find(header.begin(), header.end(), name);
+  if (found == header.end()) throw std::out_of_range("CSV has no column '" + name + "'");
+  const std::size_t index = static_cast<std::size_t>(found - header.begin());
+  std::vector<double> values;
+  for (const auto& row : rows) values.push_back(index < row.size() ? row[index] : std::nan(""));
+  return values;
+}
+
+CsvTable read_csv_table(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot open");
+  CsvTable table;
+  std::string line;
+  std::getline(in, line);
+  std::istringstream names(line);
+  for (std::string name; std::getline(names, name, ',');) table.header.push_back(name);
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    std::istringstream cells(line);
+    std::vector<double> row;
+    for (std::string cell; std::getline(cells, cell, ',');) {
+      char* end = nullptr;
+      const double value = std::strtod(cell.c_str(), &end);
+      if (cell.empty() || *end != '\0') throw std::runtime_error(path + ": '" + cell + "' is not a number");
+      row.push_back(value);
+    }
+    table.rows.push_back(row);
+  }
+  return table;
 }
 
 }  // namespace test_support

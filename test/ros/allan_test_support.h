@@ -33,5 +33,15 @@ void write_imu_bag(const std::string& path, const std::vector<ros_io::AllanSampl
 
 YAML::Node read_allan_summary(const std::string& report_directory);
 
+// A numeric CSV with a header line (the tools' curve and partial-curve files).
+struct CsvTable {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;  // one value per cell, in header order
+  bool has_column(const std::string& name) const;
+  std::vector<double> column(const std::string& name) const;  // throws std::out_of_range naming it when absent
+};
+// Throws std::runtime_error naming the file and the cell when a cell is not a number.
+CsvTable read_csv_table(const std::string& path);
+
 }  // namespace test_support
 }  // namespace imu_lab

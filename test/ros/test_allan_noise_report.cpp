@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "imu_lab/identify/noise_report.h"
+#include "allan_test_support.h"
 #include "ros_test_support.h"
 
 namespace {
@@ -35,23 +36,6 @@ std::string white_and_walk_profile() {
           << "    white_rate: {density_m_s2_per_sqrt_hz: 2.0e-3}\n"
           << "    random_walk: {density_m_s2_per_sqrt_s: 5.0e-5}\n";
   return profile.str();
-}
-
-std::vector<std::vector<double>> read_csv_rows(const std::string& path, std::vector<std::string>* header) {
-  std::istringstream text(read_file(path));
-  std::string line;
-  std::getline(text, line);
-  std::istringstream names(line);
-  for (std::string name; std::getline(names, name, ',');) header->push_back(name);
-  std::vector<std::vector<double>> rows;
-  while (std::getline(text, line)) {
-    if (line.empty()) continue;
-    std::istringstream cells(line);
-    std::vector<double> row;
-    for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::stod(cell));
-    rows.push_back(row);
-  }
-  return rows;
 }
 
 class AllanNoiseReport : public ::testing::Test {
@@ -106,8 +90,9 @@ TEST_F(AllanNoiseReport, PartialCurvesAddUpToTheFittedTotal) {
   for (const char* channel : {"gyro_x", "gyro_y", "gyro_z", "accel_x", "accel_y", "accel_z"}) {
     const std::string path = report_ + "/noise_partial_" + channel + ".csv";
     ASSERT_TRUE(file_exists(path)) << path;
-    std::vector<std::string> header;
-    const auto rows = read_csv_rows(path, &header);
+    const imu_lab::test_support::CsvTable table = imu_lab::test_support::read_csv_table(path);
+    const auto& header = table.header;
+    const auto& rows = table.rows;
     ASSERT_GE(header.size(), 5u) << path << ": white_rate and random_walk at least";
     ASSERT_GT(rows.size(), 10u) << path;
     for (const auto& row : rows) {

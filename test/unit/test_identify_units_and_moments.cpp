@@ -7,6 +7,7 @@
 #include <cmath>
 #include <random>
 
+#include "imu_lab/allan/streaming_tau_plan.h"
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/identify/avar_covariance.h"
 #include "imu_lab/identify/chi_squared.h"
@@ -111,6 +112,38 @@ TEST(IdentifyFitPoints, DecadeGridsOfAnyDensityGiveTheLadder) {
   for (const FitPoint& point : at_thirty) thirty.push_back(point.averaging_factor);
   EXPECT_EQ(ten, (std::vector<int>{1, 2, 3, 4, 6, 10, 16, 25, 40, 63, 100, 158, 251, 398, 631, 1000, 1585}));
   EXPECT_EQ(thirty, ten);
+}
+
+// Beyond its exact range the streaming engine rounds each factor up to a multiple of the pyramid
+// block (allan/streaming_tau_plan.h), so 1585 is reported as 1586 and 158489 as 158720: the
+// ladder takes the nearest curve point, and 10 and 30 points per decade still give one set.
+TEST(IdentifyFitPoints, EngineGridsBeyondTheExactRangeGiveTheSameLadder) {
+  const auto engine_grid = [](double per_decade) {
+    allan::StreamingOptions options;
+    options.points_per_decade = per_decade;
+    options.max_tau_s = 2000.0;
+    std::vector<allan::StabilityPoint> points;
+    for (const allan::PlannedLevel& level : allan::plan_taus(options, 0.01).levels) {
+      for (int factor : level.level_averaging_factors) {
+        allan::StabilityPoint point;
+        point.averaging_factor = factor << level.level;
+        point.tau_s = 0.01 * point.averaging_factor;
+        point.deviation = 1.0 / std::sqrt(point.tau_s);
+        points.push_back(point);
+      }
+    }
+    return points;
+  };
+  const auto factors = [](const std::vector<FitPoint>& kept) {
+    std::vector<int> m;
+    for (const FitPoint& point : kept) m.push_back(point.averaging_factor);
+    return m;
+  };
+  const std::vector<int> at_ten = factors(select_fit_points(engine_grid(10.0)));
+  EXPECT_EQ(factors(select_fit_points(engine_grid(30.0))), at_ten);
+  // round(10^(k / 5)) for k = 0 .. 26, the ten beyond 1000 as the engine reports them
+  EXPECT_EQ(at_ten, (std::vector<int>{1, 2, 3, 4, 6, 10, 16, 25, 40, 63, 100, 158, 251, 398, 631, 1000, 1586, 2512,
+                                      3984, 6312, 10000, 15856, 25120, 39872, 63104, 100096, 158720}));
 }
 
 // For a white-noise-only model the GMM information about ln N is 4 (1' R^-1 1) with R the

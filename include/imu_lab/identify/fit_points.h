@@ -22,11 +22,17 @@ struct FitPoint {
 // The default spacing of the fit points: a factor sqrt(2) in tau (two per octave).
 constexpr double kFitPointRatio = 1.41;
 // The ladder of averaging factors round(10^(k / 5)), k = 0, 1, ...: every decade grid of 5, 10,
-// 20, 30 ... points per decade holds it exactly.
+// 20, 30 ... points per decade holds it, exactly within the engine's exact range.
 constexpr double kLadderPointsPerDecade = 5.0;
+// How far (relative, in tau) a curve point may lie from a ladder factor and still stand for it.
+// Beyond its exact range the streaming engine reports each factor rounded up to a multiple of the
+// pyramid block, by less than 2 / exact limit (0.2 % at the default limit 1000;
+// allan/streaming_tau_plan.h); a 30-per-decade grid's neighbours lie 8 % apart.
+constexpr double kLadderTolerance = 0.03;
 
-// When the curve's grid holds at least 80 % of the ladder up to its largest usable factor, the
-// usable points on the ladder: the same points whatever the grid's density, so a denser grid
+// When the curve's grid holds at least 80 % of the ladder up to its largest usable factor (a
+// factor counts as held when a curve point lies within kLadderTolerance of it), the usable points
+// nearest the ladder's factors: the same points whatever the grid's density, so a denser grid
 // changes neither the estimate nor the selection. Otherwise (octaves, hand-picked taus) each
 // usable point (finite, deviation > 0, m >= 1) whose tau is at least `min_ratio` times the last
 // kept one. Throws InputError (common/config_error.h) naming the problem when fewer than 3
