@@ -505,7 +505,7 @@ int run_rlg(double hours, double rate_hz, int replicas, const std::string& profi
   std::printf("truth: Q %.3g rad, N %.3g rad/s/sqrt(Hz), B %.3g rad/s\n", true_q, true_n, true_b);
   std::printf("graphical: N slope reading at 1 s %.3g, B flat tangent %.3g\n",
               fit.graphical.white_rate_at_1s, fit.graphical.bias_instability_from_minimum);
-  report("Ceres covariance:");
+  report("moment covariance:");
   if (replicas > 1) {
     apply_bootstrap(bootstrap_uncertainty(fit, {replicas, 5}), &fit);
     report("bootstrap:");
