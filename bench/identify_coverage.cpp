@@ -1,7 +1,7 @@
 // Coverage of the identification's reported intervals, per term kind, on emulated records whose
 // truth is exact (doc/identification.md, "Emulated coverage").
 //
-//   identify_coverage coverage [seeds=20] [threads=2] [replicas=0]
+//   identify_coverage coverage [seeds=20] [threads=2] [replicas=0] [cases=1234567]
 //     Every case below on all six axes of a gyro and an accelerometer triad (their own noise
 //     streams), `seeds` records each, fitted with default options (the output's LSB given, as
 //     the allan tool finds it in the data). Every truth parameter counts under its term's kind
@@ -11,7 +11,7 @@
 //     absent or unconstrained is inside only if the truth lies below its reported upper bound
 //     (shaped terms get no bound when absent, so they count outside). Targets: 60-76 % inside
 //     the 68.3 % interval, >= 90 % inside the 95 % one. replicas > 1 replaces the sigmas by the
-//     parametric bootstrap's (slow).
+//     parametric bootstrap's (slow); `cases` picks cases by their numbers (digits).
 //   identify_coverage rlg [hours=150] [rate_hz=10] [replicas=0] [profile=config/sensors/rlg_navigation.yaml]
 //     The navigation-grade ring-laser gyro profile (x axis, at rest): B's estimate and sigma, and
 //     the record length the fit says B needs for 15 %. The profile's 1 arcsec pulses are replaced
@@ -368,8 +368,13 @@ void print_tallies(const std::array<Tally, static_cast<int>(CoverageKind::kCount
   }
 }
 
-int run_coverage(int seeds, int threads, int replicas) {
-  const std::vector<CoverageCase> cases = coverage_cases();
+int run_coverage(int seeds, int threads, int replicas, const std::string& picked) {
+  std::vector<CoverageCase> cases;
+  for (const CoverageCase& study : coverage_cases()) {
+    if (picked.find(study.name[0]) != std::string::npos) cases.push_back(study);
+  }
+  // A case's number leads its name; it seeds its records, whichever cases run.
+  const auto number = [&](size_t c) { return cases[c].name[0] - '0'; };
   struct Job {
     size_t case_index;
     int seed;
@@ -391,7 +396,7 @@ int run_coverage(int seeds, int threads, int replicas) {
   const auto work = [&] {
     for (size_t j = next++; j < jobs.size(); j = next++) {
       const CoverageCase& study = cases[jobs[j].case_index];
-      const std::uint64_t seed = 1000 * (jobs[j].case_index + 1) + jobs[j].seed;
+      const std::uint64_t seed = 1000 * number(jobs[j].case_index) + jobs[j].seed;
       FitOptions options;
       for (int triad = 0; triad < 2; ++triad) {
         double mark_s = thread_cpu_s();
@@ -410,15 +415,15 @@ int run_coverage(int seeds, int threads, int replicas) {
             judge_axis(study.truth[triad][axis], fit, &record);
           } catch (const std::exception& error) {
             record.failed = true;
-            std::fprintf(stderr, "case %zu seed %d triad %d axis %d failed: %s\n", jobs[j].case_index + 1,
+            std::fprintf(stderr, "case %d seed %d triad %d axis %d failed: %s\n", number(jobs[j].case_index),
                          jobs[j].seed, triad, axis, error.what());
           }
           outcomes[j].push_back(record);
         }
         fit_cpu_s[j] += thread_cpu_s() - mark_s;
       }
-      std::fprintf(stderr, "[%5.0f s] case %zu seed %d: emulation and OAVAR %.1f s CPU, six fits %.1f s CPU\n",
-                   seconds_since(start), jobs[j].case_index + 1, jobs[j].seed, emulate_cpu_s[j], fit_cpu_s[j]);
+      std::fprintf(stderr, "[%5.0f s] case %d seed %d: emulation and OAVAR %.1f s CPU, six fits %.1f s CPU\n",
+                   seconds_since(start), number(jobs[j].case_index), jobs[j].seed, emulate_cpu_s[j], fit_cpu_s[j]);
     }
   };
   std::vector<std::thread> pool;
@@ -520,13 +525,13 @@ int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "coverage";
   if (mode == "coverage") {
     return run_coverage(argc > 2 ? std::atoi(argv[2]) : 20, argc > 3 ? std::atoi(argv[3]) : 2,
-                        argc > 4 ? std::atoi(argv[4]) : 0);
+                        argc > 4 ? std::atoi(argv[4]) : 0, argc > 5 ? argv[5] : "1234567");
   }
   if (mode == "rlg") {
     return run_rlg(argc > 2 ? std::atof(argv[2]) : 150.0, argc > 3 ? std::atof(argv[3]) : 10.0,
                    argc > 4 ? std::atoi(argv[4]) : 0,
                    argc > 5 ? argv[5] : "config/sensors/rlg_navigation.yaml");
   }
-  std::fprintf(stderr, "usage: identify_coverage coverage [seeds] [threads] [replicas] | rlg [hours] [rate_hz] [replicas] [profile]\n");
+  std::fprintf(stderr, "usage: identify_coverage coverage [seeds] [threads] [replicas] [cases] | rlg [hours] [rate_hz] [replicas] [profile]\n");
   return 2;
 }
