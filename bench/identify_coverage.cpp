@@ -1,20 +1,35 @@
-// Long studies of the noise identification (not run by CI).
+// Coverage of the identification's reported intervals, per term kind, on emulated records whose
+// truth is exact (doc/identification.md, "Emulated coverage").
 //
-//   identify_coverage coverage [seeds=40] [replicas=20]
-//     Case 1 (the MEMS mixture of test_identify_mems_mixture.cpp) over many seeds: the share of
-//     estimates within 1 reported sigma of the truth, for the Ceres-covariance sigma and for the
-//     bootstrap sigma (target: 50 % to 85 %, ~68 % if the sigmas mean what they say).
+//   identify_coverage coverage [seeds=20] [threads=2] [replicas=0] [cases=1234567]
+//     Every case below on all six axes of a gyro and an accelerometer triad (their own noise
+//     streams), `seeds` records each, fitted with default options (the output's LSB given, as
+//     the allan tool finds it in the data). Every truth parameter counts under its term's kind
+//     (N, B, K, Q, R, Markov: amplitude and T_c, sinusoid: amplitude and f, resonance: rms, f_n
+//     and width, low-pass: the white noise's front-end corner). A parameter of a term reported
+//     present is inside when the reported 68.3 % (95 %) interval holds it; a term reported
+//     absent or unconstrained is inside only if the truth lies below its reported upper bound
+//     (shaped terms get no bound when absent, so they count outside). Targets: 60-76 % inside
+//     the 68.3 % interval, >= 90 % inside the 95 % one. replicas > 1 replaces the sigmas by the
+//     parametric bootstrap's (slow); `cases` picks cases by their numbers (digits).
 //   identify_coverage rlg [hours=150] [rate_hz=10] [replicas=0] [profile=config/sensors/rlg_navigation.yaml]
 //     The navigation-grade ring-laser gyro profile (x axis, at rest): B's estimate and sigma, and
 //     the record length the fit says B needs for 15 %. The profile's 1 arcsec pulses are replaced
 //     by their white-angle model Q = S / sqrt(12) (a dithered RLG): undithered at rest the angle
 //     moves ~0.02 pulse per sample at 10 Hz and the rounding error is a slow sawtooth, not the
 //     white angle noise any AVAR term describes.
+#include <algorithm>
+#include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
+#include <random>
+#include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "imu_lab/allan/batch.h"
@@ -23,6 +38,7 @@
 #include "imu_lab/identify/bootstrap.h"
 #include "imu_lab/identify/fit.h"
 #include "imu_lab/identify/record_length.h"
+#include "imu_lab/identify/record_simulation.h"
 
 using namespace imu_lab;
 using namespace imu_lab::identify;
@@ -33,17 +49,52 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Axis-x rates of a triad channel at rest.
-std::vector<double> emulate_x(const emulator::TriadErrorModel& model, double rate_hz,
-                              double duration_s, std::uint64_t seed) {
-  emulator::TriadChannel channel(model, "gyro", seed);
+double process_cpu_s() {
+  timespec now{};
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+  return now.tv_sec + now.tv_nsec * 1e-9;
+}
+
+// Rates of the three axes of a triad at rest.
+std::array<std::vector<double>, 3> emulate_triad(const emulator::TriadErrorModel& model, const std::string& triad_name,
+                                                 double rate_hz, double duration_s, std::uint64_t seed) {
+  emulator::TriadChannel channel(model, triad_name, seed);
   const double interval_s = 1.0 / rate_hz;
-  const long long count = static_cast<long long>(duration_s * rate_hz);
-  std::vector<double> rates(count);
+  const long long count = std::llround(duration_s * rate_hz);
+  std::array<std::vector<double>, 3> rates;
+  for (auto& axis : rates) axis.resize(count);
   for (long long k = 0; k < count; ++k) {
-    rates[k] = channel.measure(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), k * interval_s, interval_s)[0];
+    const Eigen::Vector3d sample =
+        channel.measure(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), k * interval_s, interval_s);
+    for (int axis = 0; axis < 3; ++axis) rates[axis][k] = sample[axis];
   }
   return rates;
+}
+
+std::vector<double> emulate_x(const emulator::TriadErrorModel& model, double rate_hz, double duration_s,
+                              std::uint64_t seed) {
+  return emulate_triad(model, "gyro", rate_hz, duration_s, seed)[0];
+}
+
+// The overlapping Allan variance at the allan tool's default grid, round(10^(i / 10)), which holds
+// the fit's ladder of points (fit_points.h), computed exactly (no pyramid levels).
+std::vector<allan::StabilityPoint> oavar_curve(const std::vector<double>& rates, double rate_hz) {
+  const double tau0_s = 1.0 / rate_hz;
+  const std::vector<double> phase = allan::phase_from_frequency(rates, tau0_s);
+  const long long samples = static_cast<long long>(rates.size());
+  std::vector<allan::StabilityPoint> curve;
+  for (int i = 0;; ++i) {
+    const int m = static_cast<int>(std::lround(std::pow(10.0, i / 10.0)));
+    if (2LL * m > samples - 1) break;
+    if (!curve.empty() && curve.back().averaging_factor == m) continue;
+    allan::StabilityPoint point;
+    point.averaging_factor = m;
+    point.tau_s = m * tau0_s;
+    point.term_count = allan::term_count(allan::Statistic::kOverlappingAllan, phase.size(), m);
+    point.deviation = std::sqrt(allan::overlapping_allan_variance(phase, tau0_s, m));
+    curve.push_back(point);
+  }
+  return curve;
 }
 
 FitResult fit_rates(const std::vector<double>& rates, double rate_hz) {
@@ -53,62 +104,364 @@ FitResult fit_rates(const std::vector<double>& rates, double rate_hz) {
   return fit_noise_model(curve, 1.0 / rate_hz, duration_s);
 }
 
-struct Truth {
+// ---------------------------------------------------------------------------------------------
+// Coverage per kind.
+
+// The kinds the issue counts: the terms' kinds, and the white noise's front-end corner apart.
+enum class CoverageKind { kN, kB, kK, kQ, kR, kMarkov, kSinusoid, kResonance, kLowPass, kCount };
+const char* const kCoverageKindNames[] = {"N", "B", "K", "Q", "R", "Markov", "sinusoid", "resonance", "low-pass"};
+
+CoverageKind coverage_kind(TermKind kind) {
+  switch (kind) {
+    case TermKind::kWhiteRate: return CoverageKind::kN;
+    case TermKind::kBiasInstability: return CoverageKind::kB;
+    case TermKind::kRandomWalk: return CoverageKind::kK;
+    case TermKind::kWhiteAngle: return CoverageKind::kQ;
+    case TermKind::kRateRamp: return CoverageKind::kR;
+    case TermKind::kMarkov: return CoverageKind::kMarkov;
+    case TermKind::kSinusoid: return CoverageKind::kSinusoid;
+    case TermKind::kResonance: return CoverageKind::kResonance;
+    default: throw std::invalid_argument("identify_coverage: no coverage kind for " + term_kind_name(kind));
+  }
+}
+
+// One case: a rate, a length and the truth of each triad's axes (a white rate term's shape is the
+// triad's anti-alias corner, which the emulator applies as bandwidth_hz).
+struct CoverageCase {
   const char* name;
-  double value;
+  double rate_hz;
+  double duration_s;
+  std::array<std::array<NoiseModel, 3>, 2> truth;  // [gyro, accelerometer][axis]
+  std::array<double, 2> output_lsb;                // per triad, 0 = unquantised
 };
 
-int run_coverage(int seeds, int replicas) {
-  // Case 1, as in test_identify_mems_mixture.cpp.
-  const double rate_hz = 10.0, duration_s = 24.0 * 3600.0;
-  const std::vector<Truth> truths = {{"white_angle", 4.4e-6}, {"white_rate", 4.4e-5},
-                                     {"bias_instability", 1.49e-5}, {"random_walk", 3.2e-5}};
+// The same model with every amplitude but the white noise's multiplied by `factor` (per-axis
+// variety in the new cases).
+NoiseModel scaled_except_white(NoiseModel model, double factor) {
+  for (Term& term : model.terms) {
+    if (term.kind != TermKind::kWhiteRate) term.amplitude *= factor;
+  }
+  return model;
+}
+
+std::array<NoiseModel, 3> same_on_all_axes(const NoiseModel& model) { return {model, model, model}; }
+std::array<NoiseModel, 3> varied_axes(const NoiseModel& model) {
+  return {model, scaled_except_white(model, 0.7), scaled_except_white(model, 1.4)};
+}
+NoiseModel scaled(NoiseModel model, double factor) {
+  for (Term& term : model.terms) term.amplitude *= factor;
+  return model;
+}
+
+std::vector<CoverageCase> coverage_cases() {
+  std::vector<CoverageCase> cases;
+  // The identification tests' cases (test/unit/test_identify_*.cpp), the accelerometer triad
+  // carrying the gyro's model scaled (the fit is scale-free).
+  {
+    NoiseModel mems;  // case 1: MEMS mixture, 10 Hz, 24 h
+    mems.terms = {{TermKind::kWhiteAngle, 4.4e-6},
+                  {TermKind::kWhiteRate, 4.4e-5},
+                  {TermKind::kBiasInstability, 1.49e-5, 5.0},
+                  {TermKind::kRandomWalk, 3.2e-5}};
+    cases.push_back({"1 MEMS mixture (Q N B K), 10 Hz, 24 h", 10.0, 24.0 * 3600.0,
+                     {same_on_all_axes(mems), same_on_all_axes(scaled(mems, 30.0))}, {0.0, 0.0}});
+  }
+  {
+    NoiseModel fog;  // case 2: FOG, a Markov hump over the white noise, B under it
+    fog.terms = {{TermKind::kWhiteRate, 2.9e-7},
+                 {TermKind::kBiasInstability, 1.5e-8, 100.0},
+                 {TermKind::kMarkov, 1.16e-5, 0.01}};
+    cases.push_back({"2 FOG hump (N B Markov), 2 kHz, 600 s", 2000.0, 600.0,
+                     {same_on_all_axes(fog), same_on_all_axes(scaled(fog, 1e4))}, {0.0, 0.0}});
+  }
+  {
+    NoiseModel white;  // case 3: white rate noise only
+    white.terms = {{TermKind::kWhiteRate, 1.75e-4}};
+    cases.push_back({"3 white noise (N), 100 Hz, 1 h", 100.0, 3600.0,
+                     {same_on_all_axes(white), same_on_all_axes(scaled(white, 10.0))}, {0.0, 0.0}});
+  }
+  {
+    NoiseModel gyro, accelerometer;  // issue 14's reproduction: N and K
+    gyro.terms = {{TermKind::kWhiteRate, 8e-5}, {TermKind::kRandomWalk, 2.2e-6}};
+    accelerometer.terms = {{TermKind::kWhiteRate, 1.4e-3}, {TermKind::kRandomWalk, 8.6e-5}};
+    cases.push_back({"4 N and K (issue 14), 400 Hz, 1 h", 400.0, 3600.0,
+                     {same_on_all_axes(gyro), same_on_all_axes(accelerometer)}, {0.0, 0.0}});
+  }
+  // New cases: the front end, lines, resonances, Markov terms, ramps, output LSB.
+  {
+    // A MEMS unit like the ADIS16405 recordings (doc/identification.md): N behind a 40 Hz
+    // front end at 100 Hz, B, K, a mode near 15 Hz, a 0.5 Hz line, a quantised output.
+    NoiseModel gyro, accelerometer;
+    gyro.terms = {{TermKind::kWhiteRate, 7.3e-4, 40.0},
+                  {TermKind::kBiasInstability, 1.7e-4, 50.0},
+                  {TermKind::kRandomWalk, 3e-5},
+                  {TermKind::kSinusoid, 1.5e-3, 0.5},
+                  {TermKind::kResonance, 3e-3, 15.0, 4.0}};
+    accelerometer.terms = {{TermKind::kWhiteRate, 4e-3, 40.0},
+                           {TermKind::kBiasInstability, 3e-3, 50.0},
+                           {TermKind::kRandomWalk, 1e-4},
+                           {TermKind::kSinusoid, 6e-3, 0.55},
+                           {TermKind::kResonance, 1e-2, 20.0, 6.0}};
+    cases.push_back({"5 MEMS front end (N+low-pass B K line mode, LSB), 100 Hz, 2 h", 100.0, 7200.0,
+                     {varied_axes(gyro), varied_axes(accelerometer)}, {2e-3, 1e-2}});
+  }
+  {
+    // A faster sensor: a 80 Hz front end at 200 Hz, a Markov hump (T_c 2 s), a 3 Hz line, a mode
+    // at 40 Hz and a rate ramp.
+    NoiseModel gyro, accelerometer;
+    gyro.terms = {{TermKind::kWhiteRate, 2e-4, 80.0},
+                  {TermKind::kRateRamp, 2e-7},
+                  {TermKind::kMarkov, 1e-3, 2.0},
+                  {TermKind::kSinusoid, 4e-4, 3.0},
+                  {TermKind::kResonance, 1.5e-3, 40.0, 10.0}};
+    accelerometer.terms = {{TermKind::kWhiteRate, 1e-3, 80.0},
+                           {TermKind::kRateRamp, 5e-7},
+                           {TermKind::kMarkov, 4e-3, 5.0},
+                           {TermKind::kSinusoid, 2e-3, 1.7},
+                           {TermKind::kResonance, 8e-3, 30.0, 8.0}};
+    cases.push_back({"6 front end, Markov, line, mode, ramp, 200 Hz, 1 h", 200.0, 3600.0,
+                     {varied_axes(gyro), varied_axes(accelerometer)}, {0.0, 0.0}});
+  }
+  {
+    // Angle white noise (an increment-quantised output), white rate, a slow Markov and a ramp.
+    NoiseModel gyro, accelerometer;
+    gyro.terms = {{TermKind::kWhiteAngle, 2e-5},
+                  {TermKind::kWhiteRate, 5e-5},
+                  {TermKind::kRateRamp, 3e-8},
+                  {TermKind::kMarkov, 2e-4, 60.0}};
+    accelerometer.terms = {{TermKind::kWhiteAngle, 2e-4},
+                           {TermKind::kWhiteRate, 8e-4},
+                           {TermKind::kRateRamp, 2e-7},
+                           {TermKind::kMarkov, 2e-3, 20.0}};
+    cases.push_back({"7 angle noise, Markov, ramp (Q N Markov R), 20 Hz, 4 h", 20.0, 4.0 * 3600.0,
+                     {varied_axes(gyro), varied_axes(accelerometer)}, {0.0, 0.0}});
+  }
+  return cases;
+}
+
+// One triad of a case as the emulator's error model: the white rate term's shape becomes the
+// triad's bandwidth_hz (the emulator's own front end), the LSB its output register, and every
+// sinusoid gets a phase of its own per record.
+emulator::TriadErrorModel triad_model(const CoverageCase& study, int triad, std::uint64_t seed) {
   emulator::TriadErrorModel model;
-  model.noise_per_axis[0] = {
-      noise::WhiteRateParameters{4.4e-5},
-      noise::BiasInstabilityParameters{1.49e-5, rate_hz / 2.0, 2.0 / rate_hz, duration_s},
-      noise::RandomWalkParameters{3.2e-5}, noise::WhiteAngleParameters{4.4e-6, 0.0}};
-  std::vector<int> within_ceres(truths.size(), 0), within_bootstrap(truths.size(), 0);
-  std::vector<int> found(truths.size(), 0);
-  std::vector<double> relative_sigma_sum(truths.size(), 0.0);
-  const auto start = std::chrono::steady_clock::now();
-  for (int seed = 1; seed <= seeds; ++seed) {
-    FitResult fit = fit_rates(emulate_x(model, rate_hz, duration_s, 1000 + seed), rate_hz);
-    std::vector<double> ceres_sigma(truths.size(), NAN);
-    for (size_t i = 0; i < truths.size(); ++i) {
-      const TermEstimate* term = fit.find(truths[i].name);
-      if (term != nullptr && term->status != TermStatus::kAbsent) ceres_sigma[i] = term->amplitude.sigma;
-    }
-    if (replicas > 1) apply_bootstrap(bootstrap_uncertainty(fit, {replicas, 77ULL * seed}), &fit);
-    std::printf("seed %3d:", seed);
-    for (size_t i = 0; i < truths.size(); ++i) {
-      const TermEstimate* term = fit.find(truths[i].name);
-      if (term == nullptr || term->status == TermStatus::kAbsent) {
-        std::printf("  %s absent (bound %.3g)", truths[i].name, term ? term->amplitude.upper_bound : NAN);
-        continue;
+  const double tau0_s = 1.0 / study.rate_hz;
+  std::mt19937_64 phases(seed * 6151 + triad);
+  for (int axis = 0; axis < 3; ++axis) {
+    NoiseModel unfiltered = study.truth[triad][axis];
+    for (Term& term : unfiltered.terms) {
+      if (term.kind == TermKind::kWhiteRate && term.shape > 0.0) {
+        model.bandwidth_hz = term.shape;
+        term.shape = 0.0;
       }
-      ++found[i];
-      const double error = std::abs(term->amplitude.value - truths[i].value);
-      within_ceres[i] += error < ceres_sigma[i];
-      within_bootstrap[i] += error < term->amplitude.sigma;
-      relative_sigma_sum[i] += term->amplitude.sigma / term->amplitude.value;
-      std::printf("  %s %.3g+-%.2g", truths[i].name, term->amplitude.value, term->amplitude.sigma);
     }
-    std::printf("  (%.0f s)\n", seconds_since(start));
-    std::fflush(stdout);
+    model.noise_per_axis[axis] = emulator_processes(unfiltered, tau0_s, study.duration_s);
+    for (auto& process : model.noise_per_axis[axis]) {
+      if (auto* sinusoid = std::get_if<noise::SinusoidParameters>(&process)) {
+        sinusoid->phase_rad = std::uniform_real_distribution<double>(0.0, 2.0 * M_PI)(phases);
+      }
+    }
   }
-  int total_ceres = 0, total_bootstrap = 0, total = 0;
-  std::printf("\nterm               found  within 1 sigma: ceres  bootstrap  mean rel. sigma (bootstrap)\n");
-  for (size_t i = 0; i < truths.size(); ++i) {
-    std::printf("%-18s %3d/%-3d %17.0f %%  %8.0f %%  %8.1f %%\n", truths[i].name, found[i], seeds,
-                100.0 * within_ceres[i] / seeds, 100.0 * within_bootstrap[i] / seeds,
-                found[i] ? 100.0 * relative_sigma_sum[i] / found[i] : NAN);
-    total_ceres += within_ceres[i];
-    total_bootstrap += within_bootstrap[i];
-    total += seeds;
+  model.output_lsb = Eigen::Vector3d::Constant(study.output_lsb[triad]);
+  return model;
+}
+
+struct ParameterOutcome {
+  CoverageKind kind;
+  bool inside_68 = false;
+  bool inside_95 = false;
+  // p: term present, its interval used; b: absent or unconstrained, judged by its upper bound;
+  // n: reported absent with no bound (shaped terms) or not fitted.
+  char judged_by = 'n';
+  double z = NAN;  // |ln(truth / value)| / log_sigma when judged by the interval
+};
+
+struct RecordOutcome {
+  std::vector<ParameterOutcome> parameters;
+  std::array<int, static_cast<int>(CoverageKind::kCount)> spurious{};  // present terms of kinds the truth lacks
+  bool failed = false;
+};
+
+ParameterOutcome judge(CoverageKind kind, const ParameterEstimate& estimate, TermStatus status, double truth) {
+  ParameterOutcome outcome{kind};
+  if (status == TermStatus::kPresent && std::isfinite(estimate.value) && std::isfinite(estimate.log_sigma)) {
+    outcome.judged_by = 'p';
+    outcome.z = std::abs(std::log(truth / estimate.value)) / estimate.log_sigma;
+    outcome.inside_68 = truth >= estimate.interval_low(1.0) && truth <= estimate.interval_high(1.0);
+    outcome.inside_95 = truth >= estimate.interval_low(1.959964) && truth <= estimate.interval_high(1.959964);
+  } else if (std::isfinite(estimate.upper_bound)) {
+    outcome.judged_by = 'b';
+    outcome.inside_68 = outcome.inside_95 = truth <= estimate.upper_bound;
   }
-  std::printf("all terms: within 1 sigma %.1f %% (ceres covariance), %.1f %% (bootstrap)\n",
-              100.0 * total_ceres / total, 100.0 * total_bootstrap / total);
+  return outcome;
+}
+
+// Each truth term of one axis against the fit: a numbered kind matches the reported term of that
+// kind nearest in shape.
+void judge_axis(const NoiseModel& truth, const FitResult& fit, RecordOutcome* record) {
+  std::array<bool, static_cast<int>(CoverageKind::kCount)> in_truth{};
+  bool truth_has_front_end = false;
+  for (const Term& term : truth.terms) {
+    in_truth[static_cast<int>(coverage_kind(term.kind))] = true;
+    const TermEstimate* match = nullptr;
+    for (const TermEstimate& reported : fit.terms) {
+      if (reported.kind != term.kind) continue;
+      if (match == nullptr || (reported.status != TermStatus::kAbsent && match->status == TermStatus::kAbsent) ||
+          (reported.status != TermStatus::kAbsent && has_shape(term.kind) && term.shape > 0.0 &&
+           std::abs(std::log(reported.shape.value / term.shape)) < std::abs(std::log(match->shape.value / term.shape)))) {
+        match = &reported;
+      }
+    }
+    const CoverageKind kind = coverage_kind(term.kind);
+    const TermEstimate absent;
+    const TermEstimate& reported = match != nullptr ? *match : absent;
+    record->parameters.push_back(judge(kind, reported.amplitude, reported.status, term.amplitude));
+    if (term.kind == TermKind::kWhiteRate && term.shape > 0.0) {
+      truth_has_front_end = true;
+      record->parameters.push_back(judge(CoverageKind::kLowPass, reported.shape,
+                                         reported.shape_fitted ? reported.status : TermStatus::kAbsent, term.shape));
+    }
+    if (term.kind == TermKind::kMarkov || term.kind == TermKind::kSinusoid || term.kind == TermKind::kResonance) {
+      record->parameters.push_back(judge(kind, reported.shape, reported.status, term.shape));
+    }
+    if (term.kind == TermKind::kResonance) {
+      record->parameters.push_back(judge(kind, reported.width, reported.status, term.width));
+    }
+  }
+  for (const TermEstimate& reported : fit.terms) {
+    if (reported.status != TermStatus::kPresent) continue;
+    if (reported.kind == TermKind::kWhiteRate && reported.shape_fitted && !truth_has_front_end) {
+      ++record->spurious[static_cast<int>(CoverageKind::kLowPass)];
+    }
+    if (reported.kind == TermKind::kZeroDcFamily) continue;
+    if (!in_truth[static_cast<int>(coverage_kind(reported.kind))]) ++record->spurious[static_cast<int>(coverage_kind(reported.kind))];
+  }
+}
+
+struct Tally {
+  int truths = 0, inside_68 = 0, inside_95 = 0, by_interval = 0, by_bound = 0, unjudged = 0, spurious = 0;
+  void add(const ParameterOutcome& outcome) {
+    ++truths;
+    inside_68 += outcome.inside_68;
+    inside_95 += outcome.inside_95;
+    by_interval += outcome.judged_by == 'p';
+    by_bound += outcome.judged_by == 'b';
+    unjudged += outcome.judged_by == 'n';
+  }
+};
+
+void print_tallies(const std::array<Tally, static_cast<int>(CoverageKind::kCount)>& tallies, bool with_targets) {
+  std::printf("  %-10s %6s %9s %9s   %s%s\n", "kind", "truths", "in 68.3%", "in 95%",
+              "judged by: interval / upper bound / nothing reported; spurious present terms",
+              with_targets ? "   target 60-76 % / >= 90 %" : "");
+  for (int k = 0; k < static_cast<int>(CoverageKind::kCount); ++k) {
+    const Tally& tally = tallies[k];
+    if (tally.truths == 0 && tally.spurious == 0) continue;
+    const double in68 = 100.0 * tally.inside_68 / std::max(1, tally.truths);
+    const double in95 = 100.0 * tally.inside_95 / std::max(1, tally.truths);
+    std::printf("  %-10s %6d %8.1f%% %8.1f%%   %d / %d / %d; %d", kCoverageKindNames[k], tally.truths, in68, in95,
+                tally.by_interval, tally.by_bound, tally.unjudged, tally.spurious);
+    if (with_targets && tally.truths > 0) {
+      std::printf("   %s", in68 >= 60.0 && in68 <= 76.0 && in95 >= 90.0 ? "met" : "MISSED");
+      if (tally.truths < 240) std::printf(" (fewer than 240 truths)");
+    }
+    std::printf("\n");
+  }
+}
+
+int run_coverage(int seeds, int threads, int replicas, const std::string& picked) {
+  std::vector<CoverageCase> cases;
+  for (const CoverageCase& study : coverage_cases()) {
+    if (picked.find(study.name[0]) != std::string::npos) cases.push_back(study);
+  }
+  // A case's number leads its name; it seeds its records, whichever cases run.
+  const auto number = [&](size_t c) { return cases[c].name[0] - '0'; };
+  struct Job {
+    size_t case_index;
+    int seed;
+  };
+  std::vector<Job> jobs;
+  for (int seed = 1; seed <= seeds; ++seed) {
+    for (size_t c = 0; c < cases.size(); ++c) jobs.push_back({c, seed});
+  }
+  std::vector<std::vector<RecordOutcome>> outcomes(jobs.size());
+  std::vector<double> emulate_cpu_s(jobs.size(), 0.0), fit_cpu_s(jobs.size(), 0.0);
+  std::atomic<size_t> next{0};
+  const auto start = std::chrono::steady_clock::now();
+  const double start_cpu_s = process_cpu_s();
+  const auto thread_cpu_s = [] {
+    timespec now{};
+    ::clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return now.tv_sec + now.tv_nsec * 1e-9;
+  };
+  const auto work = [&] {
+    for (size_t j = next++; j < jobs.size(); j = next++) {
+      const CoverageCase& study = cases[jobs[j].case_index];
+      const std::uint64_t seed = 1000 * number(jobs[j].case_index) + jobs[j].seed;
+      FitOptions options;
+      for (int triad = 0; triad < 2; ++triad) {
+        double mark_s = thread_cpu_s();
+        const auto rates = emulate_triad(triad_model(study, triad, seed), triad == 0 ? "gyro" : "accelerometer",
+                                         study.rate_hz, study.duration_s, seed);
+        std::array<std::vector<allan::StabilityPoint>, 3> curves;
+        for (int axis = 0; axis < 3; ++axis) curves[axis] = oavar_curve(rates[axis], study.rate_hz);
+        emulate_cpu_s[j] += thread_cpu_s() - mark_s;
+        mark_s = thread_cpu_s();
+        options.output_quantization_step = study.output_lsb[triad];
+        for (int axis = 0; axis < 3; ++axis) {
+          RecordOutcome record;
+          try {
+            FitResult fit = fit_noise_model(curves[axis], 1.0 / study.rate_hz, study.duration_s, options);
+            if (replicas > 1) apply_bootstrap(bootstrap_uncertainty(fit, {replicas, 77ULL * seed + axis}), &fit);
+            judge_axis(study.truth[triad][axis], fit, &record);
+          } catch (const std::exception& error) {
+            record.failed = true;
+            std::fprintf(stderr, "case %d seed %d triad %d axis %d failed: %s\n", number(jobs[j].case_index),
+                         jobs[j].seed, triad, axis, error.what());
+          }
+          outcomes[j].push_back(record);
+        }
+        fit_cpu_s[j] += thread_cpu_s() - mark_s;
+      }
+      std::fprintf(stderr, "[%5.0f s] case %d seed %d: emulation and OAVAR %.1f s CPU, six fits %.1f s CPU\n",
+                   seconds_since(start), number(jobs[j].case_index), jobs[j].seed, emulate_cpu_s[j], fit_cpu_s[j]);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 0; t < std::max(1, threads); ++t) pool.emplace_back(work);
+  for (auto& thread : pool) thread.join();
+
+  using Tallies = std::array<Tally, static_cast<int>(CoverageKind::kCount)>;
+  Tallies total{};
+  std::vector<Tallies> per_case(cases.size(), Tallies{});
+  std::vector<double> case_emulate_s(cases.size(), 0.0), case_fit_s(cases.size(), 0.0);
+  int failures = 0;
+  for (size_t j = 0; j < jobs.size(); ++j) {
+    const size_t c = jobs[j].case_index;
+    case_emulate_s[c] += emulate_cpu_s[j];
+    case_fit_s[c] += fit_cpu_s[j];
+    for (const RecordOutcome& record : outcomes[j]) {
+      failures += record.failed;
+      for (const ParameterOutcome& parameter : record.parameters) {
+        total[static_cast<int>(parameter.kind)].add(parameter);
+        per_case[c][static_cast<int>(parameter.kind)].add(parameter);
+      }
+      for (int k = 0; k < static_cast<int>(CoverageKind::kCount); ++k) {
+        total[k].spurious += record.spurious[k];
+        per_case[c][k].spurious += record.spurious[k];
+      }
+    }
+  }
+  std::printf("identify_coverage coverage: %d seeds x %zu cases x 6 axes, %s sigmas\n", seeds, cases.size(),
+              replicas > 1 ? "bootstrap" : "default (moment covariance)");
+  for (size_t c = 0; c < cases.size(); ++c) {
+    std::printf("case %s: emulation and OAVAR %.0f s CPU, fits %.0f s CPU (%.2f s per axis)\n", cases[c].name,
+                case_emulate_s[c], case_fit_s[c], case_fit_s[c] / (6.0 * seeds));
+    print_tallies(per_case[c], false);
+  }
+  std::printf("all cases:\n");
+  print_tallies(total, true);
+  std::printf("failed fits: %d; %.0f s wall, %.0f s CPU on %d threads\n", failures, seconds_since(start),
+              process_cpu_s() - start_cpu_s, threads);
   return 0;
 }
 
@@ -136,8 +489,8 @@ int run_rlg(double hours, double rate_hz, int replicas, const std::string& profi
   const auto rates = emulate_x(gyro, rate_hz, duration_s, 1);
   std::printf("emulated %.0f h at %.0f Hz in %.0f s\n", hours, rate_hz, seconds_since(start));
   FitResult fit = fit_rates(rates, rate_hz);
-  std::printf("fitted in %.1f s; quality: deviance %.1f on %d dof, p = %.3f\n", seconds_since(start),
-              fit.quality.deviance, fit.quality.degrees_of_freedom, fit.quality.p_value);
+  std::printf("fitted in %.1f s; quality: GMM distance %.1f on %d dof, p = %.3f\n", seconds_since(start),
+              fit.quality.distance, fit.quality.degrees_of_freedom, fit.quality.p_value);
   const auto report = [&](const char* label) {
     std::printf("%s\n", label);
     for (const TermEstimate& term : fit.terms) {
@@ -157,7 +510,7 @@ int run_rlg(double hours, double rate_hz, int replicas, const std::string& profi
   std::printf("truth: Q %.3g rad, N %.3g rad/s/sqrt(Hz), B %.3g rad/s\n", true_q, true_n, true_b);
   std::printf("graphical: N slope reading at 1 s %.3g, B flat tangent %.3g\n",
               fit.graphical.white_rate_at_1s, fit.graphical.bias_instability_from_minimum);
-  report("Ceres covariance:");
+  report("moment covariance:");
   if (replicas > 1) {
     apply_bootstrap(bootstrap_uncertainty(fit, {replicas, 5}), &fit);
     report("bootstrap:");
@@ -171,13 +524,14 @@ int run_rlg(double hours, double rate_hz, int replicas, const std::string& profi
 int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "coverage";
   if (mode == "coverage") {
-    return run_coverage(argc > 2 ? std::atoi(argv[2]) : 40, argc > 3 ? std::atoi(argv[3]) : 20);
+    return run_coverage(argc > 2 ? std::atoi(argv[2]) : 20, argc > 3 ? std::atoi(argv[3]) : 2,
+                        argc > 4 ? std::atoi(argv[4]) : 0, argc > 5 ? argv[5] : "1234567");
   }
   if (mode == "rlg") {
     return run_rlg(argc > 2 ? std::atof(argv[2]) : 150.0, argc > 3 ? std::atof(argv[3]) : 10.0,
                    argc > 4 ? std::atoi(argv[4]) : 0,
                    argc > 5 ? argv[5] : "config/sensors/rlg_navigation.yaml");
   }
-  std::fprintf(stderr, "usage: identify_coverage coverage [seeds] [replicas] | rlg [hours] [rate_hz] [replicas] [profile]\n");
+  std::fprintf(stderr, "usage: identify_coverage coverage [seeds] [threads] [replicas] [cases] | rlg [hours] [rate_hz] [replicas] [profile]\n");
   return 2;
 }

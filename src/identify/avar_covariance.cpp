@@ -224,6 +224,16 @@ std::vector<std::pair<Term, double>> weighted_units(const NoiseModel& model) {
 
 std::pair<int, int> unit_pair(int a, int b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); }
 
+// The OAVAR differences d_k of a rate ramp R t are all R m tau0 / sqrt(2) (the estimate is
+// R^2 tau^2 / 2 on any record); of two ramps, their sum.
+double ramp_difference_per_factor(const NoiseModel& model, double tau0_s) {
+  double slope = 0.0;
+  for (const Term& term : model.terms) {
+    if (term.kind == TermKind::kRateRamp) slope += term.amplitude;
+  }
+  return slope * tau0_s / std::sqrt(2.0);
+}
+
 bool close_shape(double a, double b) {
   constexpr double kTolerance = 0.1;
   if (a == b) return true;
@@ -242,6 +252,10 @@ struct OavarCovariance::Cache {
   // over factor pairs, or its diagonal only.
   std::map<std::pair<int, int>, Eigen::MatrixXd> full;
   std::map<std::pair<int, int>, Eigen::VectorXd> diagonal;
+  // Linear lag sums sum_h count c_i / (M_m M_n) per unit: cov(mean d^m, mean d^n), which a
+  // deterministic difference (a ramp's) carries into the estimates; needed only with a ramp.
+  std::map<int, Eigen::MatrixXd> linear_full;
+  std::map<int, Eigen::VectorXd> linear_diagonal;
 
   int unit_index(const Term& unit) {
     for (size_t i = 0; i < units.size(); ++i) {
@@ -259,8 +273,9 @@ struct OavarCovariance::Cache {
     return static_cast<int>(units.size()) - 1;
   }
 
-  // Fills every missing kernel among `indices` (for every factor pair, or the diagonal only).
-  void compute_missing(const std::vector<int>& indices, bool diagonal_only) {
+  // Fills every missing kernel among `indices` (for every factor pair, or the diagonal only),
+  // and with `linear` their linear sums too.
+  void compute_missing(const std::vector<int>& indices, bool diagonal_only, bool linear) {
     std::vector<std::pair<int, int>> missing;
     for (size_t a = 0; a < indices.size(); ++a) {
       for (size_t b = a; b < indices.size(); ++b) {
@@ -269,8 +284,15 @@ struct OavarCovariance::Cache {
         if (std::find(missing.begin(), missing.end(), key) == missing.end()) missing.push_back(key);
       }
     }
-    if (missing.empty()) return;
-    std::vector<int> involved;
+    std::vector<int> linear_missing;
+    for (int index : indices) {
+      if (!linear || linear_full.count(index) || (diagonal_only && linear_diagonal.count(index))) continue;
+      if (std::find(linear_missing.begin(), linear_missing.end(), index) == linear_missing.end()) {
+        linear_missing.push_back(index);
+      }
+    }
+    if (missing.empty() && linear_missing.empty()) return;
+    std::vector<int> involved = linear_missing;
     for (const auto& key : missing) {
       for (int index : {key.first, key.second}) {
         if (std::find(involved.begin(), involved.end(), index) == involved.end()) involved.push_back(index);
@@ -287,14 +309,22 @@ struct OavarCovariance::Cache {
         full[key] = Eigen::MatrixXd::Zero(count, count);
       }
     }
+    for (int index : linear_missing) {
+      if (diagonal_only) {
+        linear_diagonal[index] = Eigen::VectorXd::Zero(count);
+      } else {
+        linear_full[index] = Eigen::MatrixXd::Zero(count, count);
+      }
+    }
     std::vector<double> c(units.size());
-    std::vector<double> sums(missing.size());
+    std::vector<double> sums(missing.size()), linear_sums(linear_missing.size());
     for (int i = 0; i < count; ++i) {
       for (int j = i; j < count; ++j) {
         if (diagonal_only && j != i) break;
         const int m = factors[i], n = factors[j];
         const PairGeometry pair(m, n, tau0_s, sample_count);
         std::fill(sums.begin(), sums.end(), 0.0);
+        std::fill(linear_sums.begin(), linear_sums.end(), 0.0);
         const auto visit = [&](double h, double weight) {
           for (int index : involved) {
             double value = 0.0;
@@ -303,6 +333,7 @@ struct OavarCovariance::Cache {
           }
           const double counted = weight * pair.count(h);
           for (size_t k = 0; k < missing.size(); ++k) sums[k] += counted * c[missing[k].first] * c[missing[k].second];
+          for (size_t k = 0; k < linear_missing.size(); ++k) linear_sums[k] += counted * c[linear_missing[k]];
         };
         // Outside the two filters' joint span C_mn vanishes for white, random-walk and
         // white-angle terms, decays like e^{-u / T} for Markov ones and like (span / u)^2 for
@@ -322,6 +353,14 @@ struct OavarCovariance::Cache {
             full[missing[k]](i, j) = full[missing[k]](j, i) = value;
           }
         }
+        for (size_t k = 0; k < linear_missing.size(); ++k) {
+          const double value = 0.5 * linear_sums[k] * pair.normaliser();
+          if (diagonal_only) {
+            linear_diagonal[linear_missing[k]](i) = value;
+          } else {
+            linear_full[linear_missing[k]](i, j) = linear_full[linear_missing[k]](j, i) = value;
+          }
+        }
       }
     }
   }
@@ -332,7 +371,8 @@ struct OavarCovariance::Cache {
     const auto weighted = weighted_units(model);
     std::vector<int> indices;
     for (const auto& entry : weighted) indices.push_back(unit_index(entry.first));
-    compute_missing(indices, diagonal_only);
+    const double ramp_difference = ramp_difference_per_factor(model, tau0_s);
+    compute_missing(indices, diagonal_only, ramp_difference != 0.0);
     for (size_t a = 0; a < weighted.size(); ++a) {
       for (size_t b = 0; b < weighted.size(); ++b) {
         const std::pair<int, int> key = unit_pair(indices[a], indices[b]);
@@ -342,6 +382,23 @@ struct OavarCovariance::Cache {
         } else {
           *result += weight * full[key];
         }
+      }
+    }
+    if (ramp_difference == 0.0) return;
+    // A ramp's differences c_m = ramp_difference m are the same at every k, so
+    // nu_m = c_m^2 + 2 c_m mean(d^m) + (noise alone): cov(nu_m, nu_n) gains 4 c_m c_n
+    // cov(mean d^m, mean d^n) (Gaussian third moments vanish). Where the ramp dominates, this is
+    // most of the estimates' variance.
+    Eigen::VectorXd difference(static_cast<int>(factors.size()));
+    for (size_t i = 0; i < factors.size(); ++i) difference(i) = ramp_difference * factors[i];
+    for (size_t a = 0; a < weighted.size(); ++a) {
+      const double weight = 4.0 * weighted[a].second;
+      if (diagonal_only) {
+        const Eigen::VectorXd sums = linear_full.count(indices[a]) ? Eigen::VectorXd(linear_full[indices[a]].diagonal())
+                                                                   : linear_diagonal[indices[a]];
+        *result += weight * sums.cwiseProduct(difference.cwiseProduct(difference));
+      } else {
+        *result += weight * (difference * difference.transpose()).cwiseProduct(linear_full[indices[a]]);
       }
     }
   }
@@ -446,7 +503,7 @@ double oavar_covariance_by_direct_sum(const NoiseModel& model, int m, int n, dou
   check_factor(m, sample_count);
   check_factor(n, sample_count);
   const PairGeometry pair(m, n, tau0_s, sample_count);
-  double sum = 0.0;
+  double sum = 0.0, linear_sum = 0.0;
   for (long long h = pair.lowest_lag(); h <= pair.highest_lag(); ++h) {
     double c = 0.0;
     for (size_t k = 0; k < pair.offsets.size(); ++k) {
@@ -454,8 +511,10 @@ double oavar_covariance_by_direct_sum(const NoiseModel& model, int m, int n, dou
     }
     c *= pair.scale;
     sum += pair.count(static_cast<double>(h)) * c * c;
+    linear_sum += pair.count(static_cast<double>(h)) * c;
   }
-  return sum * pair.normaliser();
+  const double ramp_difference = ramp_difference_per_factor(model, tau0_s);
+  return (sum + 2.0 * ramp_difference * m * ramp_difference * n * linear_sum) * pair.normaliser();
 }
 
 }  // namespace identify

@@ -47,7 +47,8 @@ std::vector<noise::ProcessParameters> emulator_processes(const NoiseModel& model
             noise::ZeroDcFamilyParameters{2, term.amplitude * term.amplitude, term.shape});
         break;
       case TermKind::kResonance:
-        throw std::invalid_argument("record simulation: the emulator has no resonance process");
+        processes.push_back(noise::ResonanceParameters{term.amplitude, term.shape, term.width});
+        break;
     }
   }
   // The output's rounding, as the white noise it adds.

@@ -65,29 +65,19 @@ TEST(IdentifyAvarCovariance, PooledTermFractionsInflateTheVariances) {
   EXPECT_THROW(pooled.set_pooled_term_fractions({1.0, 0.5}), std::invalid_argument);
 }
 
-// White rate noise plus a random walk, simulated: the sample covariance of the OAVAR estimates
-// over many records against the formula. Each entry's Monte Carlo standard error is about
-// sqrt((1 + rho^2) / records) of the product of the two sigmas; 4.5 of them bound every entry
-// with a family-wise false alarm rate near 1e-4.
-TEST(IdentifyAvarCovariance, FormulaMatchesSimulatedRecords) {
-  const double n_density = 1e-3, k_density = 3e-5;
-  NoiseModel model;
-  model.terms = {{TermKind::kWhiteRate, n_density, 0.0}, {TermKind::kRandomWalk, k_density}};
-  const long long samples = 4000;
-  const std::vector<int> factors = {1, 4, 16, 64, 256};
-  const int records = 3000;
-  std::mt19937_64 generator(20261201);
-  std::normal_distribution<double> unit(0.0, 1.0);
+// The sample covariance of the OAVAR estimates over many simulated records against the formula.
+// Each entry's Monte Carlo standard error is about sqrt((1 + rho^2) / records) of the product of
+// the two sigmas; 4.5 of them bound every entry with a family-wise false alarm rate near 1e-4.
+template <class Record>
+void expect_formula_matches_simulation(const NoiseModel& model, const std::vector<int>& factors, long long samples,
+                                       int records, const Record& simulate_record) {
   std::vector<std::vector<double>> estimates(factors.size());
   std::vector<double> rates(samples);
   for (int record = 0; record < records; ++record) {
-    double walk = 0.0;
-    for (long long k = 0; k < samples; ++k) {
-      walk += k_density * std::sqrt(kTau0S) * unit(generator);
-      rates[k] = n_density / std::sqrt(kTau0S) * unit(generator) + walk;
-    }
+    simulate_record(&rates);
+    const std::vector<double> phase = phase_of(rates);
     for (std::size_t i = 0; i < factors.size(); ++i) {
-      estimates[i].push_back(allan::overlapping_allan_variance(phase_of(rates), kTau0S, factors[i]));
+      estimates[i].push_back(allan::overlapping_allan_variance(phase, kTau0S, factors[i]));
     }
   }
   Eigen::MatrixXd formula(factors.size(), factors.size());
@@ -96,6 +86,7 @@ TEST(IdentifyAvarCovariance, FormulaMatchesSimulatedRecords) {
       formula(i, j) = oavar_covariance_by_direct_sum(model, factors[i], factors[j], kTau0S, samples);
     }
   }
+  const Eigen::MatrixXd quadrature = oavar_covariance(model, factors, kTau0S, samples);
   for (std::size_t i = 0; i < factors.size(); ++i) {
     for (std::size_t j = i; j < factors.size(); ++j) {
       double mean_i = 0.0, mean_j = 0.0;
@@ -107,8 +98,41 @@ TEST(IdentifyAvarCovariance, FormulaMatchesSimulatedRecords) {
       const double rho = formula(i, j) / scale;
       const double standard_error = scale * std::sqrt((1.0 + rho * rho) / records);
       EXPECT_NEAR(sample, formula(i, j), 4.5 * standard_error) << "m " << factors[i] << " n " << factors[j];
+      EXPECT_NEAR(quadrature(i, j), formula(i, j), 2e-4 * scale) << "m " << factors[i] << " n " << factors[j];
     }
   }
+}
+
+// White rate noise plus a random walk.
+TEST(IdentifyAvarCovariance, FormulaMatchesSimulatedRecords) {
+  const double n_density = 1e-3, k_density = 3e-5;
+  NoiseModel model;
+  model.terms = {{TermKind::kWhiteRate, n_density, 0.0}, {TermKind::kRandomWalk, k_density}};
+  std::mt19937_64 generator(20261201);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  expect_formula_matches_simulation(model, {1, 4, 16, 64, 256}, 4000, 3000, [&](std::vector<double>* rates) {
+    double walk = 0.0;
+    for (double& rate : *rates) {
+      walk += k_density * std::sqrt(kTau0S) * unit(generator);
+      rate = n_density / std::sqrt(kTau0S) * unit(generator) + walk;
+    }
+  });
+}
+
+// White rate noise on a rate ramp that dominates the longest taus: the ramp adds no variance of
+// its own, but its constant differences multiply the noise's mean difference (the cross term),
+// which there is most of the estimates' variance.
+TEST(IdentifyAvarCovariance, RampCrossTermMatchesSimulatedRecords) {
+  const double n_density = 1e-3, ramp_per_s = 1e-4;
+  NoiseModel model;
+  model.terms = {{TermKind::kWhiteRate, n_density, 0.0}, {TermKind::kRateRamp, ramp_per_s}};
+  std::mt19937_64 generator(20261202);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  expect_formula_matches_simulation(model, {1, 16, 256, 1000, 1800}, 4000, 3000, [&](std::vector<double>* rates) {
+    for (std::size_t k = 0; k < rates->size(); ++k) {
+      (*rates)[k] = n_density / std::sqrt(kTau0S) * unit(generator) + ramp_per_s * (k + 0.5) * kTau0S;
+    }
+  });
 }
 
 }  // namespace

@@ -10,7 +10,10 @@
 // a parametric bootstrap would find, without simulating (Percival and Walden, "Wavelet Methods
 // for Time Series Analysis", 2000, ch. 8, give the asymptotic form; Guerrier et al., JASA 2013,
 // weight the generalized method of wavelet moments with it).
-// Deterministic terms (rate ramp, sinusoid) carry no variance of their own and are left out.
+// Deterministic terms (rate ramp, sinusoid) carry no variance of their own. A ramp's differences
+// are the same constant c_m at every k, so it adds 4 c_m c_n cov(mean d^m, mean d^n), a linear
+// lag sum of C_mn (the cross term of nu = c^2 + 2 c mean d + ...); a sinusoid's cross term, which
+// depends on its phase, is left out.
 #pragma once
 
 #include <Eigen/Core>

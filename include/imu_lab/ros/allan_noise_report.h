@@ -44,8 +44,12 @@ std::string partial_curves_file_name(const std::string& channel_name);
 // segments hold no more data than that).
 double record_length_s(const allan::StreamingSnapshot& snapshot);
 
-// Fits and writes; never throws for a failed fit (see `problems`). Throws std::runtime_error
-// when a file cannot be written.
+// The fits alone (no files): `triads` and `problems` as below, `written` empty.
+AllanNoiseReport identify_triads(const AllanRunDescription& run, const allan::StreamingSnapshot& snapshot,
+                                 const AllanIdentifyOptions& options);
+
+// Fits (identify_triads) and writes; never throws for a failed fit (see `problems`). Throws
+// std::runtime_error when a file cannot be written.
 AllanNoiseReport write_allan_noise_report(const std::string& directory, const AllanRunDescription& run,
                                           const allan::StreamingSnapshot& snapshot,
                                           const AllanIdentifyOptions& options);
