@@ -173,11 +173,21 @@ TEST(RateTableScaleFactor, EstimatesLieWithinThreeSigmaOfTheExactValues) {
     EXPECT_GT(c.estimated.sigma, 0.0) << c.name;
     EXPECT_NEAR(c.estimated.value, c.exact, 3.0 * c.estimated.sigma) << c.name;
   }
+  // The polynomial against the emulator's own terms (the inputs, Earth rate included, checked
+  // through the estimates rather than the noise-free twin).
+  const ScaleFactorFit& fit = *run.estimated.polynomial;
+  const double full_scale = run.estimated.full_scale_rad_s;
+  EXPECT_NEAR(fit.bias_rad_s.value, kBias_rad_s, 3.0 * fit.bias_rad_s.sigma);
+  EXPECT_NEAR(fit.scale_factor_error_ppm.value, kScaleFactorErrorPpm, 3.0 * fit.scale_factor_error_ppm.sigma);
+  EXPECT_NEAR(fit.asymmetry_ppm.value, kAsymmetryPpm / (1.0 + 1e-6 * kScaleFactorErrorPpm), 3.0 * fit.asymmetry_ppm.sigma);
+  EXPECT_NEAR(fit.quadratic_ppm_fs.value, kQuadraticPpmFs * full_scale / kFullScaleOfProfile_rad_s,
+              3.0 * fit.quadratic_ppm_fs.sigma);
+  EXPECT_NEAR(fit.cubic_ppm_fs.value, kCubicPpmFs * std::pow(full_scale / kFullScaleOfProfile_rad_s, 2),
+              3.0 * fit.cubic_ppm_fs.sigma);
   // The straight lines leave the nonlinearity in their residuals: far above the noise here.
   EXPECT_GT(run.exact.nonlinearity_ppm_fs.value, 20.0 * run.estimated.nonlinearity_ppm_fs.sigma);
   // The polynomial is the emulator's model: its chi-squared is the noise's.
-  const ScaleFactorFit& p = *run.estimated.polynomial;
-  EXPECT_LT(p.chi_squared, 3.0 * p.degrees_of_freedom + 10.0);
+  EXPECT_LT(fit.chi_squared, 3.0 * fit.degrees_of_freedom + 10.0);
 }
 
 TEST(RateTableScaleFactor, SigmasMatchTheScatterOverSeeds) {
