@@ -5,20 +5,11 @@
 #include <sstream>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/robust_statistics.h"
 #include "imu_lab/emulator/earth_model.h"
 
 namespace imu_lab {
 namespace calib {
-namespace {
-
-double median(std::vector<double> values) {
-  const auto middle = values.begin() + values.size() / 2;
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
-
-}  // namespace
-
 StaticDetection detect_static_intervals(const std::vector<CalibrationSample>& samples,
                                         const StaticDetectionOptions& options) {
   if (samples.size() < 2) throw InputError("calibration recording: fewer than 2 samples");
@@ -50,11 +41,11 @@ StaticDetection detect_static_intervals(const std::vector<CalibrationSample>& sa
       level.push_back(window_means[w][axis]);
       if (w > 0) differences.push_back(std::abs(window_means[w][axis] - window_means[w - 1][axis]));
     }
-    resting_level[axis] = median(level);
+    resting_level[axis] = upper_median(level);
   }
   StaticDetection detection;
   detection.window_s = window * sample_interval_s;
-  detection.window_noise_rad_s = 1.4826 * median(differences) / std::sqrt(2.0);
+  detection.window_noise_rad_s = sigma_from_absolute_differences(differences);
   detection.threshold_rad_s = options.threshold_rad_s > 0.0
                                   ? options.threshold_rad_s
                                   : options.threshold_sigmas * detection.window_noise_rad_s +
