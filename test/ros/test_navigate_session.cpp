@@ -159,6 +159,8 @@ TEST(NavigationSettingsCheck, ASiteOrAnAttitudeNoSensorCanHaveIsRefusedByKey) {
   refused([&](NavigationSettings& s) { s.initial_roll_rad = 1e5 * kDeg; }, "initial_roll_deg");
   refused([&](NavigationSettings& s) { s.initial_yaw_rad = 1e300 * kDeg; }, "initial_yaw_deg");
   refused([&](NavigationSettings& s) { s.alignment.given_yaw_rad = -400.0 * kDeg; }, "initial_yaw_deg");
+}
+
 TEST(NavigateSession, GivenStateIsTheStateAtTheFirstStampWithEitherInput) {
   NavigationSettings s = settings();
   s.align = false;
