@@ -101,9 +101,8 @@ double record_length_s(const allan::StreamingSnapshot& snapshot) {
   return static_cast<double>(snapshot.timing.accepted_sample_count) * snapshot.timing.tau0_s;
 }
 
-AllanNoiseReport write_allan_noise_report(const std::string& directory, const AllanRunDescription& run,
-                                          const allan::StreamingSnapshot& snapshot,
-                                          const AllanIdentifyOptions& options) {
+AllanNoiseReport identify_allan_run(const AllanRunDescription& run, const allan::StreamingSnapshot& snapshot,
+                                    const AllanIdentifyOptions& options) {
   AllanNoiseReport report;
   if (!options.enabled) return report;
   if (!snapshot.warmed_up || !(snapshot.timing.tau0_s > 0.0)) {
@@ -121,6 +120,13 @@ AllanNoiseReport write_allan_noise_report(const std::string& directory, const Al
       report.problems.push_back(name + " not identified: the fit failed: " + error.what());
     }
   }
+  return report;
+}
+
+AllanNoiseReport write_allan_noise_report(const std::string& directory, const AllanRunDescription& run,
+                                          const allan::StreamingSnapshot& snapshot,
+                                          const AllanIdentifyOptions& options) {
+  AllanNoiseReport report = identify_allan_run(run, snapshot, options);
   if (report.triads.empty()) return report;
 
   const identify::ReportMetadata metadata = report_metadata(run, snapshot);

@@ -44,8 +44,13 @@ std::string partial_curves_file_name(const std::string& channel_name);
 // segments hold no more data than that).
 double record_length_s(const allan::StreamingSnapshot& snapshot);
 
-// Fits and writes; never throws for a failed fit (see `problems`). Throws std::runtime_error
-// when a file cannot be written.
+// Fits each triad (nothing when options.enabled is false); never throws for a failed fit (see
+// `problems`). Writes nothing: `written` stays empty.
+AllanNoiseReport identify_allan_run(const AllanRunDescription& run, const allan::StreamingSnapshot& snapshot,
+                                    const AllanIdentifyOptions& options);
+
+// identify_allan_run(), then the files; never throws for a failed fit (see `problems`). Throws
+// std::runtime_error when a file cannot be written.
 AllanNoiseReport write_allan_noise_report(const std::string& directory, const AllanRunDescription& run,
                                           const allan::StreamingSnapshot& snapshot,
                                           const AllanIdentifyOptions& options);
