@@ -51,8 +51,10 @@ class RvizSession:
             raise RvizSessionError("Xvfb did not start (is xvfb installed?)")
         self.display = ":" + number
         # Mesa's software renderer: no GPU behind Xvfb.
-        environment = dict(os.environ, DISPLAY=self.display, LIBGL_ALWAYS_SOFTWARE="1")
-        rviz = subprocess.Popen(["rosrun", "rviz", "rviz", "-d", self.config, "__name:=rviz_" + number],
+        # Its log lines as they come: rosconsole leaves stdout block-buffered in a pipe.
+        environment = dict(os.environ, DISPLAY=self.display, LIBGL_ALWAYS_SOFTWARE="1",
+                           ROSCONSOLE_STDOUT_LINE_BUFFERED="1")
+        rviz = subprocess.Popen(["stdbuf", "-oL", "rosrun", "rviz", "rviz", "-d", self.config, "__name:=rviz_" + number],
                                 env=environment, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, bufsize=1)
         self.processes.append(rviz)
 

@@ -113,26 +113,30 @@ void AllanPlotWidget::paintEvent(QPaintEvent*) {
     for (const auto& point : series.points) line << to_screen(point.log10_tau, point.log10_deviation);
     painter.drawPolyline(line);
   };
+  // Terms under the data, the measured line, the fitted total over it (a good fit runs along the
+  // data), the measured points on top.
   std::vector<std::pair<QPen, QString>> legend;
-  for (std::size_t i = 0; i < plot_.model.size(); ++i) {
+  for (std::size_t i = 1; i < plot_.model.size(); ++i) {
     const panel::PlotSeries& series = plot_.model[i];
-    QPen pen;
-    if (series.role == panel::SeriesRole::kModelTotal) {
-      pen = QPen(kTotalColour, 2.5);
-    } else {
-      pen = QPen(kTermColours[(i - 1) % (sizeof kTermColours / sizeof kTermColours[0])], 1.5,
-                 series.constrained ? Qt::DashLine : Qt::DotLine);
-    }
+    const QPen pen(kTermColours[(i - 1) % (sizeof kTermColours / sizeof kTermColours[0])], 1.5,
+                   series.constrained ? Qt::DashLine : Qt::DotLine);
     painter.setPen(pen);
     polyline(series);
     legend.emplace_back(pen, QString::fromStdString(series.constrained ? series.label : series.label + " (unconstrained)"));
   }
-  const QPen measured_pen(kMeasuredColour, 2.0);
+  const QPen measured_pen(kMeasuredColour, 1.2);
   painter.setPen(measured_pen);
   polyline(plot_.measured);
+  if (!plot_.model.empty()) {
+    const QPen total_pen(kTotalColour, 2.0);
+    painter.setPen(total_pen);
+    polyline(plot_.model.front());
+    legend.insert(legend.begin(), {total_pen, QString::fromStdString(plot_.model.front().label)});
+  }
+  painter.setPen(measured_pen);
   painter.setBrush(kMeasuredColour);
   for (const auto& point : plot_.measured.points) {
-    painter.drawEllipse(to_screen(point.log10_tau, point.log10_deviation), 2.5, 2.5);
+    painter.drawEllipse(to_screen(point.log10_tau, point.log10_deviation), 3.0, 3.0);
   }
   painter.setBrush(Qt::NoBrush);
   painter.restore();

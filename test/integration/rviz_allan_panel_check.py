@@ -1,12 +1,12 @@
 #!/usr/bin/python3
 """rostest checker for rviz_allan_panel.test: rviz with the shipped config/rviz/characterise.rviz
 under a virtual X server (scripts/rviz_session.py) beside the live emulator and allan_monitor.
-The Allan panel loads without a plugin error, draws the live curve, then the fitted model once
-allan_monitor has written a report (its write_report service); a screenshot shows the curves in
-the panel's plot: pixels of the measured curve's and the fitted total's colours
+The Allan panel loads without a plugin error and draws the live curve with the fitted model once
+allan_monitor's periodic identification (identify_period_s) has published one; a screenshot shows
+the curves in the panel's plot: pixels of the measured curve's and the fitted total's colours
 (src/rviz/allan_plot_widget.cpp) over its white background, not a blank or one-colour area.
 
-Parameter: ~screenshot (path to keep the PNG; default: none kept)."""
+Parameter: ~screenshot (path to keep the PNG; "": none kept)."""
 
 import os
 import shutil
@@ -57,14 +57,13 @@ class RvizAllanPanel(unittest.TestCase):
 
     def test_panel_draws_the_live_curves_and_the_model(self):
         with RvizSession(os.path.join(PACKAGE, "config", "rviz", "characterise.rviz")) as rviz:
-            live = rviz.wait_for_painted(want_model=False, limit_s=EVENT_LIMIT_S)
-            self.assertIn("gyro x oadev", live.group("what"))
-            self.assertGreater(int(live.group("points")), 3)
-
-            # allan_monitor identifies every identify_period_s on its own; the model appears once a
-            # record is long enough for the fit.
+            # allan_monitor identifies every identify_period_s on its own (its latched message may
+            # be there before rviz is): the panel draws the live curve, and the model once a record
+            # is long enough for the fit.
             fitted = rviz.wait_for_painted(want_model=True, limit_s=EVENT_LIMIT_S)
-            self.assertGreaterEqual(int(fitted.group("series")), 3, "the total and at least two terms")
+            self.assertIn("gyro x oadev", fitted.group("what"))
+            self.assertGreater(int(fitted.group("points")), 3)
+            self.assertGreaterEqual(int(fitted.group("series")), 2, "the total and at least one term")
 
             png = os.path.join(self.work, "screen.png")
             rviz.screenshot(png)
