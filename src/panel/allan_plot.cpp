@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
 
 #include "imu_lab/common/format_number.h"
 #include "imu_lab/identify/noise_model.h"
@@ -199,7 +200,11 @@ AllanPlot AllanPanelModel::plot(const std::string& sensor, const std::string& st
       plot.status_lines.push_back("model fitted on " + duration_text(report_.record_length_s) +
                                   " of record");
       if (model_applies_to(statistic)) {
-        plot.model = model_series(*model_axis, measured_tau_s);
+        try {
+          plot.model = model_series(*model_axis, measured_tau_s);
+        } catch (const std::invalid_argument& error) {  // a term this build does not know
+          plot.status_lines.push_back(std::string("model not drawn: ") + error.what());
+        }
         // Terms fall far below the data at the ends of their range; the total never does.
         if (!plot.model.empty()) {
           for (const LogPoint& point : plot.model.front().points) widen(point.log10_deviation);

@@ -195,6 +195,20 @@ TEST(AllanPanelModel, TheModelIsDrawnOnOadevWithTheRecordItNeeds) {
   EXPECT_TRUE(other_axis.record_length_lines.empty());
 }
 
+TEST(AllanPanelModel, AnUnknownTermIsSaidNotDrawn) {
+  AllanPanelModel model;
+  model.add_curves(gyro_curves("oadev", 1000));
+  NoiseReport report;
+  NoiseAxisModel axis = gyro_x_model();
+  axis.terms[0].name = "mystery";
+  report.axes = {axis};
+  model.set_noise_report(report);
+  const AllanPlot plot = model.plot("gyro", "oadev", 0);
+  EXPECT_TRUE(plot.model.empty());
+  ASSERT_EQ(plot.status_lines.size(), 3u);
+  EXPECT_EQ(plot.status_lines[2], "model not drawn: unknown noise term 'mystery'");
+}
+
 TEST(AllanPanelModel, IdentificationProblemsAreShown) {
   AllanPanelModel model;
   model.add_curves(gyro_curves("oadev", 1000));
