@@ -273,8 +273,8 @@ def rviz_section(report):
     if os.path.exists(os.path.join(report, "rviz_allan.png")):
         lines += figure(report, "rviz_allan.png", "rviz Allan deviation panel",
                         "The Allan deviation panel during a live emulated recording (launch/characterise.launch, "
-                        "20 min of tactical_mems at rest, 100 Hz): the gyro's x axis with its band, the model "
-                        "identified from a report requested at that point, and per term how much longer the "
+                        "tactical_mems at rest, 100 Hz, 20x real time): the gyro's x axis with its band, the model "
+                        "allan_monitor identified after 20 min of record, and per term how much longer the "
                         "record must run for its amplitude to be known to 10 %.")
     reason_path = os.path.join(report, "rviz_skipped.txt")
     if os.path.exists(reason_path):
