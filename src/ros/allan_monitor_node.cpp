@@ -74,6 +74,10 @@ AllanMonitorNode::AllanMonitorNode(ros::NodeHandle& node, ros::NodeHandle& priva
 
   publish_timer_ = node.createWallTimer(ros::WallDuration(settings_.publish_period_s),
                                         [this](const ros::WallTimerEvent&) { publish_curves(); });
+  if (settings_.identify.enabled && settings_.identify_period_s > 0.0) {
+    identify_timer_ = node.createWallTimer(ros::WallDuration(settings_.identify_period_s),
+                                           [this](const ros::WallTimerEvent&) { start_identification(); });
+  }
   if (!settings_.checkpoint_path.empty()) {
     checkpoint_timer_ = node.createWallTimer(ros::WallDuration(settings_.checkpoint_period_s),
                                              [this](const ros::WallTimerEvent&) { save_checkpoint(); });
@@ -198,13 +202,7 @@ void AllanMonitorNode::save_checkpoint() {
   }
 }
 
-std::string AllanMonitorNode::write_report() {
-  const Current now = current();
-  if (!now.warmed_up) {
-    throw InputError("no report yet: " + std::to_string(now.samples) + " samples on " +
-                     input_subscriber_.getTopic() + ", the warm-up needs " +
-                     std::to_string(engine_->options().warm_up_sample_count));
-  }
+AllanRunDescription AllanMonitorNode::run_description(const Current& now) const {
   AllanRunDescription run;
   run.topic = input_subscriber_.getTopic();
   run.input = settings_.input;
@@ -212,6 +210,42 @@ std::string AllanMonitorNode::write_report() {
   run.skipped_before_checkpoint = skipped_before_checkpoint_;
   run.impulses = now.impulses;
   run.output_steps = output_steps_.channels();
+  return run;
+}
+
+void AllanMonitorNode::start_identification() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (finished_ || identifying_) return;  // the previous fit is still running: skip this period
+  Current now;
+  try {
+    now = current();
+  } catch (const std::exception&) {
+    return;  // publish_curves() reports a snapshot that cannot be made; the node goes on
+  }
+  if (!now.warmed_up) return;
+  if (identify_thread_.joinable()) identify_thread_.join();  // finished: identifying_ is false
+  identifying_ = true;
+  // The fit takes seconds on a long record: off the thread that publishes the curves, on copies.
+  identify_thread_ = std::thread([this, run = run_description(now), snapshot = std::move(now.snapshot),
+                                  header = last_header_] {
+    try {
+      noise_publisher_.publish(
+          to_noise_parameters(identify_triads(run, snapshot, settings_.identify), snapshot, header));
+    } catch (const std::exception& error) {
+      ROS_WARN("allan_monitor: periodic identification: %s", error.what());
+    }
+    identifying_ = false;
+  });
+}
+
+std::string AllanMonitorNode::write_report() {
+  const Current now = current();
+  if (!now.warmed_up) {
+    throw InputError("no report yet: " + std::to_string(now.samples) + " samples on " +
+                     input_subscriber_.getTopic() + ", the warm-up needs " +
+                     std::to_string(engine_->options().warm_up_sample_count));
+  }
+  const AllanRunDescription run = run_description(now);
   const allan::StreamingSnapshot& snapshot = now.snapshot;
   const AllanReportFiles files =
       write_allan_report(settings_.report_dir, run, snapshot, settings_.plot, settings_.identify);
@@ -237,9 +271,15 @@ bool AllanMonitorNode::on_write_report(std_srvs::Trigger::Request&, std_srvs::Tr
 }
 
 void AllanMonitorNode::finish() {
-  std::lock_guard<std::mutex> lock(mutex_);
+  std::unique_lock<std::mutex> lock(mutex_);
   if (finished_) return;
   finished_ = true;
+  identify_timer_.stop();
+  if (identify_thread_.joinable()) {  // the last report's noise message comes after it
+    lock.unlock();
+    identify_thread_.join();
+    lock.lock();
+  }
   publish_timer_.stop();
   checkpoint_timer_.stop();
   diagnostics_timer_.stop();

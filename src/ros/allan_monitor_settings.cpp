@@ -51,6 +51,7 @@ AllanMonitorSettings load_allan_monitor_settings(const ros::NodeHandle& private_
   }
   settings.queue_size = positive_parameter(private_node, "queue_size", settings.queue_size);
   settings.identify.enabled = parameter(private_node, "identify", settings.identify.enabled);
+  settings.identify_period_s = non_negative_parameter(private_node, "identify_period_s", settings.identify_period_s);
   settings.identify.bootstrap_replicas = parameter(private_node, "bootstrap_replicas", settings.identify.bootstrap_replicas);
   const std::string replicas_problem = bootstrap_replicas_problem(settings.identify.bootstrap_replicas);
   if (!replicas_problem.empty()) {

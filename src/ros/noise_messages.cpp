@@ -1,12 +1,14 @@
 #include "imu_lab/ros/noise_messages.h"
 
-#include "imu_lab/identify/units.h"
+#include <limits>
+
+#include "imu_lab/identify/record_length.h"
 
 namespace imu_lab {
 namespace ros_io {
-namespace {
 
-imu_lab::NoiseAxis to_noise_axis(identify::SensorKind sensor, int axis, const identify::FitResult& fit) {
+imu_lab::NoiseAxis to_noise_axis(identify::SensorKind sensor, int axis, const identify::FitResult& fit,
+                                 double target_relative_sigma) {
   imu_lab::NoiseAxis message;
   message.axis = identify::axis_name(sensor, axis);
   for (const identify::TermEstimate* term : identify::terms_in_report_order(fit)) {
@@ -26,12 +28,15 @@ imu_lab::NoiseAxis to_noise_axis(identify::SensorKind sensor, int axis, const id
     message.shape_unit.push_back(shaped && !shape_units.empty() ? shape_units.front().key : "");
     message.shape.push_back(shaped ? term->shape.value : identify::ParameterEstimate::kNotAvailable);
     message.width.push_back(term->width.value);
+    message.required_record_length_s.push_back(
+        term->status == identify::TermStatus::kAbsent
+            ? std::numeric_limits<double>::quiet_NaN()
+            : identify::required_record_length_s(fit, term->name, target_relative_sigma));
   }
+  message.output_quantization_density = fit.model.output_quantization_density;
   message.warnings = fit.warnings;
   return message;
 }
-
-}  // namespace
 
 imu_lab::NoiseParameters to_noise_parameters(const AllanNoiseReport& report, const allan::StreamingSnapshot& snapshot,
                                              const std_msgs::Header& header) {
@@ -39,6 +44,7 @@ imu_lab::NoiseParameters to_noise_parameters(const AllanNoiseReport& report, con
   message.header = header;
   message.tau0_s = snapshot.timing.tau0_s;
   message.record_length_s = record_length_s(snapshot);
+  message.target_relative_sigma = kResolvedRelativeSigma;
   message.problems = report.problems;
   for (const identify::TriadFit& triad : report.triads) {
     imu_lab::NoiseTriad triad_message;
@@ -46,7 +52,7 @@ imu_lab::NoiseParameters to_noise_parameters(const AllanNoiseReport& report, con
     triad_message.worst_axis = static_cast<std::uint8_t>(triad.worst_axis);
     triad_message.worst_axis_reason = triad.worst_axis_reason;
     for (int axis = 0; axis < 3; ++axis) {
-      triad_message.axes.push_back(to_noise_axis(triad.sensor, axis, triad.axes[axis]));
+      triad_message.axes.push_back(to_noise_axis(triad.sensor, axis, triad.axes[axis], kResolvedRelativeSigma));
     }
     message.triads.push_back(triad_message);
   }

@@ -12,7 +12,8 @@
 //   impulse_screen is false): it delays the input by about guard_before_s + merge_gap_s (1.25 s),
 //   and the samples of each knock or spike never reach the engine, which splits the run there.
 //   The report's allan_summary.yaml lists the events and each channel's output step (LSB).
-//   allan/noise (imu_lab/NoiseParameters, latched): the identified noise model, after each report.
+//   allan/noise (imu_lab/NoiseParameters, latched): the identified noise model, after each report
+//   and every identify_period_s (0: only with reports), fitted on a thread of its own.
 // Service: ~write_report (std_srvs/Trigger): the allan tool's report files (allan_report.h) in
 //   report_dir, with the noise identification (allan_noise_report.h) unless identify is false;
 //   written again on shutdown.
@@ -29,9 +30,11 @@
 #include <sensor_msgs/Imu.h>
 #include <std_srvs/Trigger.h>
 
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <thread>
 
 #include "imu_lab/allan/impulse_screen.h"
 #include "imu_lab/allan/output_step.h"
@@ -69,6 +72,10 @@ class AllanMonitorNode {
   };
   Current current() const;
   void publish_curves();
+  AllanRunDescription run_description(const Current& now) const;
+  // Identifies the current curves on identify_thread_ and publishes allan/noise, unless the
+  // previous identification is still running.
+  void start_identification();
   void save_checkpoint();
   bool on_write_report(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
   std::string write_report();  // with mutex_ held; returns what was written
@@ -95,6 +102,9 @@ class AllanMonitorNode {
   ros::ServiceServer write_report_service_;
   ros::WallTimer publish_timer_;
   ros::WallTimer checkpoint_timer_;
+  ros::WallTimer identify_timer_;
+  std::thread identify_thread_;
+  std::atomic<bool> identifying_{false};
   diagnostic_updater::Updater diagnostics_;
   ros::WallTimer diagnostics_timer_;
 

@@ -3,7 +3,8 @@
 //   totdev akdev hkdev), publish_period_s (1.0), report_dir ($ROS_HOME/allan_report, ROS_HOME
 //   defaulting to ~/.ros), plot (true), checkpoint_path ("" = no checkpoints),
 //   checkpoint_period_s (60), resume (false), queue_size (20000); identify (true: fit the noise
-//   model with every report), bootstrap_replicas (0 = off; >= 2: bootstrap sigmas, slow);
+//   model with every report), identify_period_s (0: with reports only; > 0: also this often, on
+//   its own thread), bootstrap_replicas (0 = off; >= 2: bootstrap sigmas, slow);
 //   the engine's (streaming_options.h): points_per_decade (10), max_tau_s (1e4),
 //   exact_max_averaging_factor (1000), confidence (0.683), warm_up_sample_count (1000),
 //   gap_factor (1.5). Gaps always split and pool: a live node never stops on bad stamps.
@@ -36,6 +37,7 @@ struct AllanMonitorSettings {
   bool resume = false;
   int queue_size = 20000;
   AllanIdentifyOptions identify;
+  double identify_period_s = 0.0;
   allan::StreamingOptions engine;
   allan::ImpulseScreenOptions screen;  // channel_count and gap_factor follow the engine's
 };
