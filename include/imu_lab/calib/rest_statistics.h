@@ -1,6 +1,8 @@
 // What each static interval (rest) measured: mean rate and specific force, and how uncertain
 // those means are. The noise comes from the scatter of short block means inside the rests, pooled
-// over all rests, so coloured noise (anti-alias filters, quantization) is counted as it averages.
+// over all rests, so coloured noise (anti-alias filters, quantization) is counted as it averages;
+// drift at the rest's own scale (bias instability, random walk) is added where the halves of the
+// rests differ by significantly more than that white figure says.
 #pragma once
 
 #include <Eigen/Core>
