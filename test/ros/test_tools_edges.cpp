@@ -107,7 +107,9 @@ TEST(ToolNumericOptions, NonsenseNumbersAreRefusedNamingTheOptionAndWriteNothing
        "height_m: must be in [-11000, 100000] m"},
       {"navigate", bag + " --latitude-deg 50 --longitude-deg 1e6 --height-m 0" + out,
        "longitude_deg: must be in [-180, 360] degrees"},
-      {"navigate", bag + " --latitude-deg 50 --longitude-deg 30 --height-m 0 --no-align --initial-yaw-deg 1e300" + out,
+      {"navigate",
+       bag + " --latitude-deg 50 --longitude-deg 30 --height-m 0 --no-align --initial-velocity-enu-m-s 0,0,0"
+             " --initial-yaw-deg 1e300" + out,
        "initial_yaw_deg: must be in [-360, 360]"},
       {"import_csv", "x.csv --time-offset-s -1e30" + out, "--time-offset-s: '-1e30' is not a number of seconds within"},
       {"fit_thermal", bag + " --latitude-deg 95" + out, "--latitude-deg: must be in [-90, 90], got 95"},
