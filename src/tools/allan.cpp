@@ -142,7 +142,7 @@ int main(int argc, char** argv) {
   options.screen.enabled = !no_impulse_screen;
   engine.stamp_policy = on_gap == "stop" ? imu_lab::allan::StampPolicy::kStop : imu_lab::allan::StampPolicy::kSplitAndPool;
 
-  const imu_lab::ToolInput bag_input{"bag", recording.recording().name(), options.topic};
+  const imu_lab::ToolInput bag_input = recording.tool_input(options.topic);
   return imu_lab::run_tool_main("allan", bag_input, [&] {
     if (!(options.screen.threshold_sigma > imu_lab::allan::kScaleClipSigma)) {
       throw imu_lab::ConfigError("allan", "--impulse-threshold", "must be a number of scales above 3 (default 12)");

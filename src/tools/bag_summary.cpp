@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
   app.add_option("--taus-s", taus_s, "averaging times [s]")->capture_default_str()->check(imu_lab::option_range::positive());
   if (const auto status = imu_lab::parse_tool_options("bag_summary", app, argc, argv)) return *status;
 
-  imu_lab::ToolInput input{"bag", recording.recording().name(), topic};
+  imu_lab::ToolInput input = recording.tool_input(topic);
   return imu_lab::run_tool_main("bag_summary", input, [&] {
     const imu_lab::ros_io::BagRecording bag = recording.recording();
     const std::string bag_name = bag.name();

@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
       ->check(imu_lab::option_range::positive());
   if (const auto status = imu_lab::parse_tool_options("correct", app, argc, argv)) return *status;
 
-  imu_lab::ToolInput input{"bag", c.recording.recording().name(), o.imu_topic};
+  imu_lab::ToolInput input = c.recording.tool_input(o.imu_topic);
   return imu_lab::run_tool_main("correct", input, [&] {
     if (c.thermal_model_path.empty() && c.calibration_path.empty()) {
       throw imu_lab::ConfigError("correct", "--thermal-model/--calibration", "give at least one of them");

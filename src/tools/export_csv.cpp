@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
   app.add_option("--delimiter", delimiter, "',' ';' or tab")->capture_default_str();
   if (const auto status = imu_lab::parse_tool_options("export_csv", app, argc, argv)) return *status;
 
-  imu_lab::ToolInput input{"bag", recording.recording().name(), request.imu_topic};
+  imu_lab::ToolInput input = recording.tool_input(request.imu_topic);
   return imu_lab::run_tool_main(kTool, input, [&] {
     using namespace imu_lab::io;
     request.format.delimiter = parse_delimiter(delimiter, kCommandLine, "--delimiter");

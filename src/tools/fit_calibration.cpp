@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
       ->check(positive());
   if (const auto status = imu_lab::parse_tool_options("fit_calibration", app, argc, argv)) return *status;
 
-  imu_lab::ToolInput input{"bag", recording.recording().name(), topic};
+  imu_lab::ToolInput input = recording.tool_input(topic);
   return imu_lab::run_tool_main("fit_calibration", input, [&] {
     if (!schedule_name.empty()) {
       options.schedule = imu_lab::calib::schedule_from_scenario(

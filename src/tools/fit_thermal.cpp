@@ -115,7 +115,7 @@ int main(int argc, char** argv) {
                                                                      c.fit.earth.latitude_rad, c.height_m);
   if (c.csv_path.empty()) c.csv_path = default_csv_path(c.out_path);
 
-  imu_lab::ToolInput input{"bag", c.recording.recording().name(), c.topics.imu};
+  imu_lab::ToolInput input = c.recording.tool_input(c.topics.imu);
   return imu_lab::run_tool_main("fit_thermal", input, [&] {
     // The scale-factor terms compare each orientation's output with its known input, gravity and
     // the Earth rate at the site; the bias terms do not depend on it.

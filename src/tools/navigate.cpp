@@ -242,7 +242,7 @@ int main(int argc, char** argv) {
   CommandLine c;
   add_options(app, c);
   if (const auto status = imu_lab::parse_tool_options("navigate", app, argc, argv)) return *status;
-  imu_lab::ToolInput input{"bag", c.recording.recording().name(), c.bag.topic};
+  imu_lab::ToolInput input = c.recording.tool_input(c.bag.topic);
   return imu_lab::run_tool_main("navigate", input, [&] {
     fill_settings(c);
     const auto result = imu_lab::ros_io::navigate_bag(c.recording.recording(), c.bag, c.settings);

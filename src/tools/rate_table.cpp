@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
   app.add_option("--block-s", options.block_s, "block length for the noise of a plateau mean")->capture_default_str()->check(positive());
   if (const auto status = imu_lab::parse_tool_options("rate_table", app, argc, argv)) return *status;
 
-  imu_lab::ToolInput input{"bag", recording.recording().name(), topic};
+  imu_lab::ToolInput input = recording.tool_input(topic);
   return imu_lab::run_tool_main("rate_table", input, [&] {
     if (scenario_name.empty() == table_path.empty()) {
       throw imu_lab::ConfigError("rate_table", "--scenario/--table", "give exactly one of the two");

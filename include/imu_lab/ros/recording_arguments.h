@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "imu_lab/common/tool_main.h"
 #include "imu_lab/ros/imu_bag_reader.h"
 
 namespace imu_lab {
@@ -18,6 +19,8 @@ struct RecordingArguments {
   std::vector<std::string> bags;
   TimeWindow window;
   BagRecording recording() const { return BagRecording(bags, window); }
+  // What run_tool_main names in a refusal that does not name the input itself.
+  ToolInput tool_input(const std::string& topic) const { return ToolInput{"bag", recording().name(), topic}; }
 };
 
 inline void add_recording_arguments(CLI::App& app, RecordingArguments& arguments, const std::string& what,
