@@ -32,7 +32,7 @@ AllanMonitorSettings load_allan_monitor_settings(const ros::NodeHandle& private_
   AllanMonitorSettings settings;
   settings.input = parse_allan_input(private_node.resolveName("input_type"),
                                      parameter<std::string>(private_node, "input_type", "imu"));
-  if (private_node.hasParam("statistics")) {
+  if (has_parameter(private_node, "statistics")) {
     const auto statistic_names = parameter(private_node, "statistics", std::vector<std::string>());
     if (statistic_names.empty()) throw parameter_error(private_node, "statistics", "lists no statistic");
     settings.statistics.clear();
@@ -41,7 +41,8 @@ AllanMonitorSettings load_allan_monitor_settings(const ros::NodeHandle& private_
     }
   }
   settings.publish_period_s = positive_parameter(private_node, "publish_period_s", settings.publish_period_s);
-  settings.report_dir = parameter(private_node, "report_dir", default_report_dir());
+  settings.report_dir = parameter<std::string>(private_node, "report_dir", "");
+  if (settings.report_dir.empty()) settings.report_dir = default_report_dir();
   settings.plot = parameter(private_node, "plot", settings.plot);
   settings.checkpoint_path = parameter<std::string>(private_node, "checkpoint_path", "");
   settings.checkpoint_period_s = positive_parameter(private_node, "checkpoint_period_s", settings.checkpoint_period_s);

@@ -18,7 +18,7 @@ double degrees_parameter_rad(const ros::NodeHandle& node, const std::string& nam
 // whole error, so it must be given then. With an alignment the start is at rest.
 Eigen::Vector3d initial_velocity_parameter(const ros::NodeHandle& node, bool align) {
   const std::string name = "initial_velocity_enu_m_s";
-  if (!align && !node.hasParam(name)) {
+  if (!align && !has_parameter(node, name)) {
     throw parameter_error(node, name,
                           "is required with align: false (the start is the given state; [0, 0, 0] for a start at "
                           "rest)");
@@ -35,7 +35,7 @@ Eigen::Vector3d initial_velocity_parameter(const ros::NodeHandle& node, bool ali
 std::optional<ExpectedSensorErrors> expected_errors_parameters(const ros::NodeHandle& node) {
   const char* const names[] = {"expected_gyro_bias_rad_s", "expected_accel_bias_m_s2",
                                "gyro_noise_density_rad_s_per_sqrt_hz", "accel_noise_density_m_s2_per_sqrt_hz"};
-  if (std::none_of(std::begin(names), std::end(names), [&](const char* name) { return node.hasParam(name); })) {
+  if (std::none_of(std::begin(names), std::end(names), [&](const char* name) { return has_parameter(node, name); })) {
     return std::nullopt;
   }
   ExpectedSensorErrors expected;

@@ -2,7 +2,9 @@
 
 #include <XmlRpcValue.h>
 
+#include <algorithm>
 #include <cmath>
+#include <mutex>
 
 #include "imu_lab/common/format_number.h"
 
@@ -123,14 +125,38 @@ struct ParameterType<std::vector<double>> {
 
 std::string text_of(double value) { return format_number(value, 6); }
 
+// Nodes read their parameters once, at start-up (nodelets: in one manager, possibly on several
+// threads), so the record stays small and the lock uncontended.
+std::mutex asked_mutex;
+std::vector<std::string> asked_names;
+
+void note_asked(const ros::NodeHandle& node, const std::string& name) {
+  const std::string resolved = node.resolveName(name);
+  std::lock_guard<std::mutex> lock(asked_mutex);
+  if (std::find(asked_names.begin(), asked_names.end(), resolved) == asked_names.end()) asked_names.push_back(resolved);
+}
+
 }  // namespace
 
 ConfigError parameter_error(const ros::NodeHandle& node, const std::string& name, const std::string& problem) {
   return ConfigError("ROS parameter", node.resolveName(name), problem);
 }
 
+bool has_parameter(const ros::NodeHandle& node, const std::string& name) {
+  note_asked(node, name);
+  return node.hasParam(name);
+}
+
+std::vector<std::string> take_parameters_asked() {
+  std::lock_guard<std::mutex> lock(asked_mutex);
+  std::vector<std::string> names;
+  names.swap(asked_names);
+  return names;
+}
+
 template <class Value>
 Value parameter(const ros::NodeHandle& node, const std::string& name, const Value& fallback) {
+  note_asked(node, name);
   XmlRpcValue given;
   if (!node.getParam(name, given)) return fallback;
   Value value{};

@@ -3,7 +3,7 @@
 // never replaced by the default; an int does for a double. Then the real binaries: each node
 // started with a wrong-typed or negative parameter exits with status 2 (no signal, no core) and
 // names the parameter, and a nodelet refused by the manager says so on /rosout while the manager
-// lives on.
+// lives on. Last, each node's parameter template (config/nodes/) against what the node reads.
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Log.h>
@@ -11,17 +11,29 @@
 #include <unistd.h>
 
 #include <XmlRpcValue.h>
+#include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
+#include <fstream>
 #include <functional>
+#include <iterator>
+#include <memory>
 #include <mutex>
+#include <regex>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "connection_support.h"
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/ros/allan_monitor_node.h"
+#include "imu_lab/ros/calibration_corrector_node.h"
+#include "imu_lab/ros/imu_emulator_node.h"
 #include "imu_lab/ros/node_parameters.h"
+#include "imu_lab/ros/strapdown_navigator_node.h"
+#include "imu_lab/ros/thermal_compensator_node.h"
 
 namespace {
 
@@ -272,6 +284,93 @@ TEST(NodeletManager, AWrongTypedParameterRefusesTheNodeletAndTheManagerLivesOn) 
   EXPECT_NE(result.exit_code, 0) << result.output;
   EXPECT_TRUE(rosout.wait_for_fatal("/bad_rate_nodelet/rate_hz", 20.0));
   EXPECT_TRUE(ros::service::exists("/parameter_manager/list", false)) << "the manager did not survive";
+}
+
+// ---- The parameter templates, config/nodes/<node>.yaml ----
+
+// The template's keys: the top-level keys of its mapping, and the parameters without a default,
+// written as "#? key: example" lines.
+std::set<std::string> template_keys(const std::string& path) {
+  std::set<std::string> keys;
+  const YAML::Node root = YAML::LoadFile(path);
+  for (const auto& entry : root) keys.insert(entry.first.as<std::string>());
+  std::ifstream stream(path);
+  const std::regex optional_key(R"(^#\? ([a-z0-9_]+):)");
+  std::smatch match;
+  for (std::string line; std::getline(stream, line);) {
+    if (std::regex_search(line, match, optional_key)) keys.insert(match[1]);
+  }
+  return keys;
+}
+
+std::string text_of(const std::set<std::string>& names) {
+  std::string text;
+  for (const auto& name : names) text += " " + name;
+  return text.empty() ? " (none)" : text;
+}
+
+struct NodeTemplate {
+  std::string node;
+  // Parameters the test gives beyond the template: the files a node requires (the template leaves
+  // them empty, and the node refuses to start without them), and where a report goes.
+  std::vector<std::pair<std::string, std::string>> filled_in;
+  std::function<std::shared_ptr<void>(ros::NodeHandle&, ros::NodeHandle&)> start;
+};
+
+template <class Node>
+std::function<std::shared_ptr<void>(ros::NodeHandle&, ros::NodeHandle&)> starts() {
+  return [](ros::NodeHandle& node, ros::NodeHandle& private_node) -> std::shared_ptr<void> {
+    return std::make_shared<Node>(node, private_node);
+  };
+}
+
+// Each node started with its template loaded as a launch file loads it: it starts (every value is
+// one it accepts), and the parameters it asks for are exactly the template's keys, so a parameter
+// added to a node without its template entry, or a template entry no node reads, fails here.
+TEST(NodeTemplates, EachNodeAcceptsItsTemplateAndReadsExactlyItsKeys) {
+  using namespace imu_lab::ros_io;
+  char scratch[] = "/tmp/imu_lab_templates_XXXXXX";
+  ASSERT_NE(mkdtemp(scratch), nullptr);
+  const std::string data = IMU_LAB_TEST_DATA_DIR;
+  const std::vector<NodeTemplate> templates = {
+      {"imu_emulator", {}, starts<ImuEmulatorNode>()},
+      {"allan_monitor", {{"report_dir", std::string(scratch) + "/allan_report"}}, starts<AllanMonitorNode>()},
+      {"thermal_compensator", {{"model_file", data + "/thermal/model_uncompensated_mems_gyro.yaml"}},
+       starts<ThermalCompensatorNode>()},
+      {"calibration_corrector", {{"calibration_file", data + "/calibration_example.yaml"}},
+       starts<CalibrationCorrectorNode>()},
+      {"strapdown_navigator", {}, starts<StrapdownNavigatorNode>()},
+  };
+  for (const NodeTemplate& node_template : templates) {
+    SCOPED_TRACE(node_template.node);
+    const std::string path = std::string(IMU_LAB_CONFIG_DIR) + "/nodes/" + node_template.node + ".yaml";
+    const std::string private_namespace = "/template_check/" + node_template.node;
+    const ProcessResult loaded = finish(start("rosparam load " + path + " " + private_namespace));
+    ASSERT_EQ(loaded.exit_code, 0) << loaded.output;
+    for (const auto& [name, value] : node_template.filled_in) ros::param::set(private_namespace + "/" + name, value);
+
+    imu_lab::ros_io::take_parameters_asked();
+    ros::NodeHandle node("/template_check/topics_" + node_template.node);
+    ros::NodeHandle private_node(private_namespace);
+    try {
+      node_template.start(node, private_node).reset();
+    } catch (const ConfigError& error) {
+      ADD_FAILURE() << path << " is refused: " << error.what();
+      continue;
+    }
+    std::set<std::string> asked;
+    for (const std::string& name : imu_lab::ros_io::take_parameters_asked()) {
+      ASSERT_EQ(name.rfind(private_namespace + "/", 0), 0u) << "a parameter outside the private namespace: " << name;
+      asked.insert(name.substr(private_namespace.size() + 1));
+    }
+    const std::set<std::string> keys = template_keys(path);
+    std::set<std::string> missing;
+    std::set<std::string> unread;
+    std::set_difference(asked.begin(), asked.end(), keys.begin(), keys.end(), std::inserter(missing, missing.end()));
+    std::set_difference(keys.begin(), keys.end(), asked.begin(), asked.end(), std::inserter(unread, unread.end()));
+    EXPECT_TRUE(missing.empty()) << path << " lacks parameters the node reads:" << text_of(missing);
+    EXPECT_TRUE(unread.empty()) << path << " has keys the node does not read:" << text_of(unread);
+  }
 }
 
 }  // namespace

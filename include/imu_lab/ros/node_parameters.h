@@ -27,6 +27,14 @@ Value positive_parameter(const ros::NodeHandle& node, const std::string& name, c
 template <class Value>
 Value non_negative_parameter(const ros::NodeHandle& node, const std::string& name, const Value& fallback);
 
+// Whether the parameter is set (for parameters without a default); asked for like the others.
+bool has_parameter(const ros::NodeHandle& node, const std::string& name);
+
+// The resolved names of every parameter asked for through this header since the last call, in
+// order, each once: how a test holds a node's parameter template (config/nodes/<node>.yaml) to
+// exactly the parameters the node reads.
+std::vector<std::string> take_parameters_asked();
+
 // The error for a parameter whose value the caller found wrong, e.g. "must be above 1, got 0.5".
 ConfigError parameter_error(const ros::NodeHandle& node, const std::string& name, const std::string& problem);
 
