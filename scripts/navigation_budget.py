@@ -37,7 +37,7 @@ i.e. psi' = nu - d(omega_in) - omega_in x psi (the frame-rate error of the veloc
 errors, and the Earth's turning), dv' = psi x f - 2 W x dv + b. The held channel's steady vertical
 velocity (it absorbs the loop's k1 dh) reaches the east channel through the Coriolis term: metres
 in an hour for a 50 micro-g vertical bias. Without Earth rate the horizontal part is two Schuler
-channels: b / w0^2 (1 - cos w0 t), R nu (t - sin(w0 t) / w0) (seed 002; the bounds the nav tests
+channels: b / w0^2 (1 - cos w0 t), R nu (t - sin(w0 t) / w0) (Fomichev 2022; the bounds the nav tests
 use). Responses to constant inputs and the covariance of white inputs come exactly from matrix
 exponentials (Van Loan).
 """

@@ -27,7 +27,7 @@ VarianceEstimate mean_square_estimate(const DifferenceSums& sums, int order, int
   return {sums.mean_square() / (difference_normaliser(order) * squared(m)), sums.count};
 }
 
-// Krobka (seed 003 eq. 5.10): the mean square minus the squared mean, the mean taken per segment.
+// Krobka 2015 (eq. 5.10): the mean square minus the squared mean, the mean taken per segment.
 VarianceEstimate dispersion_estimate(const DifferenceAccumulator& differences, std::size_t i, int m) {
   const DifferenceSums sums = differences.overlapping(i);
   if (sums.count == 0) return {};

@@ -96,7 +96,7 @@ std::string calibration_report(const CalibrationResult& result) {
   }
   const InvariantSpread& g = result.held_out.gravity_m_s2;
   const InvariantSpread& w = result.held_out.earth_rate_rad_s;
-  text += format("\nheld-out check over %.0f rests not used for fitting (seed 001 sec. 5.4-5.5; thesis: 3e-4 m/s^2, "
+  text += format("\nheld-out check over %.0f rests not used for fitting (Golovach 2017 sec. 5.4-5.5; thesis: 3e-4 m/s^2, "
                  "0.001 deg/h measured, 0.015 deg/h allowed)\n",
                  static_cast<double>(g.rests));
   if (g.rests < 2) {

@@ -220,7 +220,7 @@ std::string format_noise_report(const std::vector<TriadFit>& triads,
   YAML::Emitter out;
   out.SetDoublePrecision(17);
   out << YAML::Comment(
-      "imu_lab noise identification (doc/noise_yaml.md). SI and field units, the unit in every key. Per axis "
+      "imu_lab noise identification (doc/formats.md, noise.yaml). SI and field units, the unit in every key. Per axis "
       "the five IEEE Std 952 terms come first (N, B, K, Q, R), then the others; the front end (low-pass, "
       "output quantization) has its own block. Each value has its one-sigma and its 68 % and 95 % "
       "intervals (symmetric in the logarithm); an absent or unconstrained term has an upper bound. "

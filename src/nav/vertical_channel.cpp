@@ -20,7 +20,7 @@ VerticalChannel::VerticalChannel(const VerticalChannelConfig& config)
   if (config_.mode == VerticalChannelMode::kHeld) {
     if (!(config_.k1_per_s < 0.0)) {
       throw ConfigError("nav", "vertical.k1_per_s",
-                        "must be negative for a stable height loop (seed 002 eq. 37)");
+                        "must be negative for a stable height loop (Fomichev 2022 eq. 37)");
     }
     if (!(config_.k2_per_s2 < 0.0)) {
       throw ConfigError("nav", "vertical.k2_per_s2",

@@ -14,7 +14,7 @@ namespace imu_lab {
 namespace panel {
 namespace {
 
-// The identification fits OADEV curves (README, allan_monitor); ADEV estimates the same variance.
+// The identification fits OADEV curves (doc/reference/nodes/allan_monitor.md); ADEV estimates the same variance.
 // The other statistics have other expectations for the same noise, so the model is not drawn on them.
 bool model_applies_to(const std::string& statistic) { return statistic == "oadev" || statistic == "adev"; }
 

@@ -4,7 +4,7 @@
 // stamp, that tf2 serves world -> imu_link, and that the alignment (alignment_method) is latched.
 // With single_channel_velocity_east_m_s (a start at that east velocity on the non-rotating sphere,
 // at rest) every odometry's position must also follow the textbook's single-channel error
-// (v0 / w0) sin(w0 t) east, nothing north, within 2 % of its peak (seed 002 eq. 23).
+// (v0 / w0) sin(w0 t) east, nothing north, within 2 % of its peak (Fomichev 2022 eq. 23).
 // Counts and generous time-outs only, never wall-clock rates.
 #include <gtest/gtest.h>
 #include <imu_lab/Alignment.h>

@@ -1,5 +1,5 @@
 // The identification on real recordings nobody here generated: three static ADIS16405 units
-// (../shared/reference/real_static, 2.78 h at 100 Hz each), imported and analysed as a user
+// (the reference data's real_static, under IMU_LAB_REFERENCE_DIR; 2.78 h at 100 Hz each), imported and analysed as a user
 // would (`import_csv`, then `allan` with default options). What it must show (doc/identification.md):
 // - the fitted total inside the measured 95 % band at >= 90 % of the taus pooled over the 18
 //   axes and >= 75 % on each, every excursion named in the warnings;

@@ -327,7 +327,7 @@ TEST(NavigateToolStart, StartsFromTheTruthAtTheFirstSampleWithEitherInput) {
 
 // Must-show: the textbook's single-channel error of an initial velocity error, through the tool.
 // On the non-rotating sphere at rest (error-free IMU), a start at v0 = 1 m/s east gives
-// east error (v0 / w0) sin(w0 t), w0 = sqrt(g / R) (seed 002 eq. 23; test_nav_schuler.cpp on the
+// east error (v0 / w0) sin(w0 t), w0 = sqrt(g / R) (Fomichev 2022 eq. 23; test_nav_schuler.cpp on the
 // core), and no north error; every output sample over 90 minutes within 2 % of the peak v0 / w0.
 TEST(NavigateToolSchuler, InitialVelocityErrorGivesTheSingleChannelSine) {
   const std::string directory = scratch_directory();

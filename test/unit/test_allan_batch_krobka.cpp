@@ -1,4 +1,4 @@
-// Krobka's dispersions (seed 003, eq. 5.10): the Allan/Hadamard variance with the squared mean
+// Krobka's dispersions (Krobka 2015, eq. 5.10): the Allan/Hadamard variance with the squared mean
 // difference removed. A deterministic drift that AVAR (or HVAR) keeps is removed entirely,
 // while on noise alone the dispersion and the variance agree within their confidence bounds.
 #include <gtest/gtest.h>

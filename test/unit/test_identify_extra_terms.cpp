@@ -1,5 +1,5 @@
 // Terms beyond the IEEE five on exact (noise-free) curves: a sinusoid (eq. 5.8), a second Markov
-// process and, when enabled, seed 003's zero-at-DC family. Each must be selected and recovered.
+// process and, when enabled, Krobka 2015's zero-at-DC family. Each must be selected and recovered.
 #include <gtest/gtest.h>
 
 #include <cmath>

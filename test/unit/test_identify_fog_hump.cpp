@@ -1,5 +1,5 @@
 // Case 2: a fibre-optic gyro whose short-correlation Markov hump screens the white noise
-// (seed 003 Figs. 6.9-6.12). The slope -1/2 segment around 1 s is the Markov flank, 40x the
+// (Krobka 2015 Figs. 6.9-6.12). The slope -1/2 segment around 1 s is the Markov flank, 40x the
 // white noise; the fit must find N itself (from the shortest taus) and warn about the reading.
 // Sigmas from the bootstrap (an option beside the default moment covariance).
 #include <gtest/gtest.h>

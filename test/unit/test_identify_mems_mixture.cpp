@@ -1,5 +1,5 @@
 // Case 1: a MEMS mixture (Q, N, B, K) whose Allan minimum sits at ~2 s, where the flat-tangent
-// reading over-states B more than 4x (seed 003 Fig. 6.5). The fit must recover every term within
+// reading over-states B more than 4x (Krobka 2015 Fig. 6.5). The fit must recover every term within
 // 3 reported sigma, with the bootstrap's honest sigmas: B to 25 %, N and K to 10 %.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Krobka's non-commutative effect (seed 003 eqs. 2.48, 3.7): white noise in angle,
+// Krobka's non-commutative effect (Krobka 2015 eqs. 2.48, 3.7): white noise in angle,
 // delta_omega = d zeta / dt with <zeta(t1) zeta(t2)> = Q' tau0'^2 delta(t1 - t2) per axis, leaves a
 // non-rotating attitude bounded but makes a rotating one diffuse:
 //   sigma^2(t) = 3 D t + 2 Q' tau0'^2 int_0^t |omega|^2 dt     (Krobka dispersion, 3 axes).

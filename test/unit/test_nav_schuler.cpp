@@ -1,6 +1,6 @@
 // Horizontal error propagation of a static strapdown system on the textbook's non-rotating
 // sphere (R = 6371 km, g = 9.81), height held, one error source at a time, against the closed
-// forms of seed 002 eqs. 20, 22, 23. The 3-D linearised errors on a non-rotating sphere decouple
+// forms of Fomichev 2022 eqs. 20, 22, 23. The 3-D linearised errors on a non-rotating sphere decouple
 // into two identical Schuler channels (east: d(dv_E)/dt = -g phi_N + b_E, d(phi_N)/dt = dv_E/R -
 // e_N; north: d(dv_N)/dt = g phi_E + b_N, d(phi_E)/dt = -dv_N/R - e_E), so with w0 = sqrt(g/R):
 //   accelerometer bias b (ENU, horizontal part):  dr = b / w0^2 (1 - cos w0 t)

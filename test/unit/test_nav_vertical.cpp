@@ -1,5 +1,5 @@
 // Vertical channel on the textbook sphere (gravity R^2 / (R + h)^2), static IMU at the true height
-// 0. Free: dh'' = 2 w0^2 dh + b (seed 002 eq. 32), so
+// 0. Free: dh'' = 2 w0^2 dh + b (Fomichev 2022 eq. 32), so
 //   initial height error e0:  dh = e0 cosh(sqrt(2) w0 t)
 //   vertical accel bias b:    dh = b / (2 w0^2) (cosh(sqrt(2) w0 t) - 1)
 // Held (eq. 34, gains k1, k2, a = k2 + 2 w0^2 < 0): dh stays within |e0| + |b| / |a| and tends to

@@ -1,5 +1,5 @@
 // Each noise process alone, and a mixture: the batch reference's overlapping AVAR of generated
-// interval averages against the analytic AVAR (DESIGN.md section 5), at octave-spaced taus over
+// interval averages against the analytic AVAR (doc/models.md), at octave-spaced taus over
 // 3-4 decades, all points inside Bonferroni chi-squared bounds at 99.7 % family-wise.
 #include <gtest/gtest.h>
 
@@ -78,7 +78,7 @@ TEST(NoiseAvar, RateRandomWalk) { expect_process_matches(RandomWalkParameters{1e
 TEST(NoiseAvar, WhiteRateThroughSensorBandwidth) {
   // A 20 Hz first-order anti-alias filter at 100 Hz: exact interval averages of the filtered
   // signal follow eq. 5.7 with T_c = 1/(2 pi 20 Hz), q_c = N / T_c (the leftmost points pulled
-  // below N^2 / tau, DESIGN.md section 5).
+  // below N^2 / tau, doc/models.md).
   auto process = make_noise_process(WhiteRateParameters{1e-3}, 27, 20.0);
   const auto rates = generate(*process, kSamples, kTau0);
   const double tc = 1.0 / (2.0 * 3.14159265358979323846 * 20.0);

@@ -90,7 +90,7 @@ std::vector<double> collect(std::size_t count, const std::function<double()>& sa
 AvarCheck check_avar(const std::vector<double>& rates, double tau0, 
                      const std::function<double(double)>& expected, int m_min, int m_max,
                      double family_confidence, const EdfOfFactor& exact_edf) {
-  // Remove the mean before integrating so the phase keeps its precision (DESIGN.md 5).
+  // Remove the mean before integrating so the phase keeps its precision (doc/models.md).
   const double mean = std::accumulate(rates.begin(), rates.end(), 0.0) / rates.size();
   std::vector<double> centred(rates.size());
   std::transform(rates.begin(), rates.end(), centred.begin(), [&](double r) { return r - mean; });

@@ -1,5 +1,5 @@
 // The AVAR test has power: the same statistic REJECTS a generator broken on purpose (point
-// samples of a Markov process with T_c = 2 tau0 instead of interval averages, DESIGN.md 5),
+// samples of a Markov process with T_c = 2 tau0 instead of interval averages, doc/models.md),
 // with the same seed, sample count and taus that accept the exact generator.
 #include <gtest/gtest.h>
 

@@ -15,7 +15,7 @@
 namespace imu_lab {
 namespace allan {
 
-// Stable32's family of statistics, plus Krobka's dispersions (seed 003, eq. 5.10).
+// Stable32's family of statistics, plus Krobka's dispersions (Krobka 2015, eq. 5.10).
 // Phase-type input x[k] (integrated rate) sampled every tau0.
 enum class Statistic {
   kAllan,                // non-overlapping Allan (ADEV)
@@ -73,7 +73,7 @@ double overlapping_hadamard_variance(const std::vector<double>& phase, double ta
 double time_variance(const std::vector<double>& phase, double tau0_s, int m);
 // Howe's total variance: second differences over the series extended by reflection at both ends.
 double total_variance(const std::vector<double>& phase, double tau0_s, int m);
-// Krobka dispersions (seed 003, eq. 5.10): with the overlapping differences
+// Krobka dispersions (Krobka 2015, eq. 5.10): with the overlapping differences
 // D_k = ybar_{k+m} - ybar_k (Allan) or the analogous second difference of averages (Hadamard),
 //   AKVAR = (<D^2> - <D>^2) / 2,  HKVAR = (<D^2> - <D>^2) / 6,
 // averages over all k with 1/count. A deterministic rate ramp gives a constant D, which

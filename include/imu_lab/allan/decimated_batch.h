@@ -1,5 +1,5 @@
 // Batch reference for the streaming engine beyond its exact limit: average the rate over
-// complete blocks of 2^level samples (DESIGN.md section 5: averaging y, not x), then run the batch
+// complete blocks of 2^level samples (doc/models.md: averaging y, not x), then run the batch
 // statistic on the averaged series at m / 2^level with tau0 * 2^level. The term count and EDF
 // are those of this decimated estimator.
 #pragma once

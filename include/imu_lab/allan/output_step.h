@@ -2,7 +2,7 @@
 // least significant bit (a sensor that outputs n * LSB)? The step found is the largest one all
 // values are multiples of: the LSB itself once the noise has visited neighbouring levels (two
 // values n and n + 1 steps apart prove it). Quantization noise of that output is white with
-// variance step^2 / 12 per sample while the noise spans several levels (DESIGN.md section 5).
+// variance step^2 / 12 per sample while the noise spans several levels (doc/models.md).
 //
 // Tolerance, relative and derived from the arithmetic: values converted to SI in double precision
 // (a decimal parsed, times a unit factor) carry a relative error delta of a few ulps (< 1e-15). A

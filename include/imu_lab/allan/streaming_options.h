@@ -43,7 +43,7 @@ struct StreamingOptions {
   int exact_max_averaging_factor = 1000;
 
   // tau0 is the median stamp interval over the first warm_up_sample_count samples, then fixed;
-  // each channel's offset (removed before accumulating, see DESIGN.md section 5) is the mean of its
+  // each channel's offset (removed before accumulating, see doc/models.md) is the mean of its
   // finite values over the same window.
   std::size_t warm_up_sample_count = 1000;
 

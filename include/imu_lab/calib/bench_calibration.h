@@ -1,4 +1,4 @@
-// Bench calibration of both triads (seed 001 section 3.3 and chapter 5) from one recording in
+// Bench calibration of both triads (Golovach 2017 section 3.3 and chapter 5) from one recording in
 // which the IMU rests in several orientations and turns between them.
 //
 // Mode 1, known orientations (a table schedule): accelerometers from gravity (WGS-84 normal gravity

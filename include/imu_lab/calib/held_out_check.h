@@ -1,4 +1,4 @@
-// The thesis's check of a calibration (seed 001 section 5.4-5.5), on rests the fit did not use:
+// The thesis's check of a calibration (Golovach 2017 section 5.4-5.5), on rests the fit did not use:
 // the magnitudes |g| and |Earth rate| do not depend on the orientation, so their spread over the
 // rests, after correction, shows what the calibration left (the thesis: 3e-4 m/s^2 and
 // 0.001 deg/h measured, 0.015 deg/h allowed, for its ring-laser system).

@@ -1,4 +1,4 @@
-// The calibration model of an IMU, per triad (seed 001 eqs. 3.29-3.37):
+// The calibration model of an IMU, per triad (Golovach 2017 eqs. 3.29-3.37):
 //   output = b + K * input (+ G * specific_force, gyro g-sensitivity) + noise,
 // K a full 3x3 matrix (scale factors on the diagonal, misalignment and non-orthogonality off it).
 // Correction: input = K^-1 (output - b - G * specific_force). The accelerometers are corrected

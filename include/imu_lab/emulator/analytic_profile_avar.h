@@ -1,5 +1,5 @@
 // The Allan variance a profile promises for one axis: the sum of its independent noise
-// processes' analytic AVARs (DESIGN.md section 5; independent processes add in AVAR).
+// processes' analytic AVARs (doc/models.md; independent processes add in AVAR).
 #pragma once
 
 #include "imu_lab/emulator/sensor_profile.h"

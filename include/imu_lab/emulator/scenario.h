@@ -86,7 +86,7 @@ struct TrajectoryConfig {
 
 // Thermal profile: chamber set points (soaks and linear ramps), the sensor lagging the chamber
 // by a first-order time constant plus the self-heating transient p1 e^{p2 t} + p3 e^{p4 t} + p5
-// (seed 001 eq. 3.3, t from power-on = scenario start), and an optional second thermosensor
+// (Golovach 2017 eq. 3.3, t from power-on = scenario start), and an optional second thermosensor
 // lagging the first. At t = 0 both sensors read chamber + self-heating(0) (in equilibrium).
 struct ThermalConfig {
   struct Segment {

@@ -1,5 +1,5 @@
 // Sensor error-model profile: per triad, output = b + K * input + nonlinearity + g-sensitivity
-// + noise (seed 001 section 3.3), with K = I + diag(scale_factor_error) + misalignment, then the
+// + noise (Golovach 2017 section 3.3), with K = I + diag(scale_factor_error) + misalignment, then the
 // output register's LSB.
 // Loaded from YAML with strict validation (every refusal is a ConfigError naming the dotted key).
 #pragma once
@@ -19,7 +19,7 @@ class Node;
 namespace imu_lab {
 namespace emulator {
 
-// Temperature dependence of one triad (seed 001 eq. 4.1, per axis), with dT = T - T_ref:
+// Temperature dependence of one triad (Golovach 2017 eq. 4.1, per axis), with dT = T - T_ref:
 //   bias         += sum_k bias_polynomial[k] dT^(k+1) + bias_per_temperature_rate * dT/dt   [u]
 //   scale factor += sum_k scale_factor_polynomial_ppm[k] dT^(k+1)
 //                   + scale_factor_ppm_per_temperature_rate * dT/dt                         [ppm]

@@ -1,5 +1,5 @@
 // The readings the standards describe (IEEE Std 952 annex C), labelled for what they are. They
-// are correct for a single term and misleading for mixtures (seed 003 section 6), which is why
+// are correct for a single term and misleading for mixtures (Krobka 2015 section 6), which is why
 // the fit is the answer and these are shown beside it with warnings (fit_warnings.h).
 #pragma once
 

@@ -1,4 +1,4 @@
-// The fitted total and each term's partial curve at the measured taus (seed 003 Fig. 5.1), for
+// The fitted total and each term's partial curve at the measured taus (Krobka 2015 Fig. 5.1), for
 // the plotting script: deviations, so they draw on the same axes as the measured curve.
 #pragma once
 

@@ -8,7 +8,7 @@
 //   delta_E =  b_N / g
 //   delta_N = -b_E / g
 //   delta_U =  e_E / (W cos L) - b_E tan L / g
-// This is seed 001 eq. 1.1 (Titterton & Weston's gyrocompassing limit) without its noise terms:
+// This is Golovach 2017 eq. 1.1 (Titterton & Weston's gyrocompassing limit) without its noise terms:
 // the heading error in compass convention (clockwise) is -delta_U = b_E tan L / g - e_E / (W cos
 // L); the relative sign of the two terms depends on how "bias" and "heading error" are signed, and
 // budgets usually add magnitudes.

@@ -6,11 +6,11 @@
 //    Somigliana's closed formula with the second-order free-air height correction of NIMA TR8350.2
 //    (eq. 4-3): g(L, h) = g0(L) [1 - 2/a (1 + f + m - 2 f sin^2 L) h + 3 h^2 / a^2].
 //    Normal gravity already contains the centrifugal term and points along the ellipsoid normal.
-//  - kSphereNonRotating: the textbook's Earth (seed 002 §1.1): a sphere of radius 6371 km fixed in
+//  - kSphereNonRotating: the textbook's Earth (Fomichev 2022 §1.1): a sphere of radius 6371 km fixed in
 //    inertial space, gravity 9.81 m/s^2 at the surface, falling as (R / (R + h))^2
 //    (kInverseSquare, the default; gives the vertical channel's sqrt(2) w0 divergence) or held
 //    constant (kConstant; the vertical channel then has no gravity feedback at all).
-//    With it the closed forms of seed 002 hold exactly (to first order in the errors).
+//    With it the closed forms of Fomichev 2022 hold exactly (to first order in the errors).
 #pragma once
 
 #include <Eigen/Core>

@@ -1,5 +1,5 @@
 // Initial attitude on a static base from averaged IMU increments.
-//  - Levelling: the mean specific force is "up" (seed 002 §1.1: tg D(0) = g_p2 / g_p1, in 3-D).
+//  - Levelling: the mean specific force is "up" (Fomichev 2022 §1.1: tg D(0) = g_p2 / g_p1, in 3-D).
 //  - Heading, kGyrocompass: the mean angular rate is Earth rate; up x Earth rate points east
 //    (ENU: (W cos L N + W sin L U) x U = W cos L E), so no latitude is needed. Needs gyros whose
 //    noise averaged over duration_s is well below W cos L (about 1e-5 rad/s at 50 deg).

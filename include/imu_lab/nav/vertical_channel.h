@@ -1,5 +1,5 @@
 // The vertical channel: free inertial, or held by a reference height through the textbook's
-// constant-gain second-order loop (seed 002 §3.2, eq. 34):
+// constant-gain second-order loop (Fomichev 2022 §3.2, eq. 34):
 //   dh/dt   = v_up + k1 (h - h_ref)
 //   dv_up/dt = f_up - g(h) + k2 (h - h_ref)
 // Gravity stays evaluated at the computed height, so losing the reference just switches to free

@@ -1,4 +1,4 @@
-// Analytic Allan variances of the rate (DESIGN.md section 5, seed 003 eqs. 5.2-5.8 and
+// Analytic Allan variances of the rate (doc/models.md, Krobka 2015 eqs. 5.2-5.8 and
 // table 7.2). All are exact for interval-averaged samples at tau = m tau0 except where noted.
 #pragma once
 

@@ -13,7 +13,7 @@ namespace imu_lab {
 namespace noise {
 
 // g3(u) above, with its series near u = 0 (g3(0) = 1/3). Also the Markov AVAR shape:
-// AVAR(tau) = q^2 tau g3(tau / T_c) (DESIGN.md section 5, eq. 5.7).
+// AVAR(tau) = q^2 tau g3(tau / T_c) (doc/models.md; Krobka 2015 eq. 5.7).
 double integrated_markov_factor(double u);
 
 class IntegratedGaussMarkov {

@@ -1,7 +1,7 @@
 // Parameters of one noise process on one sensor axis, as read from a profile. SI units throughout:
 // "u" below is the triad's rate unit (rad/s for gyros, m/s^2 for accelerometers) and "v" its
 // integral (rad, m/s). Continuous-time densities are per sqrt(Hz) (two-sided PSD convention of
-// IEEE Std 952, DESIGN.md section 5), never per-sample values.
+// IEEE Std 952, doc/models.md), never per-sample values.
 #pragma once
 
 #include <string>
@@ -53,7 +53,7 @@ struct SinusoidParameters {
 // density of the angle, whose per-sample variance density^2 / tau0 then depends on the rate.
 struct WhiteAngleParameters {
   double per_sample_sigma = 0.0;      // Q [v]; used when density is 0
-  double density_per_sqrt_hz = 0.0;   // sqrt(Q' tau0'^2) of seed 003 [v/sqrt(Hz)]
+  double density_per_sqrt_hz = 0.0;   // sqrt(Q' tau0'^2) of Krobka 2015 [v/sqrt(Hz)]
 };
 
 // Krobka's zero-at-DC families (ICINS 2015, section 7; doc/noise_families.md), each generated

@@ -1,7 +1,7 @@
 // Physical quantization of a rate-integrating sensor: the cumulative increment is emitted in
 // whole pulses of weight S, the remainder carried to the next sample. The rounding error is
 // white with Q = S / sqrt(12) only while other noise moves the angle by several pulses per
-// sample (DESIGN.md section 5).
+// sample (doc/models.md).
 #pragma once
 
 namespace imu_lab {

@@ -1,6 +1,6 @@
 // White noise of the integrated quantity (angle / velocity): the sample's increment carries
 // e_k - e_{k-1}, e white. Covers the white-angle quantization model (per-sample sigma Q) and
-// seed 003's "white noise in angle" (continuous density; per-sample variance density^2 / tau0).
+// Krobka 2015's "white noise in angle" (continuous density; per-sample variance density^2 / tau0).
 // Bandwidth-defined: its AVAR depends on the sample rate, 3 sigma^2 / tau^2.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Rate-table scale-factor test of the gyro axis along the table axis (IEEE Std 952 / 528 terms;
-// seed 003 eq. 1.1: error = bias + scale-factor error * rate + nonlinear part):
+// Krobka 2015 eq. 1.1: error = bias + scale-factor error * rate + nonlinear part):
 //   1. plateaus found automatically (plateaus.h) on the rate about the table axis, matched in
 //      order to the nominal rates (consecutive plateaus at one level, split by a glitch, share one);
 //   2. per plateau the mean output and its sigma (calib::rest_statistics: scatter of block means,

@@ -1,5 +1,5 @@
 // Fits a ThermalModel to a thermal test: the IMU static in known orientations while the
-// temperature follows a profile (seed 001 section 4.2.1). Per axis, the window means are
+// temperature follows a profile (Golovach 2017 section 4.2.1). Per axis, the window means are
 //   y = c_o + delta_bias(T, Tdot, T2) + delta_scale(T, Tdot) * input_o
 // with one constant c_o per orientation o (it absorbs the bias at the reference temperature, the
 // scale factor and misalignment times the known input, and the turn-on bias: those belong to
@@ -35,10 +35,10 @@ class ThermalFitError : public std::runtime_error {
 };
 
 struct ThermalFitOptions {
-  double reference_temperature_c = 20.0;  // normal conditions (seed 001)
+  double reference_temperature_c = 20.0;  // normal conditions (Golovach 2017)
   std::optional<int> polynomial_order;    // 1..4 for bias and scale factor; empty: cross-validation
   int max_polynomial_order = 4;
-  bool temperature_rate_term = false;     // the dynamic regime (seed 001 eqs. 3.18, 3.19), on the bias
+  bool temperature_rate_term = false;     // the dynamic regime (Golovach 2017 eqs. 3.18, 3.19), on the bias
   // ... and on the scale factor: needs opposite orientations while the temperature changes,
   // which a test with positions only at the soaks does not have.
   bool scale_factor_rate_term = false;

@@ -1,4 +1,4 @@
-// Temperature model of an IMU and its correction (seed 001 sections 3.2 and 4.2, eq. 3.17 and
+// Temperature model of an IMU and its correction (Golovach 2017 sections 3.2 and 4.2, eq. 3.17 and
 // 4.1). Per axis, with dT = T - T_ref (T the main thermosensor, T2 the optional second, lagging
 // one, dT2 = T2 - T_ref, and Tdot the rate of change of T):
 //   delta_bias  = sum_k b_k dT^(k+1) + b_rate Tdot + sum_k e_k dT2^(k+1)                [u]
