@@ -1,7 +1,7 @@
 // The Allan monitor as a nodelet (imu_lab/AllanMonitorNodelet): the same node class, zero-copy
 // when it shares a manager with the IMU driver. The report is written when the nodelet unloads.
 #include <nodelet/nodelet.h>
-#include <class_loader/register_macro.hpp>
+#include <pluginlib/class_list_macros.hpp>
 
 #include <memory>
 
@@ -28,5 +28,4 @@ class AllanMonitorNodelet : public nodelet::Nodelet {
 }  // namespace ros_io
 }  // namespace imu_lab
 
-// What pluginlib's PLUGINLIB_EXPORT_CLASS expands to (see strapdown_navigator_nodelet.cpp).
-CLASS_LOADER_REGISTER_CLASS(imu_lab::ros_io::AllanMonitorNodelet, nodelet::Nodelet)
+PLUGINLIB_EXPORT_CLASS(imu_lab::ros_io::AllanMonitorNodelet, nodelet::Nodelet)

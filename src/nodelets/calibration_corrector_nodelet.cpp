@@ -1,7 +1,7 @@
 // The calibration corrector as a nodelet (imu_lab/CalibrationCorrectorNodelet): the same node
 // class, zero-copy between the thermal compensator and the navigator in one manager.
 #include <nodelet/nodelet.h>
-#include <class_loader/register_macro.hpp>
+#include <pluginlib/class_list_macros.hpp>
 
 #include <memory>
 
@@ -28,5 +28,4 @@ class CalibrationCorrectorNodelet : public nodelet::Nodelet {
 }  // namespace ros_io
 }  // namespace imu_lab
 
-// What pluginlib's PLUGINLIB_EXPORT_CLASS expands to (see strapdown_navigator_nodelet.cpp).
-CLASS_LOADER_REGISTER_CLASS(imu_lab::ros_io::CalibrationCorrectorNodelet, nodelet::Nodelet)
+PLUGINLIB_EXPORT_CLASS(imu_lab::ros_io::CalibrationCorrectorNodelet, nodelet::Nodelet)

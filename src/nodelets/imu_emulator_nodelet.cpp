@@ -2,7 +2,7 @@
 // own thread (the pacing loop must not block the manager's callback threads); the chain's nodelets
 // in the same manager receive its messages without a copy.
 #include <nodelet/nodelet.h>
-#include <class_loader/register_macro.hpp>
+#include <pluginlib/class_list_macros.hpp>
 
 #include <atomic>
 #include <memory>
@@ -40,5 +40,4 @@ class ImuEmulatorNodelet : public nodelet::Nodelet {
 }  // namespace ros_io
 }  // namespace imu_lab
 
-// What pluginlib's PLUGINLIB_EXPORT_CLASS expands to (see strapdown_navigator_nodelet.cpp).
-CLASS_LOADER_REGISTER_CLASS(imu_lab::ros_io::ImuEmulatorNodelet, nodelet::Nodelet)
+PLUGINLIB_EXPORT_CLASS(imu_lab::ros_io::ImuEmulatorNodelet, nodelet::Nodelet)

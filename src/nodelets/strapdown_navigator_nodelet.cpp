@@ -1,7 +1,7 @@
 // The strapdown navigator as a nodelet (imu_lab/StrapdownNavigatorNodelet): the same node class,
 // zero-copy when it shares a manager with the IMU driver or the corrector.
 #include <nodelet/nodelet.h>
-#include <class_loader/register_macro.hpp>
+#include <pluginlib/class_list_macros.hpp>
 
 #include <memory>
 
@@ -28,6 +28,4 @@ class StrapdownNavigatorNodelet : public nodelet::Nodelet {
 }  // namespace ros_io
 }  // namespace imu_lab
 
-// What pluginlib's PLUGINLIB_EXPORT_CLASS expands to; Debian ships pluginlib's headers where the
-// catkin include path does not reach them.
-CLASS_LOADER_REGISTER_CLASS(imu_lab::ros_io::StrapdownNavigatorNodelet, nodelet::Nodelet)
+PLUGINLIB_EXPORT_CLASS(imu_lab::ros_io::StrapdownNavigatorNodelet, nodelet::Nodelet)

@@ -1,7 +1,7 @@
 // The thermal compensator as a nodelet (imu_lab/ThermalCompensatorNodelet): the same node class,
 // zero-copy when it shares a manager with the IMU driver and the calibration corrector.
 #include <nodelet/nodelet.h>
-#include <class_loader/register_macro.hpp>
+#include <pluginlib/class_list_macros.hpp>
 
 #include <memory>
 
@@ -28,5 +28,4 @@ class ThermalCompensatorNodelet : public nodelet::Nodelet {
 }  // namespace ros_io
 }  // namespace imu_lab
 
-// What pluginlib's PLUGINLIB_EXPORT_CLASS expands to (Debian's pluginlib headers are out of reach).
-CLASS_LOADER_REGISTER_CLASS(imu_lab::ros_io::ThermalCompensatorNodelet, nodelet::Nodelet)
+PLUGINLIB_EXPORT_CLASS(imu_lab::ros_io::ThermalCompensatorNodelet, nodelet::Nodelet)
