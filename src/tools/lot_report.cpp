@@ -152,7 +152,8 @@ int main(int argc, char** argv) {
                                    std::to_string(term.identified.size()) + " of " + std::to_string(units.size()) +
                                    " units)";
       if (std::isfinite(term.absent_upper_bound_max)) {
-        line += "; where absent < " + imu_lab::format_number(term.absent_upper_bound_max, 4);
+        line += (term.identified.empty() ? " (< " : "; absent ones < ") +
+                imu_lab::format_number(term.absent_upper_bound_max, 4) + (term.identified.empty() ? ")" : "");
       }
       std::printf("  %-8s %-18s %-24s %s\n", term.channel.c_str(), term.term.c_str(), term.parameter.c_str(),
                   line.c_str());
