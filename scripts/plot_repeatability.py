@@ -8,11 +8,9 @@ run-to-run sigma.
 Gyros in deg/h, accelerometers in micro-g. The PNG is written beside the target and renamed into
 place (os.replace): never half a file.
 """
-import csv
-import os
 import sys
 
-from plot_thermal import UNITS  # deg/h and micro-g as in the thermal plot; it also selects the Agg backend
+from plot_thermal import UNITS, read_rows, save_figure  # it also selects the Agg backend
 
 import matplotlib.pyplot as plt  # noqa: E402
 
@@ -20,10 +18,7 @@ CHANNELS = ["gyro_x", "gyro_y", "gyro_z", "accel_x", "accel_y", "accel_z"]
 
 
 def main(csv_path, png_path):
-    with open(csv_path, newline="") as handle:
-        rows = list(csv.DictReader(handle))
-    if not rows:
-        sys.exit(f"plot_repeatability: {csv_path} has no rows")
+    rows = read_rows(csv_path)
     figure, axes = plt.subplots(2, 3, figsize=(13, 7), squeeze=False)
     for index, channel in enumerate(CHANNELS):
         axis = axes[index // 3][index % 3]
@@ -45,10 +40,7 @@ def main(csv_path, png_path):
         axis.ticklabel_format(axis="y", useOffset=False)
         if index == 0:
             axis.legend(fontsize=7)
-    figure.tight_layout()
-    temporary = png_path + ".part.png"
-    figure.savefig(temporary, dpi=90)
-    os.replace(temporary, png_path)
+    save_figure(figure, png_path, 90)
 
 
 if __name__ == "__main__":

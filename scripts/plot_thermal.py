@@ -22,11 +22,20 @@ UNITS = {"rad_s": (DEG_H_PER_RAD_S, "deg/h"), "m_s2": (MICRO_G_PER_M_S2, "micro-
 
 
 def read_rows(path):
+    """The rows of a CSV file as dicts; exits naming the running script and the file if it has none."""
     with open(path, newline="") as handle:
         rows = list(csv.DictReader(handle))
     if not rows:
-        sys.exit(f"plot_thermal: {path} has no rows")
+        sys.exit(f"{os.path.basename(sys.argv[0])}: {path} has no rows")
     return rows
+
+
+def save_figure(figure, png_path, dpi):
+    """Lays the figure out and writes it beside the target, then renames it into place."""
+    figure.tight_layout()
+    temporary = png_path + ".tmp.png"
+    figure.savefig(temporary, dpi=dpi)
+    os.replace(temporary, png_path)
 
 
 def main():
@@ -56,10 +65,7 @@ def main():
         bottom.set_ylabel(f"residual [{unit}]")
         bottom.set_xlabel("temperature [degC]")
     figure.suptitle("Bias against temperature (colour: orientation)")
-    figure.tight_layout()
-    temporary = png_path + ".tmp.png"
-    figure.savefig(temporary, dpi=90)
-    os.replace(temporary, png_path)
+    save_figure(figure, png_path, 90)
 
 
 if __name__ == "__main__":

@@ -5,7 +5,8 @@
 
 Reads what scripts/demo left in REPORT: noise/ (allan: noise.yaml, kalibr_imu.yaml, allan.png),
 thermal/ (fit_thermal: thermal.yaml, thermal.png), calibration/ (fit_calibration:
-calibration.yaml, calibration_report.txt), navigation/rlg/ and navigation/mems/ (navigate raw,
+calibration.yaml, calibration_report.txt), repeatability/ (repeatability: repeatability.yaml,
+repeatability.png), navigation/rlg/ and navigation/mems/ (navigate raw,
 corrected and on another power-up; scripts/navigation_budget.py: budget.yaml, budget.png),
 rviz.png, rviz_allan.png or rviz_skipped.txt. A missing part is named in the index, not skipped silently.
 Written beside the target and renamed into place.
@@ -174,6 +175,39 @@ def calibration_section(report):
     return lines
 
 
+def repeatability_section(report, profile):
+    folder = os.path.join(report, "repeatability")
+    path = os.path.join(folder, "repeatability.yaml")
+    lines = ["## Repeatability: five switch-ons", ""]
+    if not os.path.exists(path):
+        return lines + missing("repeatability", path)
+    table = load_yaml(path)
+    path_profile = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "config", "sensors", profile + ".yaml")
+    sensors = load_yaml(path_profile)
+    lines += [f"{len(table['runs'])} emulated switch-ons of {table['runs'][0]['duration_s']:.0f} s at rest "
+              "(one seed each: the emulator draws the turn-on bias per seed). The run-to-run sigma (n - 1) "
+              f"with its {100 * table['confidence']:.0f} % chi-squared interval estimates the turn-on sigma "
+              "combined with the uncertainty of one run's mean (doc/repeatability.md).", "",
+              "| channel | mean output at rest (bias, Earth rate, gravity) | run-to-run sigma [interval] | rms uncertainty of a run's mean | "
+              "profile's turn-on sigma |", "|---|---|---|---|---|"]
+    for channel, values in table["channels"].items():
+        gyro = channel.startswith("gyro")
+        scale, unit = (DEG_H_PER_RAD_S, "deg/h") if gyro else (MICRO_G_PER_M_S2, "µg")
+        triad = sensors["gyro" if gyro else "accelerometer"]
+        turn_on = triad.get("bias_turn_on_sigma_rad_s" if gyro else "bias_turn_on_sigma_m_s2", float("nan"))
+        if isinstance(turn_on, list):  # one number or [x, y, z] (config/sensors)
+            turn_on = turn_on["xyz".index(channel[-1])]
+        spread = values["run_to_run_bias"]
+        lines.append(f"| {channel} | {spread['mean'] * scale:.4g} {unit} | {spread['standard_deviation'] * scale:.3g} "
+                     f"[{spread['lower'] * scale:.3g}, {spread['upper'] * scale:.3g}] {unit} | "
+                     f"{values['rms_mean_uncertainty'] * scale:.3g} {unit} | {turn_on * scale:.3g} {unit} |")
+    lines.append("")
+    lines += figure(report, "repeatability/repeatability.png", "run biases",
+                    "Per channel, each run's bias with its in-run 1-sigma uncertainty, the mean and the "
+                    "run-to-run band ([repeatability/repeatability.csv](repeatability/repeatability.csv)).")
+    return lines
+
+
 def arcsec_triple(values):
     return " / ".join(f"{v:.1f}" for v in values)
 
@@ -295,7 +329,10 @@ def main():
              "Made by `scripts/demo`: each section is one tool on its own emulated test; the numbers are "
              "read from the files beside this page.", ""]
     lines += noise_section(args.report, args.profile)
-    for section in (thermal_section, calibration_section, navigation_section, rviz_section):
+    for section in (thermal_section, calibration_section):
+        lines += section(args.report)
+    lines += repeatability_section(args.report, args.profile)
+    for section in (navigation_section, rviz_section):
         lines += section(args.report)
     target = os.path.join(args.report, "index.md")
     temporary = target + ".tmp"

@@ -82,5 +82,11 @@ std::vector<UnitScale> shape_units(TermKind kind) {
   }
 }
 
+UnitScale field_amplitude_unit(SensorKind sensor, TermKind kind) {
+  const auto units = amplitude_units(sensor, kind);
+  if (units.empty()) return {"si", 1.0};
+  return units.size() > 1 ? units[1] : units[0];
+}
+
 }  // namespace identify
 }  // namespace imu_lab

@@ -16,12 +16,6 @@ namespace {
 
 constexpr std::size_t kMinimumSamples = 16;
 
-double median_of(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 // Octave averaging factors up to a quarter of the run, so the last points still average a few
 // independent clusters.
 std::vector<int> octave_factors(std::size_t sample_count) {
@@ -70,6 +64,13 @@ double extrapolate_deviation(const std::vector<allan::StabilityPoint>& points, d
 }
 
 }  // namespace
+
+double median_of(std::vector<double> values) {
+  if (values.empty()) throw std::invalid_argument("a median needs at least 1 value");
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
 
 SpreadEstimate spread_of(const std::vector<double>& values, double confidence) {
   if (values.size() < 2) throw std::invalid_argument("a spread needs at least 2 values");

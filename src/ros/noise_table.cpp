@@ -49,9 +49,7 @@ std::string format_shape(const identify::TermEstimate& term) {
 }  // namespace
 
 identify::UnitScale display_unit(identify::SensorKind sensor, identify::TermKind kind) {
-  const auto units = identify::amplitude_units(sensor, kind);
-  if (units.empty()) return {"si", 1.0};
-  return units.size() > 1 ? units[1] : units[0];
+  return identify::field_amplitude_unit(sensor, kind);
 }
 
 std::string format_noise_table(const std::vector<identify::TriadFit>& triads) {

@@ -69,7 +69,7 @@ ImuBagLayout with_temperature() {
 
 const std::vector<std::string> kTools = {"allan",       "bag_summary", "correct",   "emulate",       "export_csv",
                                          "fit_calibration", "fit_thermal", "import_csv", "navigate", "rate_table",
-                                         "repeatability"};
+                                         "repeatability", "lot_report"};
 
 // CLI11's own codes were 105-114 (navigate with no arguments: 106); the tools document 2.
 TEST(ToolOptionErrors, EveryToolExitsTwoNamingTheProblem) {
@@ -120,6 +120,9 @@ TEST(ToolNumericOptions, NonsenseNumbersAreRefusedNamingTheOptionAndWriteNothing
       {"correct", bag + " --calibration " + kData + "/calibration_example.yaml --max-temperature-age-s inf" + out,
        "--max-temperature-age-s: 'inf' is not a finite number"},
       {"import_csv", "x.csv --max-reported-rows -1" + out, "--max-reported-rows: must not be negative"},
+      {"lot_report", "unit_a unit_b --confidence 1.5" + out, "--confidence: must be between 0 and 1"},
+      {"lot_report", "unit_a unit_b --confidence nan" + out, "--confidence"},
+      {"lot_report", "a/unit b/unit" + out, "two units are named unit"},
   };
   for (const Case& c : cases) {
     const CommandResult result = run_tool(c.tool, c.arguments);

@@ -44,6 +44,9 @@ struct UnitScale {
 // s, frequencies in Hz (SI only). The zero-DC family's sqrt(alpha) is reported in SI only.
 std::vector<UnitScale> amplitude_units(SensorKind sensor, TermKind kind);
 std::vector<UnitScale> shape_units(TermKind kind);
+// The unit a term's amplitude is shown in to people: the first field unit after the SI one (SI
+// if none).
+UnitScale field_amplitude_unit(SensorKind sensor, TermKind kind);
 
 }  // namespace identify
 }  // namespace imu_lab

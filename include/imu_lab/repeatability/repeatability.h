@@ -36,6 +36,10 @@ struct SpreadEstimate {
 // Throws std::invalid_argument for fewer than 2 values, a non-finite one or confidence outside (0, 1).
 SpreadEstimate spread_of(const std::vector<double>& values, double confidence);
 
+// The median (mean of the two middle values for an even count). Throws std::invalid_argument for
+// no values.
+double median_of(std::vector<double> values);
+
 struct RunChannel {
   double bias = 0.0;                  // mean of the run (window)
   double mean_uncertainty = 0.0;      // standard uncertainty of that mean from the run's noise
