@@ -4,9 +4,12 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <list>
 #include <map>
+#include <mutex>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "imu_lab/noise/analytic_avar.h"
@@ -191,9 +194,10 @@ class UnitTable {
   }
   double at(double lag) const {
     const double magnitude = std::abs(lag);
-    const double rounded = std::round(magnitude);
-    if (rounded == magnitude && rounded < static_cast<double>(values_.size())) {
-      return values_[static_cast<size_t>(rounded)];
+    // An integer lag inside the table (a truncating cast is cheaper than std::round here).
+    if (magnitude < static_cast<double>(values_.size())) {
+      const size_t index = static_cast<size_t>(magnitude);
+      if (static_cast<double>(index) == magnitude) return values_[index];
     }
     return settled_term_structure_function(unit_, magnitude * tau0_s_, tau0_s_);
   }
@@ -240,6 +244,106 @@ bool close_shape(double a, double b) {
   return a > 0.0 && b > 0.0 && std::abs(std::log(a / b)) < kTolerance;
 }
 
+
+// The kernels depend only on the record's geometry (factors, tau0, sample count), the exact
+// shapes of their unit pair, the lag reach they were summed with and whether only the diagonal
+// was summed. The three axes of a triad, and the two triads of one record, meet the same white,
+// flicker, random-walk and white-angle units, the same quantization and the same bank of
+// descriptive Markov terms (descriptive_model.h), so such a kernel is summed once per record and
+// the others copy it: the same numbers, bit for bit, as summing it again. The last few
+// geometries are kept (a monitor refits as its record grows).
+struct UnitKey {
+  int kind = 0;
+  double shape = 0.0;
+  double width = 0.0;
+  bool operator<(const UnitKey& other) const {
+    return std::tie(kind, shape, width) < std::tie(other.kind, other.shape, other.width);
+  }
+  bool operator==(const UnitKey& other) const { return !(*this < other) && !(other < *this); }
+};
+
+UnitKey unit_key(const Term& unit) { return {static_cast<int>(unit.kind), unit.shape, unit.width}; }
+
+struct KernelKey {
+  UnitKey first;   // first <= second
+  UnitKey second;  // == first for a linear sum
+  bool linear = false;
+  double tail_lags = 0.0;
+  long long exact_half_width = 0;
+  double oscillation_factor_limit = 0.0;
+  bool operator<(const KernelKey& other) const {
+    return std::tie(first, second, linear, tail_lags, exact_half_width, oscillation_factor_limit) <
+           std::tie(other.first, other.second, other.linear, other.tail_lags, other.exact_half_width,
+                    other.oscillation_factor_limit);
+  }
+};
+
+struct RecordGeometry {
+  std::vector<int> factors;
+  double tau0_s = 0.0;
+  long long sample_count = 0;
+  bool operator==(const RecordGeometry& other) const {
+    return factors == other.factors && tau0_s == other.tau0_s && sample_count == other.sample_count;
+  }
+};
+
+class SharedKernels {
+ public:
+  static SharedKernels& instance() {
+    static SharedKernels shared;
+    return shared;
+  }
+  // A whole matrix serves a diagonal request too (its diagonal is summed over the same lags).
+  bool find(const RecordGeometry& geometry, const KernelKey& key, bool diagonal_only, Eigen::MatrixXd* full,
+            Eigen::VectorXd* diagonal) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    Kernels& kernels = kernels_of(geometry);
+    const auto whole = kernels.full.find(key);
+    if (whole != kernels.full.end()) {
+      if (diagonal_only) {
+        *diagonal = whole->second.diagonal();
+      } else {
+        *full = whole->second;
+      }
+      return true;
+    }
+    if (!diagonal_only) return false;
+    const auto part = kernels.diagonal.find(key);
+    if (part == kernels.diagonal.end()) return false;
+    *diagonal = part->second;
+    return true;
+  }
+  void store(const RecordGeometry& geometry, const KernelKey& key, const Eigen::MatrixXd* full,
+             const Eigen::VectorXd* diagonal) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    Kernels& kernels = kernels_of(geometry);
+    if (full != nullptr) kernels.full[key] = *full;
+    if (diagonal != nullptr) kernels.diagonal[key] = *diagonal;
+  }
+
+ private:
+  struct Kernels {
+    RecordGeometry geometry;
+    std::map<KernelKey, Eigen::MatrixXd> full;
+    std::map<KernelKey, Eigen::VectorXd> diagonal;
+  };
+  // Most recent first; called under the lock.
+  Kernels& kernels_of(const RecordGeometry& geometry) {
+    constexpr size_t kKeptGeometries = 4;
+    for (auto it = recent_.begin(); it != recent_.end(); ++it) {
+      if (it->geometry == geometry) {
+        recent_.splice(recent_.begin(), recent_, it);
+        return recent_.front();
+      }
+    }
+    recent_.push_front(Kernels{geometry, {}, {}});
+    if (recent_.size() > kKeptGeometries) recent_.pop_back();
+    return recent_.front();
+  }
+  std::mutex mutex_;
+  std::list<Kernels> recent_;
+};
+
 }  // namespace
 
 struct OavarCovariance::Cache {
@@ -247,7 +351,10 @@ struct OavarCovariance::Cache {
   double tau0_s = 0.0;
   long long sample_count = 0;
   std::vector<double> variance_inflation;  // per factor: 1 / pooled term fraction (>= 1)
-  std::vector<UnitTable> units;
+  // The unit terms met so far (a term within 10 % of one's shape reuses it) and their tables of
+  // D, built when a kernel of theirs is first summed.
+  std::vector<Term> units;
+  std::vector<std::unique_ptr<UnitTable>> tables;
   // Lag sums sum_h count c_i c_j (times the normaliser) per unit pair i <= j: the whole matrix
   // over factor pairs, or its diagonal only.
   std::map<std::pair<int, int>, Eigen::MatrixXd> full;
@@ -259,18 +366,39 @@ struct OavarCovariance::Cache {
 
   int unit_index(const Term& unit) {
     for (size_t i = 0; i < units.size(); ++i) {
-      const Term& cached = units[i].unit();
+      const Term& cached = units[i];
       if (cached.kind == unit.kind && close_shape(cached.shape, unit.shape) && close_shape(cached.width, unit.width)) {
         return static_cast<int>(i);
       }
     }
-    int largest = 1;
-    for (int m : factors) largest = std::max(largest, m);
-    std::vector<Term> alone = {unit};
-    const LagReach reach = lag_reach(alone, tau0_s);
-    constexpr long long kMaxTable = 1LL << 16;
-    units.emplace_back(unit, tau0_s, std::min(kMaxTable, 4LL * largest + 2 * reach.exact_half_width + 2));
+    units.push_back(unit);
+    tables.emplace_back();
     return static_cast<int>(units.size()) - 1;
+  }
+
+  const UnitTable& table(int index) {
+    if (!tables[index]) {
+      int largest = 1;
+      for (int m : factors) largest = std::max(largest, m);
+      std::vector<Term> alone = {units[index]};
+      const LagReach reach = lag_reach(alone, tau0_s);
+      constexpr long long kMaxTable = 1LL << 16;
+      tables[index].reset(
+          new UnitTable(units[index], tau0_s, std::min(kMaxTable, 4LL * largest + 2 * reach.exact_half_width + 2)));
+    }
+    return *tables[index];
+  }
+
+  KernelKey kernel_key(int a, int b, bool linear, const LagReach& reach) const {
+    KernelKey key;
+    key.first = unit_key(units[a]);
+    key.second = unit_key(units[b]);
+    if (key.second < key.first) std::swap(key.first, key.second);
+    key.linear = linear;
+    key.tail_lags = reach.tail_lags;
+    key.exact_half_width = reach.exact_half_width;
+    key.oscillation_factor_limit = reach.oscillation_factor_limit;
+    return key;
   }
 
   // Fills every missing kernel among `indices` (for every factor pair, or the diagonal only),
@@ -299,8 +427,44 @@ struct OavarCovariance::Cache {
       }
     }
     std::vector<Term> involved_terms;
-    for (int index : involved) involved_terms.push_back(units[index].unit());
-    const LagReach reach = lag_reach(involved_terms, tau0_s);
+    for (int index : involved) involved_terms.push_back(units[index]);
+    LagReach reach = lag_reach(involved_terms, tau0_s);
+    // A tail beyond the record changes no lag range (each is clipped to the record): one key.
+    reach.tail_lags = std::min(reach.tail_lags, static_cast<double>(sample_count));
+    // Kernels another covariance of this record has summed with this reach are copied.
+    SharedKernels& shared = SharedKernels::instance();
+    const RecordGeometry geometry{factors, tau0_s, sample_count};
+    const auto copy_shared = [&](auto* keys, auto& full_map, auto& diagonal_map, auto key_of) {
+      for (size_t k = 0; k < keys->size();) {
+        Eigen::MatrixXd whole;
+        Eigen::VectorXd part;
+        const auto key = (*keys)[k];
+        if (shared.find(geometry, key_of(key), diagonal_only, &whole, &part)) {
+          if (diagonal_only) {
+            diagonal_map[key] = part;
+          } else {
+            full_map[key] = whole;
+          }
+          keys->erase(keys->begin() + k);
+        } else {
+          ++k;
+        }
+      }
+    };
+    copy_shared(&missing, full, diagonal,
+                [&](const std::pair<int, int>& key) { return kernel_key(key.first, key.second, false, reach); });
+    copy_shared(&linear_missing, linear_full, linear_diagonal,
+                [&](int index) { return kernel_key(index, index, true, reach); });
+    if (missing.empty() && linear_missing.empty()) return;
+    // The c values of the units left to sum (the lags stay those of the whole batch's reach).
+    involved = linear_missing;
+    for (const auto& key : missing) {
+      for (int index : {key.first, key.second}) {
+        if (std::find(involved.begin(), involved.end(), index) == involved.end()) involved.push_back(index);
+      }
+    }
+    std::vector<const UnitTable*> involved_tables(units.size(), nullptr);
+    for (int index : involved) involved_tables[index] = &table(index);
     const int count = static_cast<int>(factors.size());
     for (const auto& key : missing) {
       if (diagonal_only) {
@@ -328,7 +492,7 @@ struct OavarCovariance::Cache {
         const auto visit = [&](double h, double weight) {
           for (int index : involved) {
             double value = 0.0;
-            for (size_t k = 0; k < pair.offsets.size(); ++k) value += pair.weights[k] * units[index].at(h + pair.offsets[k]);
+            for (size_t k = 0; k < pair.offsets.size(); ++k) value += pair.weights[k] * involved_tables[index]->at(h + pair.offsets[k]);
             c[index] = value * pair.scale;
           }
           const double counted = weight * pair.count(h);
@@ -362,6 +526,14 @@ struct OavarCovariance::Cache {
           }
         }
       }
+    }
+    for (const auto& key : missing) {
+      shared.store(geometry, kernel_key(key.first, key.second, false, reach), diagonal_only ? nullptr : &full.at(key),
+                   diagonal_only ? &diagonal.at(key) : nullptr);
+    }
+    for (int index : linear_missing) {
+      shared.store(geometry, kernel_key(index, index, true, reach),
+                   diagonal_only ? nullptr : &linear_full.at(index), diagonal_only ? &linear_diagonal.at(index) : nullptr);
     }
   }
 
