@@ -287,6 +287,9 @@ struct RecordGeometry {
   }
 };
 
+// Per factor pair (i * count + j), C_mn at the lags its sum visits, in order; empty if not summed.
+using DifferenceCovariances = std::vector<std::vector<double>>;
+
 class SharedKernels {
  public:
   static SharedKernels& instance() {
@@ -320,12 +323,39 @@ class SharedKernels {
     if (full != nullptr) kernels.full[key] = *full;
     if (diagonal != nullptr) kernels.diagonal[key] = *diagonal;
   }
+  // A unit's C_mn at every lag a batch of this reach visits (key.second == key.first, not linear),
+  // per factor pair; null if not kept.
+  std::shared_ptr<const DifferenceCovariances> find_differences(const RecordGeometry& geometry, const KernelKey& key) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    Kernels& kernels = kernels_of(geometry);
+    const auto found = kernels.differences.find(key);
+    return found == kernels.differences.end() ? nullptr : found->second;
+  }
+  // Kept while the record's vectors stay within a memory budget (they are the large part).
+  void store_differences(const RecordGeometry& geometry, const KernelKey& key,
+                         std::shared_ptr<const DifferenceCovariances> differences) {
+    constexpr size_t kBudgetBytes = size_t{48} << 20;
+    size_t bytes = 0;
+    for (const auto& values : *differences) bytes += values.size() * sizeof(double);
+    std::lock_guard<std::mutex> lock(mutex_);
+    Kernels& kernels = kernels_of(geometry);
+    const auto old = kernels.differences.find(key);
+    if (old != kernels.differences.end()) {
+      for (const auto& values : *old->second) kernels.difference_bytes -= values.size() * sizeof(double);
+      kernels.differences.erase(old);
+    }
+    if (kernels.difference_bytes + bytes > kBudgetBytes) return;
+    kernels.difference_bytes += bytes;
+    kernels.differences[key] = std::move(differences);
+  }
 
  private:
   struct Kernels {
     RecordGeometry geometry;
     std::map<KernelKey, Eigen::MatrixXd> full;
     std::map<KernelKey, Eigen::VectorXd> diagonal;
+    std::map<KernelKey, std::shared_ptr<const DifferenceCovariances>> differences;
+    size_t difference_bytes = 0;
   };
   // Most recent first; called under the lock.
   Kernels& kernels_of(const RecordGeometry& geometry) {
@@ -336,7 +366,7 @@ class SharedKernels {
         return recent_.front();
       }
     }
-    recent_.push_front(Kernels{geometry, {}, {}});
+    recent_.push_front(Kernels{geometry, {}, {}, {}, 0});
     if (recent_.size() > kKeptGeometries) recent_.pop_back();
     return recent_.front();
   }
@@ -463,8 +493,6 @@ struct OavarCovariance::Cache {
         if (std::find(involved.begin(), involved.end(), index) == involved.end()) involved.push_back(index);
       }
     }
-    std::vector<const UnitTable*> involved_tables(units.size(), nullptr);
-    for (int index : involved) involved_tables[index] = &table(index);
     const int count = static_cast<int>(factors.size());
     for (const auto& key : missing) {
       if (diagonal_only) {
@@ -480,7 +508,30 @@ struct OavarCovariance::Cache {
         linear_full[index] = Eigen::MatrixXd::Zero(count, count);
       }
     }
-    std::vector<double> c(units.size());
+    // Each involved unit's C_mn at the visited lags: kept from an earlier batch of this reach
+    // (another axis, or an earlier model with this unit) or summed now and kept.
+    std::vector<std::shared_ptr<const DifferenceCovariances>> kept(units.size());
+    std::vector<std::shared_ptr<DifferenceCovariances>> fresh(units.size());
+    for (int index : involved) {
+      kept[index] = shared.find_differences(geometry, kernel_key(index, index, false, reach));
+      bool complete = kept[index] != nullptr;
+      for (int i = 0; complete && i < count; ++i) {
+        for (int j = diagonal_only ? i : 0; complete && j < (diagonal_only ? i + 1 : count); ++j) {
+          complete = j < i || !(*kept[index])[i * count + j].empty();
+        }
+      }
+      if (!complete) {
+        fresh[index] = kept[index] ? std::make_shared<DifferenceCovariances>(*kept[index])
+                                   : std::make_shared<DifferenceCovariances>(count * count);
+        kept[index] = fresh[index];
+      }
+    }
+    std::vector<const UnitTable*> involved_tables(units.size(), nullptr);
+    for (int index : involved) {
+      if (fresh[index]) involved_tables[index] = &table(index);
+    }
+    std::vector<std::pair<double, double>> lags;  // (h, quadrature weight)
+    std::vector<const double*> c(units.size());
     std::vector<double> sums(missing.size()), linear_sums(linear_missing.size());
     for (int i = 0; i < count; ++i) {
       for (int j = i; j < count; ++j) {
@@ -489,16 +540,6 @@ struct OavarCovariance::Cache {
         const PairGeometry pair(m, n, tau0_s, sample_count);
         std::fill(sums.begin(), sums.end(), 0.0);
         std::fill(linear_sums.begin(), linear_sums.end(), 0.0);
-        const auto visit = [&](double h, double weight) {
-          for (int index : involved) {
-            double value = 0.0;
-            for (size_t k = 0; k < pair.offsets.size(); ++k) value += pair.weights[k] * involved_tables[index]->at(h + pair.offsets[k]);
-            c[index] = value * pair.scale;
-          }
-          const double counted = weight * pair.count(h);
-          for (size_t k = 0; k < missing.size(); ++k) sums[k] += counted * c[missing[k].first] * c[missing[k].second];
-          for (size_t k = 0; k < linear_missing.size(); ++k) linear_sums[k] += counted * c[linear_missing[k]];
-        };
         // Outside the two filters' joint span C_mn vanishes for white, random-walk and
         // white-angle terms, decays like e^{-u / T} for Markov ones and like (span / u)^2 for
         // flicker, whose squared tail beyond 16 spans holds under 3e-4 of the sum.
@@ -508,7 +549,28 @@ struct OavarCovariance::Cache {
         const long long hi = std::min<long long>(pair.highest_lag(), static_cast<long long>(reach_lags));
         constexpr long long kDefaultHalfWidth = 8;
         const bool oscillating = std::min(m, n) < reach.oscillation_factor_limit;
-        visit_lags(lo, hi, pair.nodes(), oscillating ? reach.exact_half_width : kDefaultHalfWidth, visit);
+        lags.clear();
+        visit_lags(lo, hi, pair.nodes(), oscillating ? reach.exact_half_width : kDefaultHalfWidth,
+                   [&](double h, double weight) { lags.push_back({h, weight}); });
+        for (int index : involved) {
+          if (fresh[index] && (*fresh[index])[i * count + j].empty()) {
+            std::vector<double>& values = (*fresh[index])[i * count + j];
+            values.reserve(lags.size());
+            for (const auto& lag : lags) {
+              double value = 0.0;
+              for (size_t k = 0; k < pair.offsets.size(); ++k) {
+                value += pair.weights[k] * involved_tables[index]->at(lag.first + pair.offsets[k]);
+              }
+              values.push_back(value * pair.scale);
+            }
+          }
+          c[index] = (*kept[index])[i * count + j].data();
+        }
+        for (size_t p = 0; p < lags.size(); ++p) {
+          const double counted = lags[p].second * pair.count(lags[p].first);
+          for (size_t k = 0; k < missing.size(); ++k) sums[k] += counted * c[missing[k].first][p] * c[missing[k].second][p];
+          for (size_t k = 0; k < linear_missing.size(); ++k) linear_sums[k] += counted * c[linear_missing[k]][p];
+        }
         for (size_t k = 0; k < missing.size(); ++k) {
           const double value = sums[k] * pair.normaliser();
           if (diagonal_only) {
@@ -526,6 +588,9 @@ struct OavarCovariance::Cache {
           }
         }
       }
+    }
+    for (int index : involved) {
+      if (fresh[index]) shared.store_differences(geometry, kernel_key(index, index, false, reach), fresh[index]);
     }
     for (const auto& key : missing) {
       shared.store(geometry, kernel_key(key.first, key.second, false, reach), diagonal_only ? nullptr : &full.at(key),
