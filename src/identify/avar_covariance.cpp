@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <list>
 #include <map>
 #include <mutex>
@@ -188,16 +189,21 @@ double settled_term_structure_function(const Term& term, double u, double tau0_s
 // of them short), its settled form elsewhere.
 class UnitTable {
  public:
+  // Entries are filled when first asked for (NaN until then): the sums visit a small part of them.
   UnitTable(const Term& unit, double tau0_s, long long size)
-      : unit_(unit), tau0_s_(tau0_s), values_(static_cast<size_t>(std::max(1LL, size))) {
-    for (size_t k = 0; k < values_.size(); ++k) values_[k] = term_structure_function(unit, k * tau0_s, tau0_s);
-  }
+      : unit_(unit),
+        tau0_s_(tau0_s),
+        values_(static_cast<size_t>(std::max(1LL, size)), std::numeric_limits<double>::quiet_NaN()) {}
   double at(double lag) const {
     const double magnitude = std::abs(lag);
     // An integer lag inside the table (a truncating cast is cheaper than std::round here).
     if (magnitude < static_cast<double>(values_.size())) {
       const size_t index = static_cast<size_t>(magnitude);
-      if (static_cast<double>(index) == magnitude) return values_[index];
+      if (static_cast<double>(index) == magnitude) {
+        double& value = values_[index];
+        if (std::isnan(value)) value = term_structure_function(unit_, index * tau0_s_, tau0_s_);
+        return value;
+      }
     }
     return settled_term_structure_function(unit_, magnitude * tau0_s_, tau0_s_);
   }
@@ -206,7 +212,7 @@ class UnitTable {
  private:
   Term unit_;
   double tau0_s_;
-  std::vector<double> values_;
+  mutable std::vector<double> values_;
 };
 
 // The stochastic terms of a model as (unit term, weight = amplitude^2); the output quantization
@@ -531,6 +537,7 @@ struct OavarCovariance::Cache {
       if (fresh[index]) involved_tables[index] = &table(index);
     }
     std::vector<std::pair<double, double>> lags;  // (h, quadrature weight)
+    std::vector<double> counted;                  // weight times the count of pairs at h
     std::vector<const double*> c(units.size());
     std::vector<double> sums(missing.size()), linear_sums(linear_missing.size());
     for (int i = 0; i < count; ++i) {
@@ -566,10 +573,21 @@ struct OavarCovariance::Cache {
           }
           c[index] = (*kept[index])[i * count + j].data();
         }
-        for (size_t p = 0; p < lags.size(); ++p) {
-          const double counted = lags[p].second * pair.count(lags[p].first);
-          for (size_t k = 0; k < missing.size(); ++k) sums[k] += counted * c[missing[k].first][p] * c[missing[k].second][p];
-          for (size_t k = 0; k < linear_missing.size(); ++k) linear_sums[k] += counted * c[linear_missing[k]][p];
+        counted.resize(lags.size());
+        for (size_t p = 0; p < lags.size(); ++p) counted[p] = lags[p].second * pair.count(lags[p].first);
+        // Each sum runs over the lags in order (the same additions as lag by lag).
+        for (size_t k = 0; k < missing.size(); ++k) {
+          const double* first = c[missing[k].first];
+          const double* second = c[missing[k].second];
+          double sum = 0.0;
+          for (size_t p = 0; p < lags.size(); ++p) sum += counted[p] * first[p] * second[p];
+          sums[k] = sum;
+        }
+        for (size_t k = 0; k < linear_missing.size(); ++k) {
+          const double* values = c[linear_missing[k]];
+          double sum = 0.0;
+          for (size_t p = 0; p < lags.size(); ++p) sum += counted[p] * values[p];
+          linear_sums[k] = sum;
         }
         for (size_t k = 0; k < missing.size(); ++k) {
           const double value = sums[k] * pair.normaliser();
