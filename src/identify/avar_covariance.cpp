@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <iterator>
 #include <limits>
 #include <list>
 #include <map>
@@ -363,17 +364,22 @@ class SharedKernels {
     std::map<KernelKey, std::shared_ptr<const DifferenceCovariances>> differences;
     size_t difference_bytes = 0;
   };
-  // Most recent first; called under the lock.
+  // Most recent first; called under the lock. Only the most recent record keeps its C_mn
+  // vectors, so they stay within one budget; older records keep their (small) sums.
   Kernels& kernels_of(const RecordGeometry& geometry) {
     constexpr size_t kKeptGeometries = 4;
-    for (auto it = recent_.begin(); it != recent_.end(); ++it) {
-      if (it->geometry == geometry) {
-        recent_.splice(recent_.begin(), recent_, it);
-        return recent_.front();
-      }
+    auto found = std::find_if(recent_.begin(), recent_.end(),
+                              [&](const Kernels& kernels) { return kernels.geometry == geometry; });
+    if (found != recent_.end()) {
+      recent_.splice(recent_.begin(), recent_, found);
+    } else {
+      recent_.push_front(Kernels{geometry, {}, {}, {}, 0});
+      if (recent_.size() > kKeptGeometries) recent_.pop_back();
     }
-    recent_.push_front(Kernels{geometry, {}, {}, {}, 0});
-    if (recent_.size() > kKeptGeometries) recent_.pop_back();
+    for (auto older = std::next(recent_.begin()); older != recent_.end(); ++older) {
+      older->differences.clear();
+      older->difference_bytes = 0;
+    }
     return recent_.front();
   }
   std::mutex mutex_;
