@@ -338,7 +338,7 @@ class SharedKernels {
     const auto found = kernels.differences.find(key);
     return found == kernels.differences.end() ? nullptr : found->second;
   }
-  // Kept while the record's vectors stay within a memory budget (they are the large part).
+  // Kept while all records' vectors stay within one memory budget (they are the large part).
   void store_differences(const RecordGeometry& geometry, const KernelKey& key,
                          std::shared_ptr<const DifferenceCovariances> differences) {
     constexpr size_t kBudgetBytes = size_t{48} << 20;
@@ -351,7 +351,17 @@ class SharedKernels {
       for (const auto& values : *old->second) kernels.difference_bytes -= values.size() * sizeof(double);
       kernels.differences.erase(old);
     }
-    if (kernels.difference_bytes + bytes > kBudgetBytes) return;
+    // One budget for all records kept: the least recent records' vectors go first (their small
+    // sums stay).
+    size_t total = 0;
+    for (const Kernels& each : recent_) total += each.difference_bytes;
+    for (auto older = recent_.rbegin(); total + bytes > kBudgetBytes && older != recent_.rend(); ++older) {
+      if (&*older == &kernels) continue;
+      total -= older->difference_bytes;
+      older->differences.clear();
+      older->difference_bytes = 0;
+    }
+    if (total + bytes > kBudgetBytes) return;
     kernels.difference_bytes += bytes;
     kernels.differences[key] = std::move(differences);
   }
@@ -364,8 +374,7 @@ class SharedKernels {
     std::map<KernelKey, std::shared_ptr<const DifferenceCovariances>> differences;
     size_t difference_bytes = 0;
   };
-  // Most recent first; called under the lock. Only the most recent record keeps its C_mn
-  // vectors, so they stay within one budget; older records keep their (small) sums.
+  // Most recent first; called under the lock.
   Kernels& kernels_of(const RecordGeometry& geometry) {
     constexpr size_t kKeptGeometries = 4;
     auto found = std::find_if(recent_.begin(), recent_.end(),
@@ -375,10 +384,6 @@ class SharedKernels {
     } else {
       recent_.push_front(Kernels{geometry, {}, {}, {}, 0});
       if (recent_.size() > kKeptGeometries) recent_.pop_back();
-    }
-    for (auto older = std::next(recent_.begin()); older != recent_.end(); ++older) {
-      older->differences.clear();
-      older->difference_bytes = 0;
     }
     return recent_.front();
   }
