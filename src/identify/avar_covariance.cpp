@@ -4,9 +4,14 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <iterator>
+#include <limits>
+#include <list>
 #include <map>
+#include <mutex>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "imu_lab/noise/analytic_avar.h"
@@ -185,15 +190,21 @@ double settled_term_structure_function(const Term& term, double u, double tau0_s
 // of them short), its settled form elsewhere.
 class UnitTable {
  public:
+  // Entries are filled when first asked for (NaN until then): the sums visit a small part of them.
   UnitTable(const Term& unit, double tau0_s, long long size)
-      : unit_(unit), tau0_s_(tau0_s), values_(static_cast<size_t>(std::max(1LL, size))) {
-    for (size_t k = 0; k < values_.size(); ++k) values_[k] = term_structure_function(unit, k * tau0_s, tau0_s);
-  }
+      : unit_(unit),
+        tau0_s_(tau0_s),
+        values_(static_cast<size_t>(std::max(1LL, size)), std::numeric_limits<double>::quiet_NaN()) {}
   double at(double lag) const {
     const double magnitude = std::abs(lag);
-    const double rounded = std::round(magnitude);
-    if (rounded == magnitude && rounded < static_cast<double>(values_.size())) {
-      return values_[static_cast<size_t>(rounded)];
+    // An integer lag inside the table (a truncating cast is cheaper than std::round here).
+    if (magnitude < static_cast<double>(values_.size())) {
+      const size_t index = static_cast<size_t>(magnitude);
+      if (static_cast<double>(index) == magnitude) {
+        double& value = values_[index];
+        if (std::isnan(value)) value = term_structure_function(unit_, index * tau0_s_, tau0_s_);
+        return value;
+      }
     }
     return settled_term_structure_function(unit_, magnitude * tau0_s_, tau0_s_);
   }
@@ -202,7 +213,7 @@ class UnitTable {
  private:
   Term unit_;
   double tau0_s_;
-  std::vector<double> values_;
+  mutable std::vector<double> values_;
 };
 
 // The stochastic terms of a model as (unit term, weight = amplitude^2); the output quantization
@@ -240,6 +251,146 @@ bool close_shape(double a, double b) {
   return a > 0.0 && b > 0.0 && std::abs(std::log(a / b)) < kTolerance;
 }
 
+
+// The kernels depend only on the record's geometry (factors, tau0, sample count), the exact
+// shapes of their unit pair, the lag reach they were summed with and whether only the diagonal
+// was summed. The three axes of a triad, and the two triads of one record, meet the same white,
+// flicker, random-walk and white-angle units, the same quantization and the same bank of
+// descriptive Markov terms (descriptive_model.h), so such a kernel is summed once per record and
+// the others copy it: the same numbers, bit for bit, as summing it again. The last few
+// geometries are kept (a monitor refits as its record grows).
+struct UnitKey {
+  int kind = 0;
+  double shape = 0.0;
+  double width = 0.0;
+  bool operator<(const UnitKey& other) const {
+    return std::tie(kind, shape, width) < std::tie(other.kind, other.shape, other.width);
+  }
+  bool operator==(const UnitKey& other) const { return !(*this < other) && !(other < *this); }
+};
+
+UnitKey unit_key(const Term& unit) { return {static_cast<int>(unit.kind), unit.shape, unit.width}; }
+
+struct KernelKey {
+  UnitKey first;   // first <= second
+  UnitKey second;  // == first for a linear sum
+  bool linear = false;
+  double tail_lags = 0.0;
+  long long exact_half_width = 0;
+  double oscillation_factor_limit = 0.0;
+  bool operator<(const KernelKey& other) const {
+    return std::tie(first, second, linear, tail_lags, exact_half_width, oscillation_factor_limit) <
+           std::tie(other.first, other.second, other.linear, other.tail_lags, other.exact_half_width,
+                    other.oscillation_factor_limit);
+  }
+};
+
+struct RecordGeometry {
+  std::vector<int> factors;
+  double tau0_s = 0.0;
+  long long sample_count = 0;
+  bool operator==(const RecordGeometry& other) const {
+    return factors == other.factors && tau0_s == other.tau0_s && sample_count == other.sample_count;
+  }
+};
+
+// Per factor pair (i * count + j), C_mn at the lags its sum visits, in order; empty if not summed.
+using DifferenceCovariances = std::vector<std::vector<double>>;
+
+class SharedKernels {
+ public:
+  static SharedKernels& instance() {
+    static SharedKernels shared;
+    return shared;
+  }
+  // A whole matrix serves a diagonal request too (its diagonal is summed over the same lags).
+  bool find(const RecordGeometry& geometry, const KernelKey& key, bool diagonal_only, Eigen::MatrixXd* full,
+            Eigen::VectorXd* diagonal) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    Kernels& kernels = kernels_of(geometry);
+    const auto whole = kernels.full.find(key);
+    if (whole != kernels.full.end()) {
+      if (diagonal_only) {
+        *diagonal = whole->second.diagonal();
+      } else {
+        *full = whole->second;
+      }
+      return true;
+    }
+    if (!diagonal_only) return false;
+    const auto part = kernels.diagonal.find(key);
+    if (part == kernels.diagonal.end()) return false;
+    *diagonal = part->second;
+    return true;
+  }
+  void store(const RecordGeometry& geometry, const KernelKey& key, const Eigen::MatrixXd* full,
+             const Eigen::VectorXd* diagonal) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    Kernels& kernels = kernels_of(geometry);
+    if (full != nullptr) kernels.full[key] = *full;
+    if (diagonal != nullptr) kernels.diagonal[key] = *diagonal;
+  }
+  // A unit's C_mn at every lag a batch of this reach visits (key.second == key.first, not linear),
+  // per factor pair; null if not kept.
+  std::shared_ptr<const DifferenceCovariances> find_differences(const RecordGeometry& geometry, const KernelKey& key) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    Kernels& kernels = kernels_of(geometry);
+    const auto found = kernels.differences.find(key);
+    return found == kernels.differences.end() ? nullptr : found->second;
+  }
+  // Kept while all records' vectors stay within one memory budget (they are the large part).
+  void store_differences(const RecordGeometry& geometry, const KernelKey& key,
+                         std::shared_ptr<const DifferenceCovariances> differences) {
+    constexpr size_t kBudgetBytes = size_t{48} << 20;
+    size_t bytes = 0;
+    for (const auto& values : *differences) bytes += values.size() * sizeof(double);
+    std::lock_guard<std::mutex> lock(mutex_);
+    Kernels& kernels = kernels_of(geometry);
+    const auto old = kernels.differences.find(key);
+    if (old != kernels.differences.end()) {
+      for (const auto& values : *old->second) kernels.difference_bytes -= values.size() * sizeof(double);
+      kernels.differences.erase(old);
+    }
+    // One budget for all records kept: the least recent records' vectors go first (their small
+    // sums stay).
+    size_t total = 0;
+    for (const Kernels& each : recent_) total += each.difference_bytes;
+    for (auto older = recent_.rbegin(); total + bytes > kBudgetBytes && older != recent_.rend(); ++older) {
+      if (&*older == &kernels) continue;
+      total -= older->difference_bytes;
+      older->differences.clear();
+      older->difference_bytes = 0;
+    }
+    if (total + bytes > kBudgetBytes) return;
+    kernels.difference_bytes += bytes;
+    kernels.differences[key] = std::move(differences);
+  }
+
+ private:
+  struct Kernels {
+    RecordGeometry geometry;
+    std::map<KernelKey, Eigen::MatrixXd> full;
+    std::map<KernelKey, Eigen::VectorXd> diagonal;
+    std::map<KernelKey, std::shared_ptr<const DifferenceCovariances>> differences;
+    size_t difference_bytes = 0;
+  };
+  // Most recent first; called under the lock.
+  Kernels& kernels_of(const RecordGeometry& geometry) {
+    constexpr size_t kKeptGeometries = 4;
+    auto found = std::find_if(recent_.begin(), recent_.end(),
+                              [&](const Kernels& kernels) { return kernels.geometry == geometry; });
+    if (found != recent_.end()) {
+      recent_.splice(recent_.begin(), recent_, found);
+    } else {
+      recent_.push_front(Kernels{geometry, {}, {}, {}, 0});
+      if (recent_.size() > kKeptGeometries) recent_.pop_back();
+    }
+    return recent_.front();
+  }
+  std::mutex mutex_;
+  std::list<Kernels> recent_;
+};
+
 }  // namespace
 
 struct OavarCovariance::Cache {
@@ -247,7 +398,10 @@ struct OavarCovariance::Cache {
   double tau0_s = 0.0;
   long long sample_count = 0;
   std::vector<double> variance_inflation;  // per factor: 1 / pooled term fraction (>= 1)
-  std::vector<UnitTable> units;
+  // The unit terms met so far (a term within 10 % of one's shape reuses it) and their tables of
+  // D, built when a kernel of theirs is first summed.
+  std::vector<Term> units;
+  std::vector<std::unique_ptr<UnitTable>> tables;
   // Lag sums sum_h count c_i c_j (times the normaliser) per unit pair i <= j: the whole matrix
   // over factor pairs, or its diagonal only.
   std::map<std::pair<int, int>, Eigen::MatrixXd> full;
@@ -259,18 +413,39 @@ struct OavarCovariance::Cache {
 
   int unit_index(const Term& unit) {
     for (size_t i = 0; i < units.size(); ++i) {
-      const Term& cached = units[i].unit();
+      const Term& cached = units[i];
       if (cached.kind == unit.kind && close_shape(cached.shape, unit.shape) && close_shape(cached.width, unit.width)) {
         return static_cast<int>(i);
       }
     }
-    int largest = 1;
-    for (int m : factors) largest = std::max(largest, m);
-    std::vector<Term> alone = {unit};
-    const LagReach reach = lag_reach(alone, tau0_s);
-    constexpr long long kMaxTable = 1LL << 16;
-    units.emplace_back(unit, tau0_s, std::min(kMaxTable, 4LL * largest + 2 * reach.exact_half_width + 2));
+    units.push_back(unit);
+    tables.emplace_back();
     return static_cast<int>(units.size()) - 1;
+  }
+
+  const UnitTable& table(int index) {
+    if (!tables[index]) {
+      int largest = 1;
+      for (int m : factors) largest = std::max(largest, m);
+      std::vector<Term> alone = {units[index]};
+      const LagReach reach = lag_reach(alone, tau0_s);
+      constexpr long long kMaxTable = 1LL << 16;
+      tables[index].reset(
+          new UnitTable(units[index], tau0_s, std::min(kMaxTable, 4LL * largest + 2 * reach.exact_half_width + 2)));
+    }
+    return *tables[index];
+  }
+
+  KernelKey kernel_key(int a, int b, bool linear, const LagReach& reach) const {
+    KernelKey key;
+    key.first = unit_key(units[a]);
+    key.second = unit_key(units[b]);
+    if (key.second < key.first) std::swap(key.first, key.second);
+    key.linear = linear;
+    key.tail_lags = reach.tail_lags;
+    key.exact_half_width = reach.exact_half_width;
+    key.oscillation_factor_limit = reach.oscillation_factor_limit;
+    return key;
   }
 
   // Fills every missing kernel among `indices` (for every factor pair, or the diagonal only),
@@ -299,8 +474,42 @@ struct OavarCovariance::Cache {
       }
     }
     std::vector<Term> involved_terms;
-    for (int index : involved) involved_terms.push_back(units[index].unit());
-    const LagReach reach = lag_reach(involved_terms, tau0_s);
+    for (int index : involved) involved_terms.push_back(units[index]);
+    LagReach reach = lag_reach(involved_terms, tau0_s);
+    // A tail beyond the record changes no lag range (each is clipped to the record): one key.
+    reach.tail_lags = std::min(reach.tail_lags, static_cast<double>(sample_count));
+    // Kernels another covariance of this record has summed with this reach are copied.
+    SharedKernels& shared = SharedKernels::instance();
+    const RecordGeometry geometry{factors, tau0_s, sample_count};
+    const auto copy_shared = [&](auto* keys, auto& full_map, auto& diagonal_map, auto key_of) {
+      for (size_t k = 0; k < keys->size();) {
+        Eigen::MatrixXd whole;
+        Eigen::VectorXd part;
+        const auto key = (*keys)[k];
+        if (shared.find(geometry, key_of(key), diagonal_only, &whole, &part)) {
+          if (diagonal_only) {
+            diagonal_map[key] = part;
+          } else {
+            full_map[key] = whole;
+          }
+          keys->erase(keys->begin() + k);
+        } else {
+          ++k;
+        }
+      }
+    };
+    copy_shared(&missing, full, diagonal,
+                [&](const std::pair<int, int>& key) { return kernel_key(key.first, key.second, false, reach); });
+    copy_shared(&linear_missing, linear_full, linear_diagonal,
+                [&](int index) { return kernel_key(index, index, true, reach); });
+    if (missing.empty() && linear_missing.empty()) return;
+    // The c values of the units left to sum (the lags stay those of the whole batch's reach).
+    involved = linear_missing;
+    for (const auto& key : missing) {
+      for (int index : {key.first, key.second}) {
+        if (std::find(involved.begin(), involved.end(), index) == involved.end()) involved.push_back(index);
+      }
+    }
     const int count = static_cast<int>(factors.size());
     for (const auto& key : missing) {
       if (diagonal_only) {
@@ -316,7 +525,31 @@ struct OavarCovariance::Cache {
         linear_full[index] = Eigen::MatrixXd::Zero(count, count);
       }
     }
-    std::vector<double> c(units.size());
+    // Each involved unit's C_mn at the visited lags: kept from an earlier batch of this reach
+    // (another axis, or an earlier model with this unit) or summed now and kept.
+    std::vector<std::shared_ptr<const DifferenceCovariances>> kept(units.size());
+    std::vector<std::shared_ptr<DifferenceCovariances>> fresh(units.size());
+    for (int index : involved) {
+      kept[index] = shared.find_differences(geometry, kernel_key(index, index, false, reach));
+      bool complete = kept[index] != nullptr;
+      for (int i = 0; complete && i < count; ++i) {
+        for (int j = diagonal_only ? i : 0; complete && j < (diagonal_only ? i + 1 : count); ++j) {
+          complete = j < i || !(*kept[index])[i * count + j].empty();
+        }
+      }
+      if (!complete) {
+        fresh[index] = kept[index] ? std::make_shared<DifferenceCovariances>(*kept[index])
+                                   : std::make_shared<DifferenceCovariances>(count * count);
+        kept[index] = fresh[index];
+      }
+    }
+    std::vector<const UnitTable*> involved_tables(units.size(), nullptr);
+    for (int index : involved) {
+      if (fresh[index]) involved_tables[index] = &table(index);
+    }
+    std::vector<std::pair<double, double>> lags;  // (h, quadrature weight)
+    std::vector<double> counted;                  // weight times the count of pairs at h
+    std::vector<const double*> c(units.size());
     std::vector<double> sums(missing.size()), linear_sums(linear_missing.size());
     for (int i = 0; i < count; ++i) {
       for (int j = i; j < count; ++j) {
@@ -325,16 +558,6 @@ struct OavarCovariance::Cache {
         const PairGeometry pair(m, n, tau0_s, sample_count);
         std::fill(sums.begin(), sums.end(), 0.0);
         std::fill(linear_sums.begin(), linear_sums.end(), 0.0);
-        const auto visit = [&](double h, double weight) {
-          for (int index : involved) {
-            double value = 0.0;
-            for (size_t k = 0; k < pair.offsets.size(); ++k) value += pair.weights[k] * units[index].at(h + pair.offsets[k]);
-            c[index] = value * pair.scale;
-          }
-          const double counted = weight * pair.count(h);
-          for (size_t k = 0; k < missing.size(); ++k) sums[k] += counted * c[missing[k].first] * c[missing[k].second];
-          for (size_t k = 0; k < linear_missing.size(); ++k) linear_sums[k] += counted * c[linear_missing[k]];
-        };
         // Outside the two filters' joint span C_mn vanishes for white, random-walk and
         // white-angle terms, decays like e^{-u / T} for Markov ones and like (span / u)^2 for
         // flicker, whose squared tail beyond 16 spans holds under 3e-4 of the sum.
@@ -344,7 +567,39 @@ struct OavarCovariance::Cache {
         const long long hi = std::min<long long>(pair.highest_lag(), static_cast<long long>(reach_lags));
         constexpr long long kDefaultHalfWidth = 8;
         const bool oscillating = std::min(m, n) < reach.oscillation_factor_limit;
-        visit_lags(lo, hi, pair.nodes(), oscillating ? reach.exact_half_width : kDefaultHalfWidth, visit);
+        lags.clear();
+        visit_lags(lo, hi, pair.nodes(), oscillating ? reach.exact_half_width : kDefaultHalfWidth,
+                   [&](double h, double weight) { lags.push_back({h, weight}); });
+        for (int index : involved) {
+          if (fresh[index] && (*fresh[index])[i * count + j].empty()) {
+            std::vector<double>& values = (*fresh[index])[i * count + j];
+            values.reserve(lags.size());
+            for (const auto& lag : lags) {
+              double value = 0.0;
+              for (size_t k = 0; k < pair.offsets.size(); ++k) {
+                value += pair.weights[k] * involved_tables[index]->at(lag.first + pair.offsets[k]);
+              }
+              values.push_back(value * pair.scale);
+            }
+          }
+          c[index] = (*kept[index])[i * count + j].data();
+        }
+        counted.resize(lags.size());
+        for (size_t p = 0; p < lags.size(); ++p) counted[p] = lags[p].second * pair.count(lags[p].first);
+        // Each sum runs over the lags in order (the same additions as lag by lag).
+        for (size_t k = 0; k < missing.size(); ++k) {
+          const double* first = c[missing[k].first];
+          const double* second = c[missing[k].second];
+          double sum = 0.0;
+          for (size_t p = 0; p < lags.size(); ++p) sum += counted[p] * first[p] * second[p];
+          sums[k] = sum;
+        }
+        for (size_t k = 0; k < linear_missing.size(); ++k) {
+          const double* values = c[linear_missing[k]];
+          double sum = 0.0;
+          for (size_t p = 0; p < lags.size(); ++p) sum += counted[p] * values[p];
+          linear_sums[k] = sum;
+        }
         for (size_t k = 0; k < missing.size(); ++k) {
           const double value = sums[k] * pair.normaliser();
           if (diagonal_only) {
@@ -362,6 +617,17 @@ struct OavarCovariance::Cache {
           }
         }
       }
+    }
+    for (int index : involved) {
+      if (fresh[index]) shared.store_differences(geometry, kernel_key(index, index, false, reach), fresh[index]);
+    }
+    for (const auto& key : missing) {
+      shared.store(geometry, kernel_key(key.first, key.second, false, reach), diagonal_only ? nullptr : &full.at(key),
+                   diagonal_only ? &diagonal.at(key) : nullptr);
+    }
+    for (int index : linear_missing) {
+      shared.store(geometry, kernel_key(index, index, true, reach),
+                   diagonal_only ? nullptr : &linear_full.at(index), diagonal_only ? &linear_diagonal.at(index) : nullptr);
     }
   }
 

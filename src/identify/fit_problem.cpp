@@ -5,10 +5,12 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
+#include "imu_lab/noise/analytic_avar.h"
 
 namespace imu_lab {
 namespace identify {
@@ -19,25 +21,39 @@ constexpr double kShapeStep = 1e-4;  // central-difference step in a ln-shape
 
 // Model AVAR at each point and its derivative with respect to each ln-parameter (analytic in
 // the amplitudes, whose AVAR is proportional to amplitude^2; central differences in the shapes).
+// Each term's AVAR is evaluated once per point and serves both the sum and its amplitude column;
+// the perturbed terms are built alone (this runs in every solver iteration).
 void model_and_jacobian(const std::vector<FitPoint>& points, const ModelStructure& structure,
                         const std::vector<double>& log_parameters, Eigen::VectorXd* model_avar_values,
                         Eigen::MatrixXd* jacobian) {
   const NoiseModel model = model_from_log_parameters(structure, log_parameters);
   const int count = static_cast<int>(points.size());
+  const size_t terms = model.terms.size();
+  // Per point, the terms' AVARs in order, summed as model_avar sums them.
+  Eigen::MatrixXd term_values(terms, count);
   *model_avar_values = Eigen::VectorXd(count);
-  for (int k = 0; k < count; ++k) (*model_avar_values)(k) = model_avar(model, points[k].tau_s);
+  for (int k = 0; k < count; ++k) {
+    double total = noise::white_rate_avar(model.output_quantization_density, points[k].tau_s);
+    for (size_t i = 0; i < terms; ++i) {
+      term_values(i, k) = term_avar(model.terms[i], points[k].tau_s);
+      total += term_values(i, k);
+    }
+    (*model_avar_values)(k) = total;
+  }
   if (jacobian == nullptr) return;
   *jacobian = Eigen::MatrixXd::Zero(count, parameter_count(structure));
   for (size_t i = 0; i < structure.slots.size(); ++i) {
     const int offset = parameter_offset(structure, static_cast<int>(i));
     const int parameters = slot_parameter_count(structure.slots[i]);
-    for (int k = 0; k < count; ++k) (*jacobian)(k, offset) = 2.0 * term_avar(model.terms[i], points[k].tau_s);
+    for (int k = 0; k < count; ++k) (*jacobian)(k, offset) = 2.0 * term_values(i, k);
     for (int p = 1; p < parameters; ++p) {
-      std::vector<double> up = log_parameters, down = log_parameters;
-      up[offset + p] += kShapeStep;
-      down[offset + p] -= kShapeStep;
-      const Term term_up = model_from_log_parameters(structure, up).terms[i];
-      const Term term_down = model_from_log_parameters(structure, down).terms[i];
+      std::array<double, 3> up{}, down{};
+      std::copy(log_parameters.begin() + offset, log_parameters.begin() + offset + parameters, up.begin());
+      down = up;
+      up[p] += kShapeStep;
+      down[p] -= kShapeStep;
+      const Term term_up = term_from_log_parameters(structure.slots[i], up.data());
+      const Term term_down = term_from_log_parameters(structure.slots[i], down.data());
       for (int k = 0; k < count; ++k) {
         (*jacobian)(k, offset + p) =
             (term_avar(term_up, points[k].tau_s) - term_avar(term_down, points[k].tau_s)) / (2.0 * kShapeStep);

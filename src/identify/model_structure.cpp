@@ -34,14 +34,19 @@ NoiseModel model_from_log_parameters(const ModelStructure& structure,
   model.output_quantization_density = structure.output_quantization_density;
   int index = 0;
   for (const TermSlot& slot : structure.slots) {
-    Term term;
-    term.kind = slot.kind;
-    term.amplitude = std::exp(log_parameters[index++]);
-    term.shape = slot.shape_free ? std::exp(log_parameters[index++]) : slot.fixed_shape;
-    if (free_shape_count(slot) == 2) term.width = term.shape * std::exp(log_parameters[index++]);
-    model.terms.push_back(term);
+    model.terms.push_back(term_from_log_parameters(slot, log_parameters.data() + index));
+    index += slot_parameter_count(slot);
   }
   return model;
+}
+
+Term term_from_log_parameters(const TermSlot& slot, const double* log_parameters) {
+  Term term;
+  term.kind = slot.kind;
+  term.amplitude = std::exp(log_parameters[0]);
+  term.shape = slot.shape_free ? std::exp(log_parameters[1]) : slot.fixed_shape;
+  if (free_shape_count(slot) == 2) term.width = term.shape * std::exp(log_parameters[2]);
+  return term;
 }
 
 std::vector<double> log_parameters_from_model(const ModelStructure& structure,

@@ -65,6 +65,33 @@ TEST(IdentifyAvarCovariance, PooledTermFractionsInflateTheVariances) {
   EXPECT_THROW(pooled.set_pooled_term_fractions({1.0, 0.5}), std::invalid_argument);
 }
 
+// Covariances of one record share their lag sums (every axis of a triad meets the same white,
+// flicker and descriptive Markov terms). A sum shared must be the one a covariance alone would
+// make: here the white and flicker kernels were first summed beside a slow Markov term, whose
+// reach covers the whole record; the same terms alone are summed over their own reach, bit for
+// bit as on a record of another factor set (which shares nothing; both sets' tables reach the
+// same lags, so its first four rows are the same sums).
+TEST(IdentifyAvarCovariance, SharedLagSumsAreThoseACovarianceAloneMakes) {
+  const long long samples = 200000;
+  const std::vector<int> factors = {1, 10, 100, 20000};
+  NoiseModel with_slow_markov, without;
+  without.terms = {{TermKind::kWhiteRate, 7e-4, 0.0}, {TermKind::kBiasInstability, 1e-4, 50.0}};
+  with_slow_markov.terms = without.terms;
+  with_slow_markov.terms.push_back({TermKind::kMarkov, 1e-4, 500.0});
+  OavarCovariance first(factors, kTau0S, samples);
+  first.covariance(with_slow_markov);
+  OavarCovariance second(factors, kTau0S, samples);
+  const Eigen::MatrixXd shared = second.covariance(without);
+  std::vector<int> other_factors = factors;
+  other_factors.push_back(30000);
+  const Eigen::MatrixXd alone = oavar_covariance(without, other_factors, kTau0S, samples);
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 4; ++j) EXPECT_EQ(shared(i, j), alone(i, j)) << "m " << factors[i] << " n " << factors[j];
+  }
+  const std::vector<double> variances = OavarCovariance(factors, kTau0S, samples).variance(without);
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(variances[i], alone(i, i)) << "m " << factors[i];
+}
+
 // The sample covariance of the OAVAR estimates over many simulated records against the formula.
 // Each entry's Monte Carlo standard error is about sqrt((1 + rho^2) / records) of the product of
 // the two sigmas; 4.5 of them bound every entry with a family-wise false alarm rate near 1e-4.

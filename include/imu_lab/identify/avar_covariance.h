@@ -36,6 +36,10 @@ double model_structure_function(const NoiseModel& model, double lag_s, double ta
 // kept per pair of unit-amplitude terms and reused by every later model that holds a term of the
 // same kind and nearly the same shape (within 10 %: the covariance is a weight, its shape
 // changes slowly with a term's): refitting amplitudes costs nothing, a new term one pass.
+// The sums, and each unit's C_mn at the lags they visit, are also shared by every covariance of
+// the same record (factors, tau0 and sample count) in the process, keyed by the unit's exact
+// shape and the lags visited: the six axes of a record meet the same white, flicker and
+// descriptive Markov terms. A shared sum is the one summed again would give, bit for bit.
 class OavarCovariance {
  public:
   // Throws std::invalid_argument for a factor below 1 or above (sample_count - 1) / 2.
