@@ -6,10 +6,8 @@
 // and repeatability.png (scripts/plot_repeatability.py), each atomically. See
 // include/imu_lab/repeatability/repeatability.h and doc/repeatability.md.
 #include <CLI/CLI.hpp>
-#include <ros/package.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -20,6 +18,7 @@
 #include "imu_lab/common/tool_options.h"
 #include "imu_lab/identify/noise_report.h"
 #include "imu_lab/repeatability/repeatability.h"
+#include "imu_lab/ros/config_paths.h"
 #include "imu_lab/ros/imu_bag_reader.h"
 #include "imu_lab/ros/strict_imu_reading.h"
 
@@ -153,11 +152,10 @@ int main(int argc, char** argv) {
       // An earlier run's plot is not of these runs: without a new one it goes.
       outputs.remove_at_commit(out_directory + "/repeatability.png");
       if (!no_plot) {
-        const std::string script = ros::package::getPath("imu_lab") + "/scripts/plot_repeatability.py";
-        const std::string command =
-            "/usr/bin/python3 '" + script + "' '" + csv + "' '" + staging + "/repeatability.png'";
-        if (std::system(command.c_str()) != 0) {
-          std::fprintf(stderr, "repeatability: warning: plotting failed (%s); the CSV is the result\n", command.c_str());
+        const std::string problem =
+            imu_lab::ros_io::run_plot_script("plot_repeatability.py", {csv, staging + "/repeatability.png"});
+        if (!problem.empty()) {
+          std::fprintf(stderr, "repeatability: warning: plotting failed (%s); the CSV is the result\n", problem.c_str());
         } else {
           written.push_back("repeatability.png");
         }
