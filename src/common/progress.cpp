@@ -39,8 +39,7 @@ std::string progress_line(const std::string& tool, std::size_t done, std::size_t
 void ProgressBar::update(std::size_t done, std::size_t total) {
   if (total == 0) return;  // an empty pass draws nothing
   const auto now = Clock::now();
-  if (done < previous_done_ || pass_finished_) {  // a new pass
-    if (line_open_) std::fprintf(stderr, "\n");
+  if (done < previous_done_ || pass_finished_) {  // a new pass; an unfinished line is overwritten
     start_ = now;
     line_open_ = false;
     pass_finished_ = false;
@@ -49,12 +48,17 @@ void ProgressBar::update(std::size_t done, std::size_t total) {
   if (done < total && line_open_ && now - last_draw_ < std::chrono::milliseconds(200)) return;
   last_draw_ = now;
   const double elapsed_s = std::chrono::duration<double>(now - start_).count();
-  std::fprintf(stderr, "\r%s ", progress_line(tool_, done, total, unit_, elapsed_s).c_str());
+  const std::string line = progress_line(tool_, done, total, unit_, elapsed_s);
+  // Spaces over what a longer previous line left.
+  const std::size_t padding = drawn_length_ > line.size() ? drawn_length_ - line.size() : 0;
+  std::fprintf(stderr, "\r%s%s", line.c_str(), std::string(padding, ' ').c_str());
+  drawn_length_ = line.size();
   line_open_ = true;
   if (done >= total) {
     std::fprintf(stderr, "\n");
     line_open_ = false;
     pass_finished_ = true;
+    drawn_length_ = 0;
   }
 }
 

@@ -21,8 +21,9 @@ std::string progress_line(const std::string& tool, std::size_t done, std::size_t
 class ProgressBar {
  public:
   ProgressBar(std::string tool, std::string unit) : tool_(std::move(tool)), unit_(std::move(unit)) {}
-  // A `done` below the previous one starts a new pass (a tool reading a second topic): the
-  // finished line stays and the clock starts again.
+  // A `done` below the previous one, or any after a finished pass, starts a new pass (a tool
+  // reading a second topic): a finished line stays, an unfinished one (a read that stopped at
+  // what it sought) is overwritten, and the clock starts again.
   void update(std::size_t done, std::size_t total);
 
  private:
@@ -33,6 +34,7 @@ class ProgressBar {
   std::size_t previous_done_ = 0;
   bool line_open_ = false;
   bool pass_finished_ = false;
+  std::size_t drawn_length_ = 0;  // of the line on screen, while it is open
 };
 
 using ProgressCallback = std::function<void(std::size_t done, std::size_t total)>;
