@@ -44,7 +44,9 @@ std::string format_angle_deg(double angle_rad) {
 std::string format_sigma(double sigma_rad) {
   if (std::isnan(sigma_rad)) return "not estimated";
   const double sigma_deg = sigma_rad * kRadToDeg;
-  return printed("+-%.2g deg (%.2g arcsec)", sigma_deg, sigma_deg * kDegToArcsec);
+  const double sigma_arcsec = sigma_deg * kDegToArcsec;
+  // Two significant digits, without an exponent for hundreds of arcseconds and more.
+  return printed(sigma_arcsec < 99.5 ? "+-%.2g deg (%.2g arcsec)" : "+-%.2g deg (%.0f arcsec)", sigma_deg, sigma_arcsec);
 }
 
 void AttitudePanelModel::set_attitude(const AttitudeSample& attitude, double received_s) {
@@ -103,7 +105,8 @@ AttitudeView AttitudePanelModel::view(double now_s) const {
                    [](const HealthLine& a, const HealthLine& b) { return a.level > b.level; });
   view.health_summary = health_.empty() ? "input health: no /diagnostics received yet"
                                         : std::string("input health: ") + level_name(view.worst_health_level) + " (" +
-                                              std::to_string(health_.size()) + " statuses)";
+                                              std::to_string(health_.size()) +
+                                              (health_.size() == 1 ? " status)" : " statuses)");
   return view;
 }
 

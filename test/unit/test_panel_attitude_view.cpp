@@ -49,7 +49,8 @@ TEST(PanelAttitudeView, FormatsDegreesAndArcseconds) {
   EXPECT_EQ(format_angle_deg(-0.5 * kDeg), "-0.500 deg");
   EXPECT_EQ(format_angle_deg(kNaN), "not finite");
   EXPECT_EQ(format_sigma(4.3 * kArcsec), "+-0.0012 deg (4.3 arcsec)");
-  EXPECT_EQ(format_sigma(2.0 * kDeg), "+-2 deg (7.2e+03 arcsec)");
+  EXPECT_EQ(format_sigma(2.0 * kDeg), "+-2 deg (7200 arcsec)");
+  EXPECT_EQ(format_sigma(470.0 * kArcsec), "+-0.13 deg (470 arcsec)");
   EXPECT_EQ(format_sigma(kNaN), "not estimated");
 }
 
@@ -91,6 +92,7 @@ TEST(PanelAttitudeView, ASilentSolutionIsStale) {
 TEST(PanelAttitudeView, HealthWorstFirstAndStale) {
   AttitudePanelModel model(3.0);
   model.set_health({"strapdown_navigator: strapdown navigation", 0, "navigating"}, 100.0);
+  EXPECT_EQ(model.view(100.5).health_summary, "input health: OK (1 status)");
   model.set_health({"allan_monitor: allan", 1, "2 gaps (0.3 s)"}, 100.0);
   AttitudeView view = model.view(101.0);
   EXPECT_EQ(view.health_summary, "input health: WARN (2 statuses)");

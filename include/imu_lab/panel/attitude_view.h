@@ -66,7 +66,8 @@ std::array<double, 3> roll_pitch_yaw_sigma_rad(const std::array<double, 3>& erro
 
 // "12.345 deg" (three decimals: a milli-degree is 3.6 arcsec).
 std::string format_angle_deg(double angle_rad);
-// "+-0.0012 deg (4.3 arcsec)": two significant digits in both; "not estimated" for NaN.
+// "+-0.0012 deg (4.3 arcsec)": two significant digits, whole arcseconds from 100 ("+-0.13 deg
+// (470 arcsec)"); "not estimated" for NaN.
 std::string format_sigma(double sigma_rad);
 
 class AttitudePanelModel {
