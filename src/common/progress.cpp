@@ -26,8 +26,9 @@ std::string format_eta(double remaining_s) {
 std::string progress_line(const std::string& tool, std::size_t done, std::size_t total, const std::string& unit,
                           double elapsed_s) {
   const double fraction = total > 0 ? std::min(1.0, static_cast<double>(done) / total) : 1.0;
-  // Nothing done yet says nothing about the rate.
-  const double remaining_s = fraction > 0.0 ? elapsed_s * (1.0 - fraction) / fraction : NAN;
+  // Nothing done yet, or less than a second of it (the first message after the bag's opening),
+  // says nothing about the rate.
+  const double remaining_s = fraction > 0.0 && elapsed_s >= 1.0 ? elapsed_s * (1.0 - fraction) / fraction : NAN;
   constexpr int kWidth = 30;
   const int filled = static_cast<int>(fraction * kWidth);
   char numbers[96];

@@ -191,6 +191,7 @@ std::size_t OpenBag::stream(const std::string& topic, const std::string& datatyp
   std::string last_path;
   std::int64_t window_begin_ns = 0, window_end_ns = 0;
   const bool whole = window_.is_whole();
+  const std::size_t total = on_progress_ ? count_in_files(topic) : 0;
   for (const auto& file : files_) {
     std::size_t read_in_file = 0;
     try {
@@ -219,6 +220,7 @@ std::size_t OpenBag::stream(const std::string& topic, const std::string& datatyp
         }
         ++read;
         ++read_in_file;
+        if (on_progress_) on_progress_(read, total);
         last_stamp_ns = stamp_ns;
         if (!whole && (stamp_ns < window_begin_ns || stamp_ns > window_end_ns)) continue;
         on_message(*message);

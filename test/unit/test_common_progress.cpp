@@ -34,6 +34,9 @@ TEST(CommonProgress, LineHasTheFractionCountsAndEta) {
   // Nothing done: no rate, no ETA; more than the total (a short count) reads as done.
   EXPECT_EQ(progress_line("fit_thermal", 0, 10, "messages", 5.0),
             "fit_thermal: [                              ]   0.0 % 0/10 messages, ETA ?");
+  // The first message, read right after opening the bag, is no rate.
+  EXPECT_EQ(progress_line("navigate", 1, 120000, "messages", 0.002),
+            "navigate: [                              ]   0.0 % 1/120000 messages, ETA ?");
   EXPECT_EQ(progress_line("allan", 12, 10, "messages", 5.0),
             "allan: [##############################] 100.0 % 12/10 messages, ETA 0 s");
 }

@@ -1,7 +1,7 @@
 // Progress of a long pass on a terminal, shared by every tool that can run for more than about a
 // minute: one line on stderr, redrawn at most five times a second,
 //   "navigate: [###############               ]  50.0 % 5000/10000 messages, ETA 1 min 05 s"
-// The ETA assumes the rest goes at the average rate so far.
+// The ETA assumes the rest goes at the average rate so far ("?" for the first second).
 #pragma once
 
 #include <chrono>
