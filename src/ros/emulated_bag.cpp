@@ -48,6 +48,7 @@ std::uint64_t write_emulated_bag(emulator::ImuEmulator& emulator, const Emulated
     }
     if (options.write_truth) bag.write(options.topics.truth, stamp, messages.truth);
     if (options.write_increments) bag.write(options.topics.increment, stamp, messages.increment);
+    if (options.on_progress) options.on_progress(i + 1, sample_count);
   }
   bag.commit();
   return sample_count;

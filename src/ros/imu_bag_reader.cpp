@@ -130,7 +130,8 @@ struct OpenBag::File {
   bool empty = true;
 };
 
-OpenBag::OpenBag(const BagRecording& recording) : path_(recording.name()), window_(recording.window) {
+OpenBag::OpenBag(const BagRecording& recording)
+    : path_(recording.name()), window_(recording.window), on_progress_(recording.on_progress) {
   if (recording.paths.empty()) throw InputError("no bag given");
   const std::string window_problem = time_window_problem(window_);
   if (!window_problem.empty()) throw ConfigError("recording " + path_, "time window", window_problem);
@@ -190,6 +191,7 @@ std::size_t OpenBag::stream(const std::string& topic, const std::string& datatyp
   std::string last_path;
   std::int64_t window_begin_ns = 0, window_end_ns = 0;
   const bool whole = window_.is_whole();
+  const std::size_t total = on_progress_ ? count_in_files(topic) : 0;
   for (const auto& file : files_) {
     std::size_t read_in_file = 0;
     try {
@@ -218,6 +220,7 @@ std::size_t OpenBag::stream(const std::string& topic, const std::string& datatyp
         }
         ++read;
         ++read_in_file;
+        if (on_progress_) on_progress_(read, total);
         last_stamp_ns = stamp_ns;
         if (!whole && (stamp_ns < window_begin_ns || stamp_ns > window_end_ns)) continue;
         on_message(*message);
@@ -327,14 +330,28 @@ std::size_t OpenBag::for_each_temperature(const std::string& topic,
   });
 }
 
+std::size_t OpenBag::count_in_files(const std::string& topic) const {
+  std::size_t count = 0;
+  for (const auto& file : files_) {
+    try {
+      count += topic.empty() ? rosbag::View(file->bag).size() : rosbag::View(file->bag, rosbag::TopicQuery(topic)).size();
+    } catch (const rosbag::BagException&) {
+      // Only for the progress line: the pass itself reports the damage.
+    }
+  }
+  return count;
+}
+
 std::size_t OpenBag::for_each_message_in_order(const std::function<void(const rosbag::MessageInstance&)>& on_message) {
   std::size_t count = 0;
+  const std::size_t total = on_progress_ ? count_in_files("") : 0;
   for (const auto& file : files_) {
     try {
       rosbag::View view(file->bag);
       for (const rosbag::MessageInstance& instance : view) {
         on_message(instance);
         ++count;
+        if (on_progress_) on_progress_(count, total);
       }
     } catch (const rosbag::BagException& error) {
       throw InputError("bag " + file->path + " is damaged after " + std::to_string(count) + " messages: " + error.what());

@@ -2,6 +2,8 @@
 
 #include <limits>
 
+#include "imu_lab/ros/navigation_settings.h"
+
 namespace imu_lab {
 namespace ros_io {
 namespace {
@@ -65,6 +67,25 @@ panel::NoiseReport to_noise_report(const imu_lab::NoiseParameters& message) {
     for (const imu_lab::NoiseAxis& axis : triad.axes) report.axes.push_back(to_noise_axis_model(axis));
   }
   return report;
+}
+
+panel::AttitudeSample to_attitude_sample(const nav_msgs::Odometry& message) {
+  const auto& q = message.pose.pose.orientation;
+  const Eigen::Vector3d roll_pitch_yaw = roll_pitch_yaw_from_quaternion(Eigen::Quaterniond(q.w, q.x, q.y, q.z));
+  return {roll_pitch_yaw.x(), roll_pitch_yaw.y(), roll_pitch_yaw.z()};
+}
+
+panel::AlignmentSummary to_alignment_summary(const imu_lab::Alignment& message) {
+  panel::AlignmentSummary alignment;
+  alignment.method = message.method;
+  alignment.duration_s = message.duration_s;
+  const auto& sigma = message.predicted_error_sigma_rad;
+  alignment.error_sigma_enu_rad = {sigma.x, sigma.y, sigma.z};
+  return alignment;
+}
+
+panel::HealthStatus to_health_status(const diagnostic_msgs::DiagnosticStatus& message) {
+  return {message.name, static_cast<int>(message.level), message.message};
 }
 
 }  // namespace ros_io

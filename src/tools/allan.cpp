@@ -3,15 +3,14 @@
 // and a plot, in one streaming pass (see include/imu_lab/ros/allan_bag_pass.h, allan_report.h and
 // allan_noise_report.h). Nothing is written unless the whole pass succeeds.
 #include <CLI/CLI.hpp>
-#include <unistd.h>
 
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <tuple>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/progress.h"
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
 #include "imu_lab/ros/allan_bag_pass.h"
@@ -20,29 +19,6 @@
 #include "imu_lab/ros/recording_arguments.h"
 
 namespace {
-
-// A one-line progress bar with an ETA on stderr, redrawn at most a few times a second.
-class ProgressBar {
- public:
-  void update(std::size_t processed, std::size_t total) {
-    const auto now = std::chrono::steady_clock::now();
-    if (processed < total && now - last_draw_ < std::chrono::milliseconds(200)) return;
-    last_draw_ = now;
-    const double fraction = total > 0 ? static_cast<double>(processed) / total : 1.0;
-    const double elapsed_s = std::chrono::duration<double>(now - start_).count();
-    const double remaining_s = fraction > 0.0 ? elapsed_s * (1.0 - fraction) / fraction : 0.0;
-    constexpr int kWidth = 30;
-    const int filled = static_cast<int>(fraction * kWidth);
-    std::fprintf(stderr, "\rallan: [%s%s] %5.1f %% %zu/%zu messages, ETA %4.0f s ",
-                 std::string(filled, '#').c_str(), std::string(kWidth - filled, ' ').c_str(), 100.0 * fraction,
-                 processed, total, remaining_s);
-    if (processed >= total) std::fprintf(stderr, "\n");
-  }
-
- private:
-  const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-  std::chrono::steady_clock::time_point last_draw_{};
-};
 
 void print_summary(const imu_lab::ros_io::AllanBagPassResult& result, const imu_lab::ros_io::AllanReportFiles& files) {
   const auto& timing = result.snapshot.timing;
@@ -147,10 +123,7 @@ int main(int argc, char** argv) {
     if (!(options.screen.threshold_sigma > imu_lab::allan::kScaleClipSigma)) {
       throw imu_lab::ConfigError("allan", "--impulse-threshold", "must be a number of scales above 3 (default 12)");
     }
-    ProgressBar bar;
-    if (progress || ::isatty(STDERR_FILENO)) {
-      options.on_progress = [&](std::size_t processed, std::size_t total) { bar.update(processed, total); };
-    }
+    options.on_progress = imu_lab::terminal_progress("allan", "messages", progress);
     const auto result = imu_lab::ros_io::run_allan_bag_pass(recording.recording(), options);
     imu_lab::ros_io::AllanRunDescription run;
     run.bag = result.bag_path;

@@ -8,6 +8,7 @@
 
 #include "imu_lab/calib/calibration_file.h"
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/progress.h"
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
 #include "imu_lab/ros/bag_correction.h"
@@ -72,6 +73,7 @@ int main(int argc, char** argv) {
       ->check(imu_lab::option_range::positive());
   if (const auto status = imu_lab::parse_tool_options("correct", app, argc, argv)) return *status;
 
+  c.recording.on_progress = imu_lab::terminal_progress("correct", "messages");
   imu_lab::ToolInput input = c.recording.tool_input(o.imu_topic);
   return imu_lab::run_tool_main("correct", input, [&] {
     if (c.thermal_model_path.empty() && c.calibration_path.empty()) {

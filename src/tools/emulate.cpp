@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/progress.h"
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
 #include "imu_lab/emulator/imu_emulator.h"
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
   if (const auto status = imu_lab::parse_tool_options("emulate", app, argc, argv)) return *status;
   options.write_truth = !no_truth;
   options.write_increments = !no_increments;
+  options.on_progress = imu_lab::terminal_progress("emulate", "samples");
 
   return imu_lab::run_tool_main("emulate", [&] {
     const auto profile =

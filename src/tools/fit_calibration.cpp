@@ -12,6 +12,7 @@
 #include "imu_lab/calib/kalibr_intrinsics.h"
 #include "imu_lab/common/atomic_file.h"
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/progress.h"
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
 #include "imu_lab/ros/config_paths.h"
@@ -80,6 +81,7 @@ int main(int argc, char** argv) {
       ->check(positive());
   if (const auto status = imu_lab::parse_tool_options("fit_calibration", app, argc, argv)) return *status;
 
+  recording.on_progress = imu_lab::terminal_progress("fit_calibration", "messages");
   imu_lab::ToolInput input = recording.tool_input(topic);
   return imu_lab::run_tool_main("fit_calibration", input, [&] {
     if (!schedule_name.empty()) {

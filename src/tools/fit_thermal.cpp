@@ -9,6 +9,7 @@
 
 #include "imu_lab/common/atomic_file.h"
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/progress.h"
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
 #include "imu_lab/emulator/earth_model.h"
@@ -115,6 +116,7 @@ int main(int argc, char** argv) {
                                                                      c.fit.earth.latitude_rad, c.height_m);
   if (c.csv_path.empty()) c.csv_path = default_csv_path(c.out_path);
 
+  c.recording.on_progress = imu_lab::terminal_progress("fit_thermal", "messages");
   imu_lab::ToolInput input = c.recording.tool_input(c.topics.imu);
   return imu_lab::run_tool_main("fit_thermal", input, [&] {
     // The scale-factor terms compare each orientation's output with its known input, gravity and

@@ -18,6 +18,7 @@
 #include "imu_lab/common/atomic_file.h"
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/format_number.h"
+#include "imu_lab/common/progress.h"
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
 #include "imu_lab/ros/bag_navigation.h"
@@ -242,6 +243,7 @@ int main(int argc, char** argv) {
   CommandLine c;
   add_options(app, c);
   if (const auto status = imu_lab::parse_tool_options("navigate", app, argc, argv)) return *status;
+  c.recording.on_progress = imu_lab::terminal_progress("navigate", "messages");
   imu_lab::ToolInput input = c.recording.tool_input(c.bag.topic);
   return imu_lab::run_tool_main("navigate", input, [&] {
     fill_settings(c);

@@ -10,7 +10,6 @@ Parameter: ~screenshot (path to keep the PNG; "": none kept)."""
 
 import os
 import shutil
-import subprocess
 import sys
 import tempfile
 import unittest
@@ -21,31 +20,13 @@ import rostest
 
 PACKAGE = rospkg.RosPack().get_path("imu_lab")
 sys.path.insert(0, os.path.join(PACKAGE, "scripts"))
-from rviz_session import RvizSession, plot_region  # noqa: E402
+from rviz_session import capture, count_near, crop_pixels, plot_region  # noqa: E402
 
 # Colours of src/rviz/allan_plot_widget.cpp.
 MEASURED_RGB = (20, 20, 20)
 TOTAL_RGB = (200, 0, 0)
 # The waits are for events (a log line, a message, a service); this limit only ends a test that hangs.
 EVENT_LIMIT_S = 150.0
-
-
-def read_ppm(path):
-    """Width, height and the RGB bytes of a binary PPM (P6, maxval 255, no comments: ImageMagick's)."""
-    with open(path, "rb") as handle:
-        data = handle.read()
-    magic, width, height, maxval, pixels = data.split(maxsplit=4)
-    assert magic == b"P6" and maxval == b"255", (magic, maxval)
-    return int(width), int(height), pixels[:3 * int(width) * int(height)]
-
-
-def count_near(pixels, rgb, tolerance):
-    count = 0
-    for i in range(0, len(pixels), 3):
-        if (abs(pixels[i] - rgb[0]) <= tolerance and abs(pixels[i + 1] - rgb[1]) <= tolerance
-                and abs(pixels[i + 2] - rgb[2]) <= tolerance):
-            count += 1
-    return count
 
 
 class RvizAllanPanel(unittest.TestCase):
@@ -56,18 +37,16 @@ class RvizAllanPanel(unittest.TestCase):
         shutil.rmtree(self.work, ignore_errors=True)
 
     def test_panel_draws_the_live_curves_and_the_model(self):
-        with RvizSession(os.path.join(PACKAGE, "config", "rviz", "characterise.rviz")) as rviz:
-            # allan_monitor identifies every identify_period_s on its own (its latched message may
-            # be there before rviz is): the panel draws the live curve, and the model once a record
-            # is long enough for the fit.
-            fitted = rviz.wait_for_painted(want_model=True, limit_s=EVENT_LIMIT_S)
-            self.assertIn("gyro x oadev", fitted.group("what"))
-            self.assertGreater(int(fitted.group("points")), 3)
-            self.assertGreaterEqual(int(fitted.group("series")), 2, "the total and at least one term")
-
-            png = os.path.join(self.work, "screen.png")
-            rviz.screenshot(png)
-            self.assertEqual(rviz.plugin_errors(), [], "rviz logged plugin errors")
+        # allan_monitor identifies every identify_period_s on its own (its latched message may be
+        # there before rviz is): the panel draws the live curve, and the model once a record is long
+        # enough for the fit.
+        png = os.path.join(self.work, "screen.png")
+        fitted, plugin_errors = capture(os.path.join(PACKAGE, "config", "rviz", "characterise.rviz"),
+                                        lambda rviz: rviz.wait_for_painted(want_model=True, limit_s=EVENT_LIMIT_S), png)
+        self.assertIn("gyro x oadev", fitted.group("what"))
+        self.assertGreater(int(fitted.group("points")), 3)
+        self.assertGreaterEqual(int(fitted.group("series")), 2, "the total and at least one term")
+        self.assertEqual(plugin_errors, [], "rviz logged plugin errors")
         keep = rospy.get_param("~screenshot", "")
         if keep:
             shutil.copyfile(png, keep)
@@ -76,9 +55,7 @@ class RvizAllanPanel(unittest.TestCase):
         x, y, width, height = plot_region(fitted)
         self.assertGreater(width, 200)
         self.assertGreater(height, 150)
-        region = os.path.join(self.work, "plot.ppm")
-        subprocess.run(["convert", png, "-crop", "%dx%d+%d+%d" % (width, height, x, y), "+repage", region], check=True)
-        crop_width, crop_height, pixels = read_ppm(region)
+        crop_width, crop_height, pixels = crop_pixels(png, (x, y, width, height), os.path.join(self.work, "plot.ppm"))
         self.assertEqual((crop_width, crop_height), (width, height), "the plot lies inside the screen")
         measured = count_near(pixels, MEASURED_RGB, 30)
         total = count_near(pixels, TOTAL_RGB, 40)

@@ -91,4 +91,23 @@ TEST(BatchScripts, AFailedJobIsNamedAndFailsTheBatchAndTheMerge) {
   EXPECT_NE(merge.output.find(directory + "/out/missing"), std::string::npos) << merge.output;
 }
 
+// The batch's progress line at unit level: its ETA is the jobs left at the throughput so far, in
+// the C++ tools' format (common/progress.h).
+TEST(BatchScripts, ProgressLineGivesTheEtaFromTheThroughput) {
+  const std::string program =
+      "import importlib.machinery, sys; "
+      "batch = importlib.machinery.SourceFileLoader('batch', sys.argv[1]).load_module(); "
+      "print(batch.progress_line(3, 12, 2, 1, 45.0)); "     // 3 jobs in 45 s: 9 left take 135 s
+      "print(batch.progress_line(0, 12, 2, 0, 10.0)); "     // no job done: no rate yet
+      "print(batch.progress_line(1, 50, 4, 0, 300.0)); "    // 49 x 300 s = 4.08 h
+      "print(batch.format_eta(42.4), batch.format_eta(725))";
+  const auto run = run_command("/usr/bin/python3 -c \"" + program + "\" " + kScripts + "batch");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_EQ(run.output,
+            "batch: 3/12 done, 2 running, 1 failed, 45 s, ETA 2 min 15 s\n"
+            "batch: 0/12 done, 2 running, 0 failed, 10 s, ETA ?\n"
+            "batch: 1/50 done, 4 running, 0 failed, 300 s, ETA 4.1 h\n"
+            "42 s 12 min 05 s\n");
+}
+
 }  // namespace

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "../unit/identify_test_records.h"
+#include "imu_lab/emulator/static_motion.h"
 #include "imu_lab/identify/fit.h"
 #include "imu_lab/identify/partial_curves.h"
 #include "imu_lab/identify/record_length.h"
@@ -124,6 +125,44 @@ TEST(PanelMessages, ShortParallelArraysReadAsMissingPoints) {
   const panel::AllanPlot plot = model.plot("accel", "oadev", 0);
   EXPECT_EQ(plot.measured.points.size(), 2u);
   EXPECT_EQ(plot.band.size(), 1u);
+}
+
+// The attitude panel: the odometry's quaternion back to the angles that made it, the alignment's
+// ENU sigmas and the diagnostic status as they were published.
+TEST(PanelMessages, AttitudeAlignmentAndHealthReachTheAttitudePanel) {
+  constexpr double kDeg = M_PI / 180.0;
+  const Eigen::Quaterniond q = emulator::attitude_from_roll_pitch_yaw(2.0 * kDeg, -3.0 * kDeg, 120.0 * kDeg);
+  nav_msgs::Odometry odometry;
+  odometry.pose.pose.orientation.w = q.w();
+  odometry.pose.pose.orientation.x = q.x();
+  odometry.pose.pose.orientation.y = q.y();
+  odometry.pose.pose.orientation.z = q.z();
+  const panel::AttitudeSample attitude = ros_io::to_attitude_sample(odometry);
+  EXPECT_NEAR(attitude.roll_rad, 2.0 * kDeg, 1e-12);
+  EXPECT_NEAR(attitude.pitch_rad, -3.0 * kDeg, 1e-12);
+  EXPECT_NEAR(attitude.yaw_rad, 120.0 * kDeg, 1e-12);
+
+  imu_lab::Alignment alignment;
+  alignment.method = "given_heading";
+  alignment.duration_s = 60.0;
+  alignment.predicted_error_sigma_rad.x = 1e-4;
+  alignment.predicted_error_sigma_rad.y = 2e-4;
+  alignment.predicted_error_sigma_rad.z = std::nan("");
+  const panel::AlignmentSummary summary = ros_io::to_alignment_summary(alignment);
+  EXPECT_EQ(summary.method, "given_heading");
+  EXPECT_EQ(summary.duration_s, 60.0);
+  EXPECT_EQ(summary.error_sigma_enu_rad[0], 1e-4);
+  EXPECT_EQ(summary.error_sigma_enu_rad[1], 2e-4);
+  EXPECT_TRUE(std::isnan(summary.error_sigma_enu_rad[2]));
+
+  diagnostic_msgs::DiagnosticStatus status;
+  status.name = "strapdown_navigator: strapdown navigation";
+  status.level = diagnostic_msgs::DiagnosticStatus::WARN;
+  status.message = "2 gaps";
+  const panel::HealthStatus health = ros_io::to_health_status(status);
+  EXPECT_EQ(health.name, status.name);
+  EXPECT_EQ(health.level, 1);
+  EXPECT_EQ(health.message, "2 gaps");
 }
 
 }  // namespace

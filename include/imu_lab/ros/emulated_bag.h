@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "imu_lab/common/progress.h"
 #include "imu_lab/emulator/imu_emulator.h"
 #include "imu_lab/ros/emulator_messages.h"
 
@@ -18,6 +19,7 @@ struct EmulatedBagOptions {
   bool write_temperature = true;
   bool write_truth = true;
   bool write_increments = true;
+  ProgressCallback on_progress;  // (samples written, samples in the run); empty: nothing told
 };
 
 // Returns the number of samples written. Throws (ConfigError / std::runtime_error) with a clear

@@ -25,6 +25,8 @@
 #include <utility>
 #include <vector>
 
+#include "imu_lab/common/progress.h"
+
 namespace rosbag {
 class Bag;
 class MessageInstance;
@@ -98,9 +100,17 @@ struct BagRecording {
       : paths(std::move(file_paths)), window(time_window) {}
   std::vector<std::string> paths;
   TimeWindow window;
+  // Told (messages read, messages in the pass) as each for_each_* call reads, for a tool's
+  // terminal progress (common/progress.h); empty: nothing told.
+  ProgressCallback on_progress;
   // How messages name the recording: the path, or "a.bag (+ 2 split files)".
   std::string name() const;
-  BagRecording whole() const { return BagRecording(paths); }  // the same files without the window
+  // The same files without the window.
+  BagRecording whole() const {
+    BagRecording files(paths);
+    files.on_progress = on_progress;
+    return files;
+  }
 };
 
 // Where one file of a recording hands over to the next, on the topic last streamed.
@@ -149,8 +159,12 @@ class OpenBag {
   std::size_t stream(const std::string& topic, const std::string& datatype,
                      const std::function<void(const Message&)>& on_message);
 
+  // Messages of topic (every topic when empty) over the files, whatever the window.
+  std::size_t count_in_files(const std::string& topic) const;
+
   std::string path_;
   TimeWindow window_;
+  ProgressCallback on_progress_;
   std::vector<std::unique_ptr<File>> files_;  // in stamp order
   std::vector<FileJoin> joins_;
 };

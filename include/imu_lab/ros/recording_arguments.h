@@ -18,7 +18,13 @@ namespace ros_io {
 struct RecordingArguments {
   std::vector<std::string> bags;
   TimeWindow window;
-  BagRecording recording() const { return BagRecording(bags, window); }
+  // The tool's terminal progress (terminal_progress in common/progress.h), given to the readers.
+  ProgressCallback on_progress;
+  BagRecording recording() const {
+    BagRecording files(bags, window);
+    files.on_progress = on_progress;
+    return files;
+  }
   // What run_tool_main names in a refusal that does not name the input itself.
   ToolInput tool_input(const std::string& topic) const { return ToolInput{"bag", recording().name(), topic}; }
 };
