@@ -40,11 +40,11 @@ const char* allan_value_unit(AllanInput input, std::size_t channel) {
   return channel < 3 ? "rad" : "m_s";
 }
 
-AllanSample to_allan_sample(const ImuRecord& record) {
+AllanSample to_allan_sample(const io::ImuRecord& record) {
   return make_sample(record.stamp_ns, record.angular_rate_rad_s, record.specific_force_m_s2);
 }
 
-AllanSample to_allan_sample(const IncrementRecord& record) {
+AllanSample to_allan_sample(const io::IncrementRecord& record) {
   return make_sample(record.stamp_ns, record.delta_angle_rad, record.delta_velocity_m_s);
 }
 

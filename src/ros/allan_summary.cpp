@@ -137,7 +137,7 @@ void emit_split_files(YAML::Emitter& out, const AllanRunDescription& run) {
   for (const std::string& file : run.files) out << file;
   out << YAML::EndSeq;
   out << YAML::Key << "file_joins" << YAML::Value << YAML::BeginSeq;
-  for (const FileJoin& join : run.joins) {
+  for (const io::FileJoin& join : run.joins) {
     out << YAML::Flow << YAML::BeginMap << YAML::Key << "before" << YAML::Value << join.before_path << YAML::Key
         << "after" << YAML::Value << join.after_path << YAML::Key << "gap_s" << YAML::Value << join.gap_s
         << YAML::EndMap;

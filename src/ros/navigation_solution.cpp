@@ -21,7 +21,7 @@ NavigationSolution make_solution(const NavigationSession& session, const LocalEn
   return solution;
 }
 
-NavigationError navigation_error(const NavigationSolution& solution, const TruthRecord& truth,
+NavigationError navigation_error(const NavigationSolution& solution, const io::TruthRecord& truth,
                                  const LocalEnuFrame& world, std::int64_t alignment_stamp_ns) {
   NavigationError error;
   error.stamp_ns = solution.stamp_ns;

@@ -26,11 +26,11 @@ void print_summary(const imu_lab::ros_io::AllanBagPassResult& result, const imu_
               result.bag_path.c_str(), result.topic.c_str(), static_cast<long long>(timing.input_sample_count),
               timing.tau0_s, 1.0 / timing.tau0_s, timing.interval_rms_deviation_s, timing.interval_max_deviation_s);
   if (!result.window.is_whole()) {
-    std::printf("allan: time window: %s\n", imu_lab::ros_io::describe_time_window(result.window).c_str());
+    std::printf("allan: time window: %s\n", imu_lab::io::describe_time_window(result.window).c_str());
   }
   if (result.files.size() > 1) {
     std::printf("allan: %zu split files read in stamp order as one recording; %s\n", result.files.size(),
-                imu_lab::ros_io::describe_joins(result.joins).c_str());
+                imu_lab::io::describe_joins(result.joins).c_str());
   }
   long long non_finite = 0;
   for (const auto& channel : result.snapshot.channels) non_finite += channel.non_finite_count;

@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
     std::vector<std::int64_t> stamps_ns;
     // A triad no message carries (covariance[0] = -1) is left out; one that some lack is refused.
     imu_lab::ros_io::StrictImuCheck check(imu_lab::ros_io::ImuTriadsNeeded{false, false});
-    imu_lab::ros_io::for_each_imu_strictly(bag, topic, [&](const imu_lab::ros_io::ImuRecord& record) {
+    imu_lab::ros_io::for_each_imu_strictly(bag, topic, [&](const imu_lab::io::ImuRecord& record) {
       stamps_ns.push_back(record.stamp_ns);
       for (int axis = 0; axis < 3; ++axis) {
         channels[axis].push_back(record.angular_rate_rad_s[axis]);

@@ -101,11 +101,11 @@ int main(int argc, char** argv) {
     const imu_lab::ros_io::BagRecording bag = recording.recording();
     input.topic = topic = imu_lab::ros_io::choose_imu_topic(bag, topic);
     std::vector<imu_lab::calib::CalibrationSample> samples;
-    imu_lab::ros_io::for_each_imu_strictly(bag, topic, [&](const imu_lab::ros_io::ImuRecord& record) {
+    imu_lab::ros_io::for_each_imu_strictly(bag, topic, [&](const imu_lab::io::ImuRecord& record) {
       samples.push_back({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2});
     });
     if (samples.size() < 2) throw imu_lab::InputError("bag " + bag.name() + ": topic " + topic + " has too few messages (" +
-                                                       imu_lab::ros_io::describe_time_window(bag.window) + ")");
+                                                       imu_lab::io::describe_time_window(bag.window) + ")");
     // Held out at the end, like the thesis's verification run after the calibration run.
     const std::size_t rests = imu_lab::calib::detect_static_intervals(samples, options.static_detection).intervals.size();
     for (std::size_t k = rests > held_out_last ? rests - held_out_last : 0; k < rests; ++k) {
@@ -121,7 +121,7 @@ int main(int argc, char** argv) {
     outputs.write(beside(out_path, "_report.txt"), report);
     outputs.commit();
     for (const std::string& warning : result.warnings) std::cerr << "fit_calibration: warning: " << warning << "\n";
-    std::cout << "fit_calibration: " << bag.name() << ", " << imu_lab::ros_io::describe_time_window(bag.window)
+    std::cout << "fit_calibration: " << bag.name() << ", " << imu_lab::io::describe_time_window(bag.window)
               << "\n" << report << "\nwrote " << out_path << ", " << beside(out_path, "_kalibr_imu_chain.yaml") << ", "
               << beside(out_path, "_report.txt") << "\n";
     return 0;

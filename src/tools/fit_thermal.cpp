@@ -130,7 +130,7 @@ int main(int argc, char** argv) {
     const auto data = imu_lab::ros_io::read_thermal_windows(c.recording.recording(), c.topics, c.windows);
     input.topic = data.imu_topic;
     std::printf("fit_thermal: %s, %s\n", c.recording.recording().name().c_str(),
-                imu_lab::ros_io::describe_time_window(c.recording.window).c_str());
+                imu_lab::io::describe_time_window(c.recording.window).c_str());
     std::printf("fit_thermal: %zu IMU samples on %s, %zu temperature readings, %zu windows of %.6g s\n",
                 data.imu_messages, data.imu_topic.c_str(), data.temperature_messages, data.windows.size(),
                 c.windows.window_s);

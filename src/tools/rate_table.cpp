@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
     const imu_lab::ros_io::BagRecording bag = recording.recording();
     input.topic = topic = imu_lab::ros_io::choose_imu_topic(bag, topic);
     std::vector<imu_lab::ImuSample> samples;
-    imu_lab::ros_io::for_each_imu_strictly(bag, topic, [&](const imu_lab::ros_io::ImuRecord& record) {
+    imu_lab::ros_io::for_each_imu_strictly(bag, topic, [&](const imu_lab::io::ImuRecord& record) {
       samples.push_back({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2});
     });
     const auto result = imu_lab::rate_table::run_scale_factor_test(samples, setup, options);
@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
     outputs.write(out_directory + "/rate_table.yaml", yaml);
     outputs.write(out_directory + "/rate_table_plateaus.csv", csv);
     outputs.commit();
-    std::cout << "rate_table: " << bag.name() << ", " << imu_lab::ros_io::describe_time_window(bag.window) << "\n"
+    std::cout << "rate_table: " << bag.name() << ", " << imu_lab::io::describe_time_window(bag.window) << "\n"
               << imu_lab::rate_table::scale_factor_summary(result) << "wrote " << out_directory << "/rate_table.yaml, "
               << out_directory << "/rate_table_plateaus.csv\n";
     return 0;

@@ -45,12 +45,12 @@ std::string read_noise_report(const std::string& path) {
   return text.str();
 }
 
-rep::RunSummary read_run(const std::string& run, const imu_lab::ros_io::TimeWindow& window, const std::string& topic) {
+rep::RunSummary read_run(const std::string& run, const imu_lab::io::TimeWindow& window, const std::string& topic) {
   const imu_lab::ros_io::BagRecording recording(split_files(run), window);
   const std::string chosen = imu_lab::ros_io::choose_imu_topic(recording, topic);
   std::vector<std::array<double, rep::kChannelCount>> samples;
   std::int64_t first_ns = 0, last_ns = 0;
-  imu_lab::ros_io::for_each_imu_strictly(recording, chosen, [&](const imu_lab::ros_io::ImuRecord& record) {
+  imu_lab::ros_io::for_each_imu_strictly(recording, chosen, [&](const imu_lab::io::ImuRecord& record) {
     if (samples.empty()) first_ns = record.stamp_ns;
     last_ns = record.stamp_ns;
     samples.push_back({record.angular_rate_rad_s[0], record.angular_rate_rad_s[1], record.angular_rate_rad_s[2],
@@ -58,7 +58,7 @@ rep::RunSummary read_run(const std::string& run, const imu_lab::ros_io::TimeWind
   });
   if (samples.size() < 16) {
     throw imu_lab::InputError("run " + recording.name() + ": " + std::to_string(samples.size()) + " samples (" +
-                              imu_lab::ros_io::describe_time_window(window) + "); at least 16 are needed");
+                              imu_lab::io::describe_time_window(window) + "); at least 16 are needed");
   }
   // The mean interval: strict reading has refused unordered stamps.
   const double tau0_s = (last_ns - first_ns) * 1e-9 / (samples.size() - 1);
@@ -91,7 +91,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Run-to-run repeatability of one unit from N recordings (and N calibrations)."};
   std::vector<std::string> runs, noise_reports, calibrations;
   std::string out_directory = "repeatability", topic;
-  imu_lab::ros_io::TimeWindow window;
+  imu_lab::io::TimeWindow window;
   double confidence = 0.95;
   bool no_plot = false;
   app.add_option("runs", runs, "one bag per run (split files of one run joined with commas: a_0.bag,a_1.bag)");
@@ -142,7 +142,7 @@ int main(int argc, char** argv) {
       imu_lab::write_file_atomically(staging + "/repeatability.yaml", rep::repeatability_yaml(table));
       written = {"repeatability.csv", "repeatability.yaml"};
       std::printf("repeatability: %zu runs, %s; run-to-run bias sigma (n - 1) with its %.0f %% interval:\n",
-                  runs.size(), imu_lab::ros_io::describe_time_window(window).c_str(), 100.0 * confidence);
+                  runs.size(), imu_lab::io::describe_time_window(window).c_str(), 100.0 * confidence);
       for (std::size_t c = 0; c < rep::kChannelCount; ++c) {
         const auto& s = table.bias_spread[c];
         std::printf("  %-8s mean %13.6g  sigma %11.4g [%11.4g, %11.4g] %s; rms uncertainty of a run's mean %.3g\n",

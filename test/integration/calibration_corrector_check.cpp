@@ -33,9 +33,9 @@ TEST(CalibrationCorrectorNode, PublishesTheCoreCorrectionOfEverySample) {
                               " > " + directory + "/emulate.log 2>&1";
   ASSERT_EQ(std::system(emulate.c_str()), 0) << "failed: " << emulate;
   const auto calibration = imu_lab::calib::load_calibration(private_string("calibration_file"));
-  std::map<std::int64_t, imu_lab::ros_io::ImuRecord> inputs;
+  std::map<std::int64_t, imu_lab::io::ImuRecord> inputs;
   imu_lab::ros_io::for_each_imu(bag, "/imu/raw",
-                                [&](const imu_lab::ros_io::ImuRecord& record) { inputs[record.stamp_ns] = record; });
+                                [&](const imu_lab::io::ImuRecord& record) { inputs[record.stamp_ns] = record; });
   ASSERT_GT(inputs.size(), 1000u);
 
   ros::NodeHandle node;

@@ -125,7 +125,7 @@ struct RunError {
 };
 
 RunError horizontal_error(const std::map<std::int64_t, Eigen::Vector3d>& positions_enu_m,
-                          const std::map<std::int64_t, imu_lab::ros_io::TruthRecord>& truth,
+                          const std::map<std::int64_t, imu_lab::io::TruthRecord>& truth,
                           const imu_lab::ros_io::LocalEnuFrame& world) {
   RunError error;
   for (const auto& [stamp_ns, position] : positions_enu_m) {
@@ -171,11 +171,11 @@ TEST(FullChain, CorrectedNavigationIsTenTimesBetterAndItsNoiseIsTheProfiles) {
   const std::string used_thermal_model = replaced("replace_thermal_model", thermal_model);
   const std::string used_calibration = replaced("replace_calibration", calibration);
 
-  std::vector<imu_lab::ros_io::ImuRecord> raw;
-  imu_lab::ros_io::for_each_imu(navigation_bag, "/imu/raw", [&](const imu_lab::ros_io::ImuRecord& r) { raw.push_back(r); });
-  std::map<std::int64_t, imu_lab::ros_io::TruthRecord> truth;
+  std::vector<imu_lab::io::ImuRecord> raw;
+  imu_lab::ros_io::for_each_imu(navigation_bag, "/imu/raw", [&](const imu_lab::io::ImuRecord& r) { raw.push_back(r); });
+  std::map<std::int64_t, imu_lab::io::TruthRecord> truth;
   imu_lab::ros_io::for_each_truth(navigation_bag, "/imu/truth",
-                                  [&](const imu_lab::ros_io::TruthRecord& t) { truth[t.stamp_ns] = t; });
+                                  [&](const imu_lab::io::TruthRecord& t) { truth[t.stamp_ns] = t; });
   ASSERT_GT(raw.size(), 1000u);
   ASSERT_EQ(truth.size(), raw.size());
 

@@ -31,12 +31,12 @@ void run_or_fail(const std::string& command) { ASSERT_EQ(std::system(command.c_s
 std::map<std::int64_t, imu_lab::thermal::CompensatedSample> reference_of(const std::string& bag, double max_age_s) {
   imu_lab::thermal::ThermalCompensator compensator(
       imu_lab::thermal::load_thermal_model(private_string("model_file")), max_age_s);
-  std::vector<imu_lab::ros_io::TemperatureRecord> temperatures;
+  std::vector<imu_lab::io::TemperatureRecord> temperatures;
   imu_lab::ros_io::for_each_temperature(bag, "/imu/temperature", [&](const auto& r) { temperatures.push_back(r); });
   std::vector<imu_lab::thermal::CompensatedSample> ready;
   std::vector<std::int64_t> stamps_ns;  // exact, in the order the samples come out
   std::size_t next_temperature = 0;
-  imu_lab::ros_io::for_each_imu(bag, "/imu/raw", [&](const imu_lab::ros_io::ImuRecord& r) {
+  imu_lab::ros_io::for_each_imu(bag, "/imu/raw", [&](const imu_lab::io::ImuRecord& r) {
     while (next_temperature < temperatures.size() && temperatures[next_temperature].stamp_s <= r.stamp_s) {
       compensator.add_temperature(temperatures[next_temperature].stamp_s, temperatures[next_temperature].temperature_c, &ready);
       ++next_temperature;

@@ -50,9 +50,9 @@ class AllanTool : public ::testing::Test {
       engine.push(sample.stamp_ns, sample.values.data(), sample.values.size());
     };
     if (input == AllanInput::kRate) {
-      imu_lab::ros_io::for_each_imu(bag_, topic, [&](const auto& record) { push(to_allan_sample(record)); });
+      imu_lab::ros_io::for_each_imu(bag_, topic, [&](const auto& record) { push(imu_lab::ros_io::to_allan_sample(record)); });
     } else {
-      imu_lab::ros_io::for_each_increment(bag_, topic, [&](const auto& record) { push(to_allan_sample(record)); });
+      imu_lab::ros_io::for_each_increment(bag_, topic, [&](const auto& record) { push(imu_lab::ros_io::to_allan_sample(record)); });
     }
     return engine.snapshot();
   }

@@ -144,7 +144,7 @@ TEST(AtomicWritesKilled, EmulateLeavesTheOldBagOrTheWholeNewOne) {
   EXPECT_GE(outcomes.old_files, 1);
   // Whatever is there is a bag that reads to the end.
   std::size_t samples = 0;
-  imu_lab::ros_io::for_each_imu(out, "/imu/raw", [&](const imu_lab::ros_io::ImuRecord&) { ++samples; });
+  imu_lab::ros_io::for_each_imu(out, "/imu/raw", [&](const imu_lab::io::ImuRecord&) { ++samples; });
   EXPECT_TRUE(samples == 60u * 200 || samples == 300u * 200) << samples;
 }
 

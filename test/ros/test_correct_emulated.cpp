@@ -49,7 +49,7 @@ struct Means {
 
 Means imu_means(const std::string& bag) {
   Means m;
-  const std::size_t count = imu_lab::ros_io::for_each_imu(bag, "/imu/raw", [&](const imu_lab::ros_io::ImuRecord& r) {
+  const std::size_t count = imu_lab::ros_io::for_each_imu(bag, "/imu/raw", [&](const imu_lab::io::ImuRecord& r) {
     m.angular_rate_rad_s += r.angular_rate_rad_s;
     m.specific_force_m_s2 += r.specific_force_m_s2;
   });
@@ -60,7 +60,7 @@ Means imu_means(const std::string& bag) {
 
 Means truth_means(const std::string& bag) {
   Means m;
-  const auto add = [&](const imu_lab::ros_io::TruthRecord& r) {
+  const auto add = [&](const imu_lab::io::TruthRecord& r) {
     m.angular_rate_rad_s += r.angular_rate_rad_s;
     m.specific_force_m_s2 += r.specific_force_m_s2;
   };

@@ -13,8 +13,8 @@
 
 namespace {
 
-using imu_lab::ros_io::ImuRecord;
-using imu_lab::ros_io::TemperatureRecord;
+using imu_lab::io::ImuRecord;
+using imu_lab::io::TemperatureRecord;
 using imu_lab::test_support::file_exists;
 using imu_lab::test_support::list_directory;
 using imu_lab::test_support::read_file;

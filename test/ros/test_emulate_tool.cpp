@@ -41,7 +41,7 @@ TEST(EmulateTool, SameSeedGivesABitIdenticalBagAndAnotherSeedDoesNot) {
 
   std::size_t count = 0;
   double first_stamp_s = 0.0;
-  imu_lab::ros_io::for_each_imu(directory + "/a.bag", "/imu/raw", [&](const imu_lab::ros_io::ImuRecord& record) {
+  imu_lab::ros_io::for_each_imu(directory + "/a.bag", "/imu/raw", [&](const imu_lab::io::ImuRecord& record) {
     if (count++ == 0) first_stamp_s = record.stamp_s;
   });
   EXPECT_EQ(count, 4000u);

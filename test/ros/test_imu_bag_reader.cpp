@@ -56,7 +56,7 @@ TEST(ImuBagReader, ReadsTheRealCompressedBagsWithTheirUnevenStamps) {
     EXPECT_EQ(topic, "/imu/data_raw");
     double previous = 0.0;
     std::size_t unordered = 0;
-    const std::size_t count = for_each_imu(path, topic, [&](const imu_lab::ros_io::ImuRecord& record) {
+    const std::size_t count = for_each_imu(path, topic, [&](const imu_lab::io::ImuRecord& record) {
       if (record.stamp_s <= previous) ++unordered;
       previous = record.stamp_s;
     });
@@ -79,7 +79,7 @@ TEST(ImuBagReader, SeveralImuTopicsAskForAChoice) {
   const std::string message = expect_input_error([&] { choose_imu_topic(path, ""); });
   EXPECT_NE(message.find("--topic"), std::string::npos) << message;
   EXPECT_EQ(choose_imu_topic(path, "/imu/b"), "/imu/b");
-  EXPECT_EQ(for_each_imu(path, "/imu/b", [](const imu_lab::ros_io::ImuRecord&) {}), 3u);
+  EXPECT_EQ(for_each_imu(path, "/imu/b", [](const imu_lab::io::ImuRecord&) {}), 3u);
 }
 
 TEST(ImuBagReader, EmptyBagHasNoImuTopic) {

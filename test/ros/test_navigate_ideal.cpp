@@ -34,8 +34,8 @@ std::string config_path(const std::string& relative) { return std::string(IMU_LA
 
 std::int64_t stamp_ns(double stamp_s) { return std::llround(stamp_s * 1e9); }
 
-imu_lab::ros_io::TruthRecord truth_record(const imu_lab::emulator::TruthSample& truth) {
-  imu_lab::ros_io::TruthRecord record;
+imu_lab::io::TruthRecord truth_record(const imu_lab::emulator::TruthSample& truth) {
+  imu_lab::io::TruthRecord record;
   record.stamp_ns = stamp_ns(truth.stamp_s);
   record.q_body_to_enu = truth.attitude_body_to_enu;
   record.angular_rate_rad_s = truth.angular_rate_rad_s;
@@ -94,7 +94,7 @@ TEST_P(NavigateIdealImu, StartedFromTheTruthEndsWithin5cmWithEitherInput) {
   ASSERT_EQ(increments.add_increment(stamp_ns(first.stamp_s), to_increment(first)), SampleOutcome::kStarted);
 
   RunErrors rate_errors, increment_errors;
-  const auto track = [&](const NavigationSession& session, const imu_lab::ros_io::TruthRecord& truth, RunErrors& errors) {
+  const auto track = [&](const NavigationSession& session, const imu_lab::io::TruthRecord& truth, RunErrors& errors) {
     ASSERT_EQ(session.stamp_ns(), truth.stamp_ns);
     const auto error = imu_lab::ros_io::navigation_error(imu_lab::ros_io::make_solution(session, world), truth, world,
                                                          session.alignment()->stamp_ns);

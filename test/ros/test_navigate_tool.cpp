@@ -64,15 +64,15 @@ std::vector<std::map<std::string, double>> read_error_csv(const std::string& pat
 struct MeanSensorError {
   Eigen::Vector3d gyro_rad_s = Eigen::Vector3d::Zero();
   Eigen::Vector3d accel_m_s2 = Eigen::Vector3d::Zero();
-  imu_lab::ros_io::TruthRecord truth;
+  imu_lab::io::TruthRecord truth;
 };
 
 MeanSensorError mean_sensor_error(const std::string& bag, std::int64_t from_ns, std::int64_t to_ns) {
-  std::map<std::int64_t, imu_lab::ros_io::TruthRecord> truth;
+  std::map<std::int64_t, imu_lab::io::TruthRecord> truth;
   imu_lab::ros_io::for_each_truth(bag, "/imu/truth", [&](const auto& record) { truth[record.stamp_ns] = record; });
   MeanSensorError mean;
   std::size_t count = 0;
-  imu_lab::ros_io::for_each_imu(bag, "/imu/raw", [&](const imu_lab::ros_io::ImuRecord& record) {
+  imu_lab::ros_io::for_each_imu(bag, "/imu/raw", [&](const imu_lab::io::ImuRecord& record) {
     if (record.stamp_ns <= from_ns || record.stamp_ns > to_ns) return;
     const auto& t = truth.at(record.stamp_ns);
     mean.gyro_rad_s += record.angular_rate_rad_s - t.angular_rate_rad_s;

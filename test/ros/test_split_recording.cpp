@@ -20,7 +20,7 @@ namespace {
 
 using imu_lab::ros_io::AllanSample;
 using imu_lab::ros_io::BagRecording;
-using imu_lab::ros_io::ImuRecord;
+using imu_lab::io::ImuRecord;
 using imu_lab::test_support::read_allan_summary;
 using imu_lab::test_support::read_file;
 using imu_lab::test_support::run_tool;
@@ -171,7 +171,7 @@ TEST_F(SplitRecording, FilesWhoseStampsGoBackAcrossAJoinAreRefusedNamingBoth) {
 }
 
 TEST_F(SplitRecording, AWindowReadsExactlyTheSamplesInsideItAcrossTheFiles) {
-  const imu_lab::ros_io::TimeWindow window{30.0, 50.0};
+  const imu_lab::io::TimeWindow window{30.0, 50.0};
   const auto read = records(BagRecording(parts_, window));
   // Both ends included: stamps 30 s .. 50 s after the first, every 5 ms.
   ASSERT_EQ(read.size(), 4001u);

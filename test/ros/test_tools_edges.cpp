@@ -390,9 +390,9 @@ std::string write_text(const std::string& path, const std::string& text) {
   return path;
 }
 
-std::vector<imu_lab::ros_io::ImuRecord> records_of(const std::string& bag) {
-  std::vector<imu_lab::ros_io::ImuRecord> records;
-  imu_lab::ros_io::for_each_imu(bag, "/imu/raw", [&](const imu_lab::ros_io::ImuRecord& r) { records.push_back(r); });
+std::vector<imu_lab::io::ImuRecord> records_of(const std::string& bag) {
+  std::vector<imu_lab::io::ImuRecord> records;
+  imu_lab::ros_io::for_each_imu(bag, "/imu/raw", [&](const imu_lab::io::ImuRecord& r) { records.push_back(r); });
   return records;
 }
 

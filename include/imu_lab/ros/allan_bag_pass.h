@@ -15,6 +15,7 @@
 #include "imu_lab/allan/output_step.h"
 #include "imu_lab/allan/streaming_allan.h"
 #include "imu_lab/ros/allan_samples.h"
+#include "imu_lab/ros/imu_bag_reader.h"
 
 namespace imu_lab {
 namespace ros_io {

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "imu_lab/allan/streaming_options.h"
-#include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/io/imu_records.h"
 
 namespace imu_lab {
 namespace ros_io {
@@ -38,8 +38,8 @@ struct AllanSample {
   std::array<double, kAllanChannelCount> values{};
 };
 
-AllanSample to_allan_sample(const ImuRecord& record);
-AllanSample to_allan_sample(const IncrementRecord& record);
+AllanSample to_allan_sample(const io::ImuRecord& record);
+AllanSample to_allan_sample(const io::IncrementRecord& record);
 
 }  // namespace ros_io
 }  // namespace imu_lab

@@ -10,6 +10,7 @@
 #include "imu_lab/allan/impulse_screen.h"
 #include "imu_lab/allan/output_step.h"
 #include "imu_lab/allan/streaming_allan.h"
+#include "imu_lab/io/recording_window.h"
 #include "imu_lab/ros/allan_samples.h"
 
 namespace imu_lab {
@@ -18,8 +19,8 @@ namespace ros_io {
 struct AllanRunDescription {
   std::string bag;    // the bag read; empty for a live topic
   std::vector<std::string> files;  // a split recording's files in the order read (several only)
-  TimeWindow window;               // the part of the bag analysed
-  std::vector<FileJoin> joins;     // where the split files hand over
+  io::TimeWindow window;               // the part of the bag analysed
+  std::vector<io::FileJoin> joins;     // where the split files hand over
   std::string topic;  // the topic read or subscribed to
   AllanInput input = AllanInput::kRate;
   allan::StreamingOptions engine;

@@ -12,6 +12,7 @@
 
 #include "imu_lab/ros/navigation_session.h"
 #include "imu_lab/ros/navigation_settings.h"
+#include "imu_lab/ros/imu_bag_reader.h"
 #include "imu_lab/ros/navigation_solution.h"
 
 namespace imu_lab {

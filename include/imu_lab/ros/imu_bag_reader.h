@@ -26,6 +26,8 @@
 #include <vector>
 
 #include "imu_lab/common/progress.h"
+#include "imu_lab/io/imu_records.h"
+#include "imu_lab/io/recording_window.h"
 
 namespace rosbag {
 class Bag;
@@ -35,62 +37,22 @@ class MessageInstance;
 namespace imu_lab {
 namespace ros_io {
 
-struct ImuRecord {
-  double stamp_s = 0.0;  // header stamp, never the bag's receive time
-  std::int64_t stamp_ns = 0;  // the same, exact: differences of stamp_s near 1e9 s lose ~0.1 us
-  Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();
-  Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();
-  // A triad whose covariance[0] is -1 carries no data (sensor_msgs/Imu's convention, e.g. a driver
-  // of an IMU without gyros). Its values are then NaN, not the message's zeros, so that no consumer
-  // can average, fit or integrate them unawares: each one refuses, skips or excludes them as it
-  // does NaN, and can tell the user why from these flags.
-  bool has_angular_rate = true;
-  bool has_specific_force = true;
-};
-
-// imu_lab/ImuIncrement: the sensor's own integrals over interval_s, ending at the stamp.
-struct IncrementRecord {
-  std::int64_t stamp_ns = 0;
-  double interval_s = 0.0;
-  Eigen::Vector3d delta_angle_rad = Eigen::Vector3d::Zero();
-  Eigen::Vector3d delta_velocity_m_s = Eigen::Vector3d::Zero();
-};
-
-// imu_lab/ImuTruth: the emulator's ground truth at the stamp (frames as in nav/nav_state.h).
-struct TruthRecord {
-  std::int64_t stamp_ns = 0;
-  Eigen::Quaterniond q_body_to_enu = Eigen::Quaterniond::Identity();
-  Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();   // body axes, interval average
-  Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();  // body axes, interval average
-  double latitude_rad = 0.0;
-  double longitude_rad = 0.0;
-  double height_m = 0.0;
-  Eigen::Vector3d velocity_enu_m_s = Eigen::Vector3d::Zero();
-};
-
-// sensor_msgs/Temperature: one thermosensor reading at its header stamp.
-struct TemperatureRecord {
-  double stamp_s = 0.0;
-  double temperature_c = 0.0;
-};
+// The record types are the core's (io/imu_records.h), so ROS-free code can take them.
+using io::ImuRecord;
+using io::IncrementRecord;
+using io::TemperatureRecord;
+using io::TruthRecord;
+using io::describe_joins;
+using io::describe_time_window;
+using io::FileJoin;
+using io::time_window_problem;
+using io::TimeWindow;
 
 struct TopicInfo {
   std::string name;
   std::string datatype;
   std::size_t message_count = 0;  // over every file of the recording, whatever the window
 };
-
-// The part of a recording to use, in seconds from the first header stamp of the topic read
-// (e.g. leave out a warm-up with start_s); both ends included.
-struct TimeWindow {
-  double start_s = 0.0;
-  double end_s = std::numeric_limits<double>::infinity();
-  bool is_whole() const { return start_s <= 0.0 && end_s == std::numeric_limits<double>::infinity(); }
-};
-// Empty if usable, otherwise why not (start negative or not finite, end not after start).
-std::string time_window_problem(const TimeWindow& window);
-// "whole recording" or "from 600 s to 3600 s after the first stamp".
-std::string describe_time_window(const TimeWindow& window);
 
 // One recording: a bag, or the split files of one (read in stamp order), and the window to read.
 struct BagRecording {
@@ -111,12 +73,6 @@ struct BagRecording {
     files.on_progress = on_progress;
     return files;
   }
-};
-
-// Where one file of a recording hands over to the next, on the topic last streamed.
-struct FileJoin {
-  std::string before_path, after_path;
-  double gap_s = 0.0;  // after's first header stamp minus before's last
 };
 
 // A recording opened once for several questions. Opening reads each bag's whole index (about 70
@@ -169,8 +125,6 @@ class OpenBag {
   std::vector<FileJoin> joins_;
 };
 
-// "joins between split files: a.bag -> b.bag 0.01 s, ..." (empty for none).
-std::string describe_joins(const std::vector<FileJoin>& joins);
 
 // The records of one message, as the readers below give them; live nodes use the same conversion.
 ImuRecord to_imu_record(const sensor_msgs::Imu& message);

@@ -7,7 +7,7 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 
-#include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/io/imu_records.h"
 #include "imu_lab/ros/local_enu.h"
 #include "imu_lab/ros/navigation_session.h"
 
@@ -42,7 +42,7 @@ struct NavigationError {
   Eigen::Vector3d attitude_error_enu_rad = Eigen::Vector3d::Zero();
 };
 
-NavigationError navigation_error(const NavigationSolution& solution, const TruthRecord& truth,
+NavigationError navigation_error(const NavigationSolution& solution, const io::TruthRecord& truth,
                                  const LocalEnuFrame& world, std::int64_t alignment_stamp_ns);
 
 }  // namespace ros_io
