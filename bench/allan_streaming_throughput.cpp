@@ -23,7 +23,7 @@
 namespace {
 
 constexpr std::size_t kChannels = 6;
-constexpr std::size_t kToolBatchSamples = 4096;  // what src/ros/allan_bag_pass.cpp queues
+constexpr std::size_t kToolBatchSamples = 4096;  // what src/ros_io/bag/allan_bag_pass.cpp queues
 
 struct Recording {
   std::vector<std::int64_t> stamps_ns;

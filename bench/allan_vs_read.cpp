@@ -28,8 +28,8 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "imu_lab/ros/allan_bag_pass.h"
-#include "imu_lab/ros/allan_report.h"
+#include "imu_lab/ros_io/bag/allan_bag_pass.h"
+#include "imu_lab/ros_io/bag/allan_report.h"
 
 namespace {
 

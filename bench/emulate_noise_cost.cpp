@@ -9,7 +9,7 @@
 
 #include "imu_lab/emulator/imu_emulator.h"
 #include "imu_lab/emulator/scenario.h"
-#include "imu_lab/ros/emulated_bag.h"
+#include "imu_lab/ros_io/bag/emulated_bag.h"
 
 namespace {
 

@@ -18,7 +18,7 @@
 namespace {
 
 constexpr std::size_t kChannels = 6;
-constexpr std::size_t kBatchSamples = 4096;  // the allan tool's batches (src/ros/allan_bag_pass.cpp)
+constexpr std::size_t kBatchSamples = 4096;  // the allan tool's batches (src/ros_io/bag/allan_bag_pass.cpp)
 
 imu_lab::emulator::TriadErrorModel triad(double white, double step, double rate_hz) {
   imu_lab::emulator::TriadErrorModel model;

@@ -10,7 +10,7 @@
 #include "imu_lab/emulator/imu_emulator.h"
 #include "imu_lab/emulator/static_motion.h"
 #include "imu_lab/nav/navigator.h"
-#include "imu_lab/ros/config_paths.h"
+#include "imu_lab/ros_io/node/config_paths.h"
 
 namespace {
 

@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "imu_lab/common/config_error.h"
-#include "imu_lab/ros/imu_emulator_node.h"
+#include "imu_lab/ros_io/node/imu_emulator_node.h"
 
 namespace imu_lab {
 namespace ros_io {

@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "imu_lab/common/config_error.h"
-#include "imu_lab/ros/strapdown_navigator_node.h"
+#include "imu_lab/ros_io/node/strapdown_navigator_node.h"
 
 namespace imu_lab {
 namespace ros_io {

@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "imu_lab/common/config_error.h"
-#include "imu_lab/ros/thermal_compensator_node.h"
+#include "imu_lab/ros_io/node/thermal_compensator_node.h"
 
 namespace imu_lab {
 namespace ros_io {

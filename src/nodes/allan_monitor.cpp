@@ -1,9 +1,9 @@
 // allan_monitor: live Allan-family curves of an IMU topic, report files and checkpoints
-// (see include/imu_lab/ros/allan_monitor_node.h).
+// (see include/imu_lab/ros_io/node/allan_monitor_node.h).
 #include <ros/ros.h>
 
-#include "imu_lab/ros/node_main.h"
-#include "imu_lab/ros/allan_monitor_node.h"
+#include "imu_lab/ros_io/node/node_main.h"
+#include "imu_lab/ros_io/node/allan_monitor_node.h"
 
 int main(int argc, char** argv) {
   return imu_lab::ros_io::run_node_main(argc, argv, "allan_monitor", [](ros::NodeHandle& node, ros::NodeHandle& private_node) {

@@ -1,8 +1,8 @@
-// imu_emulator: publishes an emulated IMU live (see include/imu_lab/ros/imu_emulator_node.h).
+// imu_emulator: publishes an emulated IMU live (see include/imu_lab/ros_io/node/imu_emulator_node.h).
 #include <ros/ros.h>
 
-#include "imu_lab/ros/node_main.h"
-#include "imu_lab/ros/imu_emulator_node.h"
+#include "imu_lab/ros_io/node/node_main.h"
+#include "imu_lab/ros_io/node/imu_emulator_node.h"
 
 int main(int argc, char** argv) {
   return imu_lab::ros_io::run_node_main(argc, argv, "imu_emulator", [](ros::NodeHandle& node, ros::NodeHandle& private_node) {

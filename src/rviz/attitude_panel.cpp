@@ -6,7 +6,7 @@
 #include <pluginlib/class_list_macros.hpp>
 #include <rviz/visualization_manager.h>
 
-#include "imu_lab/ros/panel_messages.h"
+#include "imu_lab/ros_io/msg/panel_messages.h"
 
 namespace imu_lab {
 namespace rviz_plugins {

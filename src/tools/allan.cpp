@@ -1,6 +1,6 @@
 // allan: bag -> the nine Allan-family stability curves (CSV per statistic), a YAML summary of the
 // stamps and channels, the identified noise model (noise.yaml, kalibr_imu.yaml, partial curves)
-// and a plot, in one streaming pass (see include/imu_lab/ros/allan_bag_pass.h, allan_report.h and
+// and a plot, in one streaming pass (see include/imu_lab/ros_io/bag/allan_bag_pass.h, allan_report.h and
 // allan_noise_report.h). Nothing is written unless the whole pass succeeds.
 #include <CLI/CLI.hpp>
 
@@ -13,10 +13,10 @@
 #include "imu_lab/common/progress.h"
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
-#include "imu_lab/ros/allan_bag_pass.h"
-#include "imu_lab/ros/allan_report.h"
-#include "imu_lab/ros/noise_table.h"
-#include "imu_lab/ros/recording_arguments.h"
+#include "imu_lab/ros_io/bag/allan_bag_pass.h"
+#include "imu_lab/ros_io/bag/allan_report.h"
+#include "imu_lab/pipeline/noise_table.h"
+#include "imu_lab/ros_io/bag/recording_arguments.h"
 
 namespace {
 

@@ -11,8 +11,8 @@
 #include "imu_lab/common/progress.h"
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
-#include "imu_lab/ros/bag_correction.h"
-#include "imu_lab/ros/recording_arguments.h"
+#include "imu_lab/ros_io/bag/bag_correction.h"
+#include "imu_lab/ros_io/bag/recording_arguments.h"
 #include "imu_lab/thermal/thermal_model_yaml.h"
 
 namespace {

@@ -11,8 +11,8 @@
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
 #include "imu_lab/emulator/imu_emulator.h"
-#include "imu_lab/ros/config_paths.h"
-#include "imu_lab/ros/emulated_bag.h"
+#include "imu_lab/ros_io/node/config_paths.h"
+#include "imu_lab/ros_io/bag/emulated_bag.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Emulate an IMU (error-model profile in a scenario) into a bag."};

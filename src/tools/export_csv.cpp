@@ -7,8 +7,8 @@
 
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
-#include "imu_lab/ros/imu_csv_bag.h"
-#include "imu_lab/ros/recording_arguments.h"
+#include "imu_lab/ros_io/bag/imu_csv_bag.h"
+#include "imu_lab/ros_io/bag/recording_arguments.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Export a bag's IMU topic to CSV (header with units; SI unless asked otherwise)."};

@@ -12,7 +12,7 @@
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
 #include "imu_lab/io/csv_import_config.h"
-#include "imu_lab/ros/imu_csv_bag.h"
+#include "imu_lab/ros_io/bag/imu_csv_bag.h"
 
 namespace {
 

@@ -20,7 +20,7 @@
 #include "imu_lab/identify/noise_report.h"
 #include "imu_lab/io/stability_table.h"
 #include "imu_lab/repeatability/lot.h"
-#include "imu_lab/ros/config_paths.h"
+#include "imu_lab/ros_io/node/config_paths.h"
 
 namespace {
 

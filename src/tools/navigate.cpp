@@ -21,10 +21,10 @@
 #include "imu_lab/common/progress.h"
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
-#include "imu_lab/ros/bag_navigation.h"
-#include "imu_lab/ros/config_paths.h"
-#include "imu_lab/ros/navigation_csv.h"
-#include "imu_lab/ros/recording_arguments.h"
+#include "imu_lab/ros_io/bag/bag_navigation.h"
+#include "imu_lab/ros_io/node/config_paths.h"
+#include "imu_lab/pipeline/navigation_csv.h"
+#include "imu_lab/ros_io/bag/recording_arguments.h"
 
 namespace {
 

@@ -16,10 +16,10 @@
 #include "imu_lab/emulator/scenario.h"
 #include "imu_lab/rate_table/rate_table_report.h"
 #include "imu_lab/rate_table/scale_factor_test.h"
-#include "imu_lab/ros/config_paths.h"
-#include "imu_lab/ros/imu_bag_reader.h"
-#include "imu_lab/ros/recording_arguments.h"
-#include "imu_lab/ros/strict_imu_reading.h"
+#include "imu_lab/ros_io/node/config_paths.h"
+#include "imu_lab/ros_io/bag/imu_bag_reader.h"
+#include "imu_lab/ros_io/bag/recording_arguments.h"
+#include "imu_lab/ros_io/bag/strict_imu_reading.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Rate-table scale-factor test of the gyro axis along the table axis."};

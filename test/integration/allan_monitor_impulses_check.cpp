@@ -8,7 +8,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "allan_replay_support.h"
-#include "imu_lab/ros/emulator_messages.h"
+#include "imu_lab/ros_io/msg/emulator_messages.h"
 
 namespace {
 

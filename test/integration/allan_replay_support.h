@@ -20,10 +20,10 @@
 
 #include "imu_lab/emulator/imu_emulator.h"
 #include "imu_lab/io/stability_table.h"
-#include "imu_lab/ros/allan_bag_pass.h"
-#include "imu_lab/ros/allan_report.h"
-#include "imu_lab/ros/config_paths.h"
-#include "imu_lab/ros/emulated_bag.h"
+#include "imu_lab/ros_io/bag/allan_bag_pass.h"
+#include "imu_lab/ros_io/bag/allan_report.h"
+#include "imu_lab/ros_io/node/config_paths.h"
+#include "imu_lab/ros_io/bag/emulated_bag.h"
 
 extern char** environ;
 

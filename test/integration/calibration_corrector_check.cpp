@@ -13,7 +13,7 @@
 
 #include "connection_support.h"
 #include "imu_lab/calib/calibration_file.h"
-#include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/ros_io/bag/imu_bag_reader.h"
 
 namespace {
 

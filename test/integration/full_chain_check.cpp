@@ -37,9 +37,9 @@
 #include "imu_lab/calib/calibration_file.h"
 #include "imu_lab/emulator/analytic_profile_avar.h"
 #include "imu_lab/emulator/sensor_profile.h"
-#include "imu_lab/ros/imu_bag_reader.h"
-#include "imu_lab/ros/local_enu.h"
-#include "imu_lab/ros/navigation_csv.h"
+#include "imu_lab/ros_io/bag/imu_bag_reader.h"
+#include "imu_lab/nav/local_enu.h"
+#include "imu_lab/pipeline/navigation_csv.h"
 
 namespace {
 

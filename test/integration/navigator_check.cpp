@@ -20,9 +20,9 @@
 
 #include "connection_support.h"
 #include "imu_lab/nav/earth_model.h"
-#include "imu_lab/ros/navigation_csv.h"
-#include "imu_lab/ros/navigation_messages.h"
-#include "imu_lab/ros/navigation_settings.h"
+#include "imu_lab/pipeline/navigation_csv.h"
+#include "imu_lab/ros_io/msg/navigation_messages.h"
+#include "imu_lab/pipeline/navigation_settings.h"
 
 namespace {
 

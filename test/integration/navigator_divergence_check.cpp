@@ -14,7 +14,7 @@
 #include <functional>
 #include <string>
 
-#include "imu_lab/ros/navigation_csv.h"
+#include "imu_lab/pipeline/navigation_csv.h"
 
 namespace {
 

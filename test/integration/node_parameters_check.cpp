@@ -28,12 +28,12 @@
 
 #include "connection_support.h"
 #include "imu_lab/common/config_error.h"
-#include "imu_lab/ros/allan_monitor_node.h"
-#include "imu_lab/ros/calibration_corrector_node.h"
-#include "imu_lab/ros/imu_emulator_node.h"
-#include "imu_lab/ros/node_parameters.h"
-#include "imu_lab/ros/strapdown_navigator_node.h"
-#include "imu_lab/ros/thermal_compensator_node.h"
+#include "imu_lab/ros_io/node/allan_monitor_node.h"
+#include "imu_lab/ros_io/node/calibration_corrector_node.h"
+#include "imu_lab/ros_io/node/imu_emulator_node.h"
+#include "imu_lab/ros_io/node/node_parameters.h"
+#include "imu_lab/ros_io/node/strapdown_navigator_node.h"
+#include "imu_lab/ros_io/node/thermal_compensator_node.h"
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "connection_support.h"
-#include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/ros_io/bag/imu_bag_reader.h"
 #include "imu_lab/thermal/thermal_compensator.h"
 #include "imu_lab/thermal/thermal_model_yaml.h"
 

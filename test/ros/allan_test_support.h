@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "imu_lab/ros/allan_samples.h"
+#include "imu_lab/pipeline/allan_samples.h"
 
 namespace imu_lab {
 namespace test_support {

@@ -14,7 +14,7 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "imu_lab/ros/config_paths.h"
+#include "imu_lab/ros_io/node/config_paths.h"
 
 #ifndef IMU_LAB_BIN_DIR
 #define IMU_LAB_BIN_DIR "."

@@ -8,8 +8,8 @@
 #include "allan_test_support.h"
 #include "imu_lab/allan/streaming_allan.h"
 #include "imu_lab/io/stability_table.h"
-#include "imu_lab/ros/allan_report.h"
-#include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/ros_io/bag/allan_report.h"
+#include "imu_lab/ros_io/bag/imu_bag_reader.h"
 #include "ros_test_support.h"
 
 #ifndef IMU_LAB_CONFIG_DIR

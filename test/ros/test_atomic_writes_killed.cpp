@@ -16,7 +16,7 @@
 #include <utility>
 #include <thread>
 
-#include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/ros_io/bag/imu_bag_reader.h"
 #include "ros_test_support.h"
 
 #ifndef IMU_LAB_BIN_DIR

@@ -11,7 +11,7 @@
 #include <fstream>
 #include <string>
 
-#include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/ros_io/bag/imu_bag_reader.h"
 #include "ros_test_support.h"
 
 namespace {

@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "imu_lab/calib/calibration_file.h"
-#include "imu_lab/ros/calibration_corrector_node.h"
-#include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/ros_io/node/calibration_corrector_node.h"
+#include "imu_lab/ros_io/bag/imu_bag_reader.h"
 #include "imu_lab/thermal/thermal_compensator.h"
 #include "imu_lab/thermal/thermal_model_yaml.h"
 #include "ros_test_support.h"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <fstream>
 
-#include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/ros_io/bag/imu_bag_reader.h"
 #include "ros_test_support.h"
 
 #ifndef IMU_LAB_CONFIG_DIR

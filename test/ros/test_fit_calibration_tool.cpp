@@ -8,7 +8,7 @@
 #include "imu_lab/calib/calibration_file.h"
 #include "imu_lab/emulator/imu_emulator.h"
 #include "imu_lab/emulator/sensor_channel.h"
-#include "imu_lab/ros/config_paths.h"
+#include "imu_lab/ros_io/node/config_paths.h"
 #include "ros_test_support.h"
 
 namespace {

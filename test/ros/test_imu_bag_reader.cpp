@@ -1,4 +1,4 @@
-#include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/ros_io/bag/imu_bag_reader.h"
 
 #include <gtest/gtest.h>
 #include <rosbag/bag.h>

@@ -1,7 +1,7 @@
 // The nodes' shared input-health diagnostics (input_health.h), fed stamps directly: each kind of
 // bad input gives its WARN/ERROR summary naming what happened, only in the report that covers
 // it; a rate change mid-run warns against the learned rate.
-#include "imu_lab/ros/input_health.h"
+#include "imu_lab/ros_io/node/input_health.h"
 
 #include <gtest/gtest.h>
 #include <sensor_msgs/Imu.h>

@@ -16,9 +16,9 @@
 
 #include "imu_lab/nav/alignment_error_budget.h"
 #include "imu_lab/nav/earth_model.h"
-#include "imu_lab/ros/imu_bag_reader.h"
-#include "imu_lab/ros/navigation_csv.h"
-#include "imu_lab/ros/navigation_settings.h"
+#include "imu_lab/ros_io/bag/imu_bag_reader.h"
+#include "imu_lab/pipeline/navigation_csv.h"
+#include "imu_lab/pipeline/navigation_settings.h"
 #include "ros_test_support.h"
 
 #ifndef IMU_LAB_CONFIG_DIR

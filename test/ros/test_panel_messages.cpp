@@ -11,8 +11,8 @@
 #include "imu_lab/identify/fit.h"
 #include "imu_lab/identify/partial_curves.h"
 #include "imu_lab/identify/record_length.h"
-#include "imu_lab/ros/noise_messages.h"
-#include "imu_lab/ros/panel_messages.h"
+#include "imu_lab/ros_io/msg/noise_messages.h"
+#include "imu_lab/ros_io/msg/panel_messages.h"
 
 namespace imu_lab {
 namespace {

@@ -9,7 +9,7 @@
 #include <fstream>
 
 #include "imu_lab/emulator/sensor_profile.h"
-#include "imu_lab/ros/config_paths.h"
+#include "imu_lab/ros_io/node/config_paths.h"
 #include "ros_test_support.h"
 
 namespace {

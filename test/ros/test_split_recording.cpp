@@ -11,9 +11,9 @@
 
 #include "allan_test_support.h"
 #include "imu_lab/common/config_error.h"
-#include "imu_lab/ros/allan_bag_pass.h"
-#include "imu_lab/ros/allan_report.h"
-#include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/ros_io/bag/allan_bag_pass.h"
+#include "imu_lab/ros_io/bag/allan_report.h"
+#include "imu_lab/ros_io/bag/imu_bag_reader.h"
 #include "ros_test_support.h"
 
 namespace {

@@ -20,8 +20,8 @@
 
 #include "allan_test_support.h"
 #include "imu_lab/common/config_error.h"
-#include "imu_lab/ros/config_paths.h"
-#include "imu_lab/ros/imu_bag_reader.h"
+#include "imu_lab/ros_io/node/config_paths.h"
+#include "imu_lab/ros_io/bag/imu_bag_reader.h"
 #include "ros_test_support.h"
 
 namespace {

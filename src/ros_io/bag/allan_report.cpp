@@ -1,0 +1,65 @@
+#include "imu_lab/ros_io/bag/allan_report.h"
+
+#include <stdexcept>
+
+#include "imu_lab/common/atomic_file.h"
+#include "imu_lab/ros_io/node/config_paths.h"
+
+namespace imu_lab {
+namespace ros_io {
+namespace {
+
+// Every file a report may hold, so that files of an earlier report this one does not produce
+// (its plot, its noise model) do not stay beside the new curves.
+std::vector<std::string> report_file_names() {
+  std::vector<std::string> names;
+  for (const allan::Statistic statistic : allan::kStreamingStatistics) {
+    names.push_back(std::string(allan::statistic_name(statistic)) + ".csv");
+  }
+  for (const char* name : {"allan_summary.yaml", "allan.png", "noise.yaml", "kalibr_imu.yaml"}) names.push_back(name);
+  for (const char* channel : kAllanChannelNames) names.push_back(partial_curves_file_name(channel));
+  return names;
+}
+
+}  // namespace
+
+std::vector<io::ChannelCurve> channel_curves(const allan::StreamingSnapshot& snapshot, allan::Statistic statistic) {
+  std::vector<io::ChannelCurve> curves;
+  for (std::size_t c = 0; c < kAllanChannelCount && c < snapshot.channels.size(); ++c) {
+    curves.push_back({kAllanChannelNames[c], kAllanChannelUnits[c], snapshot.curve(statistic, c)});
+  }
+  return curves;
+}
+
+AllanReportFiles write_allan_report(const std::string& directory, const AllanRunDescription& run,
+                                    const allan::StreamingSnapshot& snapshot, bool plot,
+                                    const AllanIdentifyOptions& identify) {
+  // One set: written in full into a staging directory, then moved in together (atomic_file.h).
+  OutputSet set;
+  const std::string staging = set.stage_directory(directory);
+  AllanReportFiles files;
+  for (const allan::Statistic statistic : allan::kStreamingStatistics) {
+    const std::string name = std::string(allan::statistic_name(statistic)) + ".csv";
+    io::write_stability_csv(staging + "/" + name, channel_curves(snapshot, statistic));
+    files.written.push_back(name);
+  }
+  // After the curves (a failed fit keeps them) and before the plot (it draws the partial curves).
+  files.noise = write_allan_noise_report(staging, run, snapshot, identify);
+  for (const std::string& path : files.noise.written) files.written.push_back(path.substr(staging.size() + 1));
+  write_file_atomically(staging + "/allan_summary.yaml",
+                        format_allan_summary(run, snapshot) + format_identification_summary(identify, files.noise));
+  files.written.push_back("allan_summary.yaml");
+  if (plot) {
+    files.plot_problem = run_plot_script(
+        "plot_allan.py", {staging, "--statistic", "oadev", "--out", staging + "/allan.png"});
+    if (files.plot_problem.empty()) files.written.push_back("allan.png");
+    else files.plot_problem += ", so no plot";
+  }
+  for (const std::string& name : report_file_names()) set.remove_at_commit(directory + "/" + name);
+  set.commit();
+  for (std::string& name : files.written) name = directory + "/" + name;
+  return files;
+}
+
+}  // namespace ros_io
+}  // namespace imu_lab

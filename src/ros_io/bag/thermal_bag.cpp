@@ -1,0 +1,54 @@
+#include "imu_lab/ros_io/bag/thermal_bag.h"
+
+#include "imu_lab/common/config_error.h"
+#include "imu_lab/ros_io/bag/imu_bag_reader.h"
+#include "imu_lab/ros_io/bag/strict_imu_reading.h"
+
+namespace imu_lab {
+namespace ros_io {
+namespace {
+
+// Every reading of a sensor_msgs/Temperature topic into a history; the topic must exist.
+std::size_t read_temperatures(const BagRecording& recording, const std::string& topic, const char* role,
+                              thermal::TemperatureHistory* history) {
+  try {
+    choose_topic(recording, topic, "sensor_msgs/Temperature");
+  } catch (const InputError& error) {
+    throw InputError(std::string(error.what()) + "\nA thermal fit needs the " + role +
+                     " (sensor_msgs/Temperature, stamped like the IMU): record it with the IMU, or name its topic "
+                     "with the temperature-topic option");
+  }
+  std::size_t refused = 0;
+  const std::size_t count = for_each_temperature(recording, topic, [&](const TemperatureRecord& record) {
+    if (!history->add(record.stamp_s, record.temperature_c)) ++refused;
+  });
+  if (count == 0) throw InputError("bag " + recording.name() + ": topic " + topic + " has no messages; the " + role + " was not recorded");
+  if (refused > 0) {
+    throw InputError("bag " + recording.name() + ": " + std::to_string(refused) + " of " + std::to_string(count) + " readings on " +
+                     topic + " are not finite or not in increasing header-stamp order; fix the recording");
+  }
+  return count;
+}
+
+}  // namespace
+
+ThermalBagWindows read_thermal_windows(const BagRecording& recording, const ThermalBagTopics& topics,
+                                       const thermal::WindowSettings& settings) {
+  ThermalBagWindows out;
+  out.imu_topic = choose_imu_topic(recording, topics.imu);
+  // The thermosensors are read whole: the window (relative to the IMU's first stamp) selects IMU
+  // samples, each of which still needs the temperature at its own stamp.
+  thermal::TemperatureHistory temperature, second_temperature;
+  out.temperature_messages = read_temperatures(recording.whole(), topics.temperature, "thermosensor", &temperature);
+  const bool with_second = !topics.second_temperature.empty();
+  if (with_second) read_temperatures(recording.whole(), topics.second_temperature, "second thermosensor", &second_temperature);
+  thermal::ThermalWindowAverager averager(settings, temperature, with_second ? &second_temperature : nullptr);
+  out.imu_messages = for_each_imu_strictly(recording, out.imu_topic, [&](const ImuRecord& record) {
+    averager.add({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2});
+  });
+  out.windows = averager.finish();
+  return out;
+}
+
+}  // namespace ros_io
+}  // namespace imu_lab

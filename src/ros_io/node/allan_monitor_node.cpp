@@ -1,0 +1,322 @@
+#include "imu_lab/ros_io/node/allan_monitor_node.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
+#include "imu_lab/common/config_error.h"
+#include "imu_lab/common/imu_sample.h"
+#include "imu_lab/ros_io/msg/allan_messages.h"
+#include "imu_lab/ros_io/bag/allan_report.h"
+#include "imu_lab/ros_io/msg/noise_messages.h"
+
+namespace imu_lab {
+namespace ros_io {
+namespace {
+
+constexpr double kLogThrottle_s = 5.0;
+
+bool file_exists(const std::string& path) { return std::ifstream(path).good(); }
+
+// A fresh engine, or the checkpoint's when resuming from one that exists.
+std::unique_ptr<allan::StreamingAllan> make_engine(const AllanMonitorSettings& settings, const std::string& resume_key) {
+  if (!settings.resume || !file_exists(settings.checkpoint_path)) {
+    if (settings.resume) {
+      ROS_WARN("allan_monitor: no checkpoint at %s yet; starting from scratch", settings.checkpoint_path.c_str());
+    }
+    return std::make_unique<allan::StreamingAllan>(settings.engine);
+  }
+  try {
+    auto engine = std::make_unique<allan::StreamingAllan>(allan::StreamingAllan::load_checkpoint(settings.checkpoint_path));
+    if (engine->options().input_kind != settings.engine.input_kind ||
+        engine->options().channel_count != settings.engine.channel_count) {
+      throw InputError("it holds another input type than input_type says");
+    }
+    return engine;
+  } catch (const InputError& error) {
+    throw ConfigError(resume_key, "resume", "cannot resume from the checkpoint " + settings.checkpoint_path + ": " +
+                                                error.what() + "; delete it or set resume: false");
+  }
+}
+
+}  // namespace
+
+AllanMonitorNode::AllanMonitorNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
+    : settings_(load_allan_monitor_settings(private_node)),
+      engine_(make_engine(settings_, private_node.resolveName("resume"))),
+      screen_(settings_.screen),
+      output_steps_(kAllanChannelCount) {
+  if (settings_.resume && engine_->input_sample_count() > 0) {
+    resume_after_stamp_ns_ = engine_->last_stamp_ns();
+    ROS_INFO("allan_monitor: resumed from %s: %lld samples, skipping input stamped at or before %.9f s",
+             settings_.checkpoint_path.c_str(), static_cast<long long>(engine_->input_sample_count()),
+             *resume_after_stamp_ns_ * 1e-9);
+  }
+
+  gyro_publisher_ = node.advertise<imu_lab::AllanDeviation>("allan/gyro", 10);
+  accel_publisher_ = node.advertise<imu_lab::AllanDeviation>("allan/accel", 10);
+  noise_publisher_ = node.advertise<imu_lab::NoiseParameters>("allan/noise", 1, /*latch=*/true);
+  // The input health is ready before the first subscription: in a nodelet manager the callbacks
+  // run on worker threads as soon as it exists (one found health_ still empty and crashed it).
+  health_.emplace(node.resolveName(settings_.input == AllanInput::kRate ? "imu/raw" : "imu/increment"),
+                  load_input_health_settings(private_node, settings_.engine.gap_factor));
+  snapshot_failed_condition_ = health_->define_condition("snapshots that failed (no curves published)",
+                                                         diagnostic_msgs::DiagnosticStatus::ERROR);
+  impulse_condition_ = health_->define_condition(
+      "knocks or spikes (impulse screen events: samples kept from the curves, the run split there)",
+      diagnostic_msgs::DiagnosticStatus::WARN);
+  if (settings_.input == AllanInput::kRate) {
+    input_subscriber_ = node.subscribe("imu/raw", settings_.queue_size, &AllanMonitorNode::on_imu, this);
+  } else {
+    input_subscriber_ = node.subscribe("imu/increment", settings_.queue_size, &AllanMonitorNode::on_increment, this);
+  }
+  write_report_service_ = private_node.advertiseService("write_report", &AllanMonitorNode::on_write_report, this);
+
+  publish_timer_ = node.createWallTimer(ros::WallDuration(settings_.publish_period_s),
+                                        [this](const ros::WallTimerEvent&) { publish_curves(); });
+  if (settings_.identify.enabled && settings_.identify_period_s > 0.0) {
+    identify_timer_ = node.createWallTimer(ros::WallDuration(settings_.identify_period_s),
+                                           [this](const ros::WallTimerEvent&) { start_identification(); });
+  }
+  if (!settings_.checkpoint_path.empty()) {
+    checkpoint_timer_ = node.createWallTimer(ros::WallDuration(settings_.checkpoint_period_s),
+                                             [this](const ros::WallTimerEvent&) { save_checkpoint(); });
+  }
+  diagnostics_.setHardwareID("allan_monitor");
+  diagnostics_.add("allan monitor", this, &AllanMonitorNode::report);
+  diagnostics_timer_ = node.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    diagnostics_.update();
+  });
+  ROS_INFO("allan_monitor: %s input on %s; curves every %.3g s; report to %s%s%s", allan_input_datatype(settings_.input),
+           input_subscriber_.getTopic().c_str(), settings_.publish_period_s, settings_.report_dir.c_str(),
+           settings_.checkpoint_path.empty() ? "" : "; checkpoints to ", settings_.checkpoint_path.c_str());
+}
+
+AllanMonitorNode::~AllanMonitorNode() { finish(); }
+
+void AllanMonitorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message) {
+  const ImuRecord record = to_imu_record(*message);
+  // A triad not provided (covariance[0] = -1) reads as NaN, which its channels leave out.
+  add(to_allan_sample(record), message->header, record.has_angular_rate && record.has_specific_force ? nullptr : &record);
+}
+
+void AllanMonitorNode::on_increment(const imu_lab::ImuIncrement::ConstPtr& message) {
+  add(to_allan_sample(to_increment_record(*message)), message->header, nullptr);
+}
+
+void AllanMonitorNode::add(const AllanSample& sample, const std_msgs::Header& header, const ImuRecord* incomplete) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (finished_) return;
+  if (resume_after_stamp_ns_ && sample.stamp_ns <= *resume_after_stamp_ns_) {
+    ++skipped_before_checkpoint_;
+    return;
+  }
+  const StampVerdict verdict = health_->check_stamp(sample.stamp_ns);
+  if (verdict == StampVerdict::kDuplicate || verdict == StampVerdict::kOutOfOrder) {
+    ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: stamp %.9f s not after the previous one: sample dropped "
+                      "(counted in diagnostics)", sample.stamp_ns * 1e-9);
+  }
+  if (incomplete != nullptr) {
+    health_->check_values(*incomplete);
+    ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: a sample at %.9f s without angular rate or specific force "
+                      "(covariance[0] = -1): that triad's channels leave it out (counted in diagnostics)",
+                      sample.stamp_ns * 1e-9);
+  } else if (std::any_of(sample.values.begin(), sample.values.end(), [](double v) { return !std::isfinite(v); })) {
+    health_->count_non_finite();
+    ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: NaN/Inf value at %.9f s excluded (counted in diagnostics)",
+                      sample.stamp_ns * 1e-9);
+  } else if (!std::all_of(sample.values.begin(), sample.values.end(), is_usable_imu_value)) {
+    health_->count_too_large();
+    ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: a value beyond +-%.0e at %.9f s excluded from its channel "
+                      "(counted in diagnostics)", kLargestUsableImuValue, sample.stamp_ns * 1e-9);
+  }
+  output_steps_.push(sample.values.data());
+  // The engine splits at gaps and drops unordered stamps itself (streaming_options.h), also at the
+  // holes the screen leaves.
+  screen_.push(sample.stamp_ns, sample.values.data(), screened_);
+  push_screened();
+  for (; counted_impulse_events_ < screen_.event_count(); ++counted_impulse_events_) {
+    health_->count(impulse_condition_);
+    ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: knock or spike detected at %.9f s: its samples are kept "
+                      "from the curves (listed in the report, counted in diagnostics)", sample.stamp_ns * 1e-9);
+  }
+  last_header_ = header;
+}
+
+void AllanMonitorNode::push_screened() {
+  engine_->push_block(screened_.stamps_ns.data(), screened_.values.data(), screened_.size());
+  screened_.clear();
+}
+
+AllanMonitorNode::Current AllanMonitorNode::current() const {
+  Current now;
+  if (screen_.delayed_sample_count() == 0) {
+    now.warmed_up = engine_->warmed_up();
+    now.samples = engine_->input_sample_count();
+    if (now.warmed_up) now.snapshot = engine_->snapshot();
+    now.impulses = screen_.report();
+    return now;
+  }
+  allan::StreamingAllan engine = *engine_;
+  allan::ImpulseScreen screen = screen_;
+  allan::ScreenedSamples rest;
+  screen.finish(rest);
+  engine.push_block(rest.stamps_ns.data(), rest.values.data(), rest.size());
+  now.warmed_up = engine.warmed_up();
+  now.samples = engine.input_sample_count();
+  if (now.warmed_up) now.snapshot = engine.snapshot();
+  now.impulses = screen.report();
+  return now;
+}
+
+void AllanMonitorNode::publish_curves() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (finished_) return;
+  // A node never dies on its input: whatever the curves cannot be computed from is reported.
+  Current now;
+  try {
+    now = current();
+  } catch (const std::exception& error) {
+    health_->count(snapshot_failed_condition_);
+    ROS_ERROR_THROTTLE(kLogThrottle_s, "allan_monitor: no curves this time: %s (counted in diagnostics)", error.what());
+    return;
+  }
+  if (!now.warmed_up) return;
+  latest_snapshot_ = std::move(now.snapshot);
+  for (const allan::Statistic statistic : settings_.statistics) {
+    const double confidence = engine_->options().confidence;
+    gyro_publisher_.publish(to_allan_deviation(*latest_snapshot_, statistic, AllanTriad::kGyro, confidence, last_header_));
+    accel_publisher_.publish(
+        to_allan_deviation(*latest_snapshot_, statistic, AllanTriad::kAccel, confidence, last_header_));
+  }
+}
+
+void AllanMonitorNode::save_checkpoint() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (finished_) return;
+  try {
+    engine_->save_checkpoint(settings_.checkpoint_path);
+  } catch (const std::exception& error) {
+    ROS_ERROR_THROTTLE(kLogThrottle_s, "allan_monitor: checkpoint not saved: %s", error.what());
+  }
+}
+
+AllanRunDescription AllanMonitorNode::run_description(const Current& now) const {
+  AllanRunDescription run;
+  run.topic = input_subscriber_.getTopic();
+  run.input = settings_.input;
+  run.engine = engine_->options();
+  run.skipped_before_checkpoint = skipped_before_checkpoint_;
+  run.impulses = now.impulses;
+  run.output_steps = output_steps_.channels();
+  return run;
+}
+
+void AllanMonitorNode::start_identification() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (finished_ || identifying_) return;  // the previous fit is still running: skip this period
+  Current now;
+  try {
+    now = current();
+  } catch (const std::exception&) {
+    return;  // publish_curves() reports a snapshot that cannot be made; the node goes on
+  }
+  if (!now.warmed_up) return;
+  if (identify_thread_.joinable()) identify_thread_.join();  // finished: identifying_ is false
+  identifying_ = true;
+  // The fit takes seconds on a long record: off the thread that publishes the curves, on copies.
+  identify_thread_ = std::thread([this, run = run_description(now), snapshot = std::move(now.snapshot),
+                                  header = last_header_] {
+    try {
+      noise_publisher_.publish(
+          to_noise_parameters(identify_triads(run, snapshot, settings_.identify), snapshot, header));
+    } catch (const std::exception& error) {
+      ROS_WARN("allan_monitor: periodic identification: %s", error.what());
+    }
+    identifying_ = false;
+  });
+}
+
+std::string AllanMonitorNode::write_report() {
+  const Current now = current();
+  if (!now.warmed_up) {
+    throw InputError("no report yet: " + std::to_string(now.samples) + " samples on " +
+                     input_subscriber_.getTopic() + ", the warm-up needs " +
+                     std::to_string(engine_->options().warm_up_sample_count));
+  }
+  const AllanRunDescription run = run_description(now);
+  const allan::StreamingSnapshot& snapshot = now.snapshot;
+  const AllanReportFiles files =
+      write_allan_report(settings_.report_dir, run, snapshot, settings_.plot, settings_.identify);
+  if (settings_.identify.enabled) noise_publisher_.publish(to_noise_parameters(files.noise, snapshot, last_header_));
+  std::string text = "wrote " + std::to_string(files.written.size()) + " files to " + settings_.report_dir + " (" +
+                     std::to_string(now.samples) + " samples)";
+  if (!files.plot_problem.empty()) text += "; no plot: " + files.plot_problem;
+  for (const std::string& problem : files.noise.problems) text += "; identification: " + problem;
+  return text;
+}
+
+bool AllanMonitorNode::on_write_report(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  try {
+    response.message = write_report();
+    response.success = true;
+  } catch (const std::exception& error) {
+    response.message = error.what();
+    response.success = false;
+  }
+  ROS_INFO("allan_monitor: write_report: %s", response.message.c_str());
+  return true;
+}
+
+void AllanMonitorNode::finish() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  if (finished_) return;
+  finished_ = true;
+  identify_timer_.stop();
+  if (identify_thread_.joinable()) {  // the last report's noise message comes after it
+    lock.unlock();
+    identify_thread_.join();
+    lock.lock();
+  }
+  publish_timer_.stop();
+  checkpoint_timer_.stop();
+  diagnostics_timer_.stop();
+  // The samples the screen still holds belong in the last checkpoint and report.
+  screen_.finish(screened_);
+  push_screened();
+  try {
+    if (!settings_.checkpoint_path.empty()) engine_->save_checkpoint(settings_.checkpoint_path);
+    ROS_INFO("allan_monitor: on shutdown: %s", write_report().c_str());
+  } catch (const std::exception& error) {
+    ROS_WARN("allan_monitor: on shutdown: %s", error.what());
+  }
+}
+
+void AllanMonitorNode::report(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  health_->fill(status, engine_->warmed_up() ? "monitoring" : "warming up");
+  status.add("engine samples (with a resumed checkpoint's)", engine_->input_sample_count());
+  status.add("skipped: at or before the checkpoint", skipped_before_checkpoint_);
+  if (latest_snapshot_) {
+    const allan::TimingReport& timing = latest_snapshot_->timing;
+    status.add("engine tau0 [s]", timing.tau0_s);
+    status.add("interval rms deviation [s]", timing.interval_rms_deviation_s);
+    status.add("interval max deviation [s]", timing.interval_max_deviation_s);
+    status.add("engine segments split at gaps", timing.gap_count);
+  }
+  status.add("engine state [bytes]", engine_->state_size_bytes());
+  if (settings_.screen.enabled) {
+    const allan::ImpulseScreenReport screen = screen_.report();
+    status.add("impulse events (knocks, spikes)", screen.event_count);
+    status.add("impulse samples dropped", screen.dropped_sample_count);
+    if (!screen.events.empty()) {
+      status.add("last impulse event onset [s]", screen.events.back().onset_stamp_ns * 1e-9);
+    }
+  } else {
+    status.add("impulse screen", "off");
+  }
+}
+
+}  // namespace ros_io
+}  // namespace imu_lab
