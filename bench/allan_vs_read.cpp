@@ -121,24 +121,24 @@ int main(int argc, char** argv) {
   Stopwatch watch;
   const auto result = imu_lab::ros_io::run_allan_bag_pass(bag, options);
   const Cost pass = watch.elapsed();
-  imu_lab::ros_io::AllanRunDescription run;
+  imu_lab::pipeline::AllanRunDescription run;
   run.bag = bag;
   run.topic = result.topic;
   run.engine = result.engine;
   run.impulses = result.impulses;
   run.output_steps = result.output_steps;
-  imu_lab::ros_io::AllanIdentifyOptions no_identify;
+  imu_lab::pipeline::AllanIdentifyOptions no_identify;
   no_identify.enabled = false;
   watch = Stopwatch();
   imu_lab::ros_io::write_allan_report(kReportDirectory, run, result.snapshot, false, no_identify);
   const Cost files = watch.elapsed();
   watch = Stopwatch();
-  const auto fits = imu_lab::ros_io::identify_triads(run, result.snapshot, imu_lab::ros_io::AllanIdentifyOptions());
+  const auto fits = imu_lab::pipeline::identify_triads(run, result.snapshot, imu_lab::pipeline::AllanIdentifyOptions());
   const Cost fitting = watch.elapsed();
   if (fits.triads.size() != 2) throw std::runtime_error("identification failed: " + fits.problems.front());
   watch = Stopwatch();
-  imu_lab::ros_io::write_allan_noise_report(kReportDirectory, run, result.snapshot,
-                                            imu_lab::ros_io::AllanIdentifyOptions());
+  imu_lab::pipeline::write_allan_noise_report(kReportDirectory, run, result.snapshot,
+                                            imu_lab::pipeline::AllanIdentifyOptions());
   const Cost identification = watch.elapsed();
 
   const std::string tool_command = allan_tool_path() + " " + bag + " --topic /imu/raw --exact-m " +

@@ -3,7 +3,7 @@
 #include <cmath>
 
 namespace imu_lab {
-namespace ros_io {
+namespace nav {
 
 LocalEnuFrame::LocalEnuFrame(const nav::EarthModelConfig& earth, double origin_latitude_rad,
                              double origin_longitude_rad, double origin_height_m) {
@@ -37,5 +37,5 @@ Eigen::Vector3d LocalEnuFrame::enu_m(double latitude_rad, double longitude_rad, 
   return earth_centred_to_enu_ * (earth_centred_m(latitude_rad, longitude_rad, height_m) - origin_earth_centred_m_);
 }
 
-}  // namespace ros_io
+}  // namespace nav
 }  // namespace imu_lab

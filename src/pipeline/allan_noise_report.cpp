@@ -13,7 +13,7 @@
 #include "imu_lab/pipeline/allan_samples.h"
 
 namespace imu_lab {
-namespace ros_io {
+namespace pipeline {
 namespace {
 
 using identify::SensorKind;
@@ -176,5 +176,5 @@ std::string format_identification_summary(const AllanIdentifyOptions& options, c
   return std::string(out.c_str()) + "\n";
 }
 
-}  // namespace ros_io
+}  // namespace pipeline
 }  // namespace imu_lab

@@ -3,7 +3,7 @@
 #include "imu_lab/common/config_error.h"
 
 namespace imu_lab {
-namespace ros_io {
+namespace pipeline {
 namespace {
 
 AllanSample make_sample(std::int64_t stamp_ns, const Eigen::Vector3d& gyro, const Eigen::Vector3d& accel) {
@@ -48,5 +48,5 @@ AllanSample to_allan_sample(const io::IncrementRecord& record) {
   return make_sample(record.stamp_ns, record.delta_angle_rad, record.delta_velocity_m_s);
 }
 
-}  // namespace ros_io
+}  // namespace pipeline
 }  // namespace imu_lab

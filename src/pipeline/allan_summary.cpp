@@ -7,7 +7,7 @@
 #include <cstdio>
 
 namespace imu_lab {
-namespace ros_io {
+namespace pipeline {
 namespace {
 
 // The summary lists this many irregular stamps; the counts cover all of them.
@@ -188,11 +188,11 @@ std::string format_allan_summary(const AllanRunDescription& run, const allan::St
   return std::string(out.c_str()) + "\n";
 }
 
-}  // namespace ros_io
+}  // namespace pipeline
 }  // namespace imu_lab
 
 namespace imu_lab {
-namespace ros_io {
+namespace pipeline {
 
 std::string format_impulse_events(const std::string& prefix, const allan::ImpulseScreenReport& screen) {
   if (!screen.enabled) return prefix + "impulse screen off: knocks and spikes, if any, are in the curves\n";
@@ -241,5 +241,5 @@ std::string format_output_steps(AllanInput input, const std::vector<allan::Chann
   return text;
 }
 
-}  // namespace ros_io
+}  // namespace pipeline
 }  // namespace imu_lab

@@ -9,7 +9,7 @@
 #include "imu_lab/common/config_error.h"
 
 namespace imu_lab {
-namespace ros_io {
+namespace pipeline {
 namespace {
 
 constexpr std::int64_t kNanosecondsPerSecond = 1000000000;
@@ -114,5 +114,5 @@ std::vector<NavigationSolution> read_trajectory_csv(const std::string& path) {
   return solutions;
 }
 
-}  // namespace ros_io
+}  // namespace pipeline
 }  // namespace imu_lab

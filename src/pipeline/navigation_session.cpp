@@ -9,7 +9,7 @@
 #include "imu_lab/nav/alignment_error_budget.h"
 
 namespace imu_lab {
-namespace ros_io {
+namespace pipeline {
 namespace {
 
 constexpr double kSecondsPerNanosecond = 1e-9;
@@ -228,5 +228,5 @@ void NavigationSession::start_navigation(std::int64_t stamp_ns, AlignmentResult 
   new_solution_ = true;
 }
 
-}  // namespace ros_io
+}  // namespace pipeline
 }  // namespace imu_lab

@@ -7,7 +7,7 @@
 #include "imu_lab/common/site_limits.h"
 
 namespace imu_lab {
-namespace ros_io {
+namespace pipeline {
 
 nav::HeadingSource parse_heading_source(const std::string& key, const std::string& value) {
   if (value == "gyrocompass") return nav::HeadingSource::kGyrocompass;
@@ -96,5 +96,5 @@ Eigen::Vector3d roll_pitch_yaw_from_quaternion(const Eigen::Quaterniond& q_body_
   return {roll, pitch, yaw};
 }
 
-}  // namespace ros_io
+}  // namespace pipeline
 }  // namespace imu_lab

@@ -3,9 +3,9 @@
 #include "imu_lab/nav/rotation.h"
 
 namespace imu_lab {
-namespace ros_io {
+namespace pipeline {
 
-NavigationSolution make_solution(const NavigationSession& session, const LocalEnuFrame& world) {
+NavigationSolution make_solution(const NavigationSession& session, const nav::LocalEnuFrame& world) {
   const nav::NavState& state = session.state();
   NavigationSolution solution;
   solution.stamp_ns = session.stamp_ns();
@@ -22,7 +22,7 @@ NavigationSolution make_solution(const NavigationSession& session, const LocalEn
 }
 
 NavigationError navigation_error(const NavigationSolution& solution, const io::TruthRecord& truth,
-                                 const LocalEnuFrame& world, std::int64_t alignment_stamp_ns) {
+                                 const nav::LocalEnuFrame& world, std::int64_t alignment_stamp_ns) {
   NavigationError error;
   error.stamp_ns = solution.stamp_ns;
   error.time_since_alignment_s = static_cast<double>(solution.stamp_ns - alignment_stamp_ns) * 1e-9;
@@ -36,5 +36,5 @@ NavigationError navigation_error(const NavigationSolution& solution, const io::T
   return error;
 }
 
-}  // namespace ros_io
+}  // namespace pipeline
 }  // namespace imu_lab

@@ -5,7 +5,7 @@
 #include "imu_lab/common/format_number.h"
 
 namespace imu_lab {
-namespace ros_io {
+namespace pipeline {
 namespace {
 
 // Four significant digits: this table is read by people; the YAML keeps full precision.
@@ -76,5 +76,5 @@ std::string format_noise_table(const std::vector<identify::TriadFit>& triads) {
   return table;
 }
 
-}  // namespace ros_io
+}  // namespace pipeline
 }  // namespace imu_lab

@@ -49,15 +49,15 @@ void print_summary(const imu_lab::ros_io::AllanBagPassResult& result, const imu_
                   "leave them out\n", count, result.message_count, triad, field);
     }
   }
-  std::printf("%s", imu_lab::ros_io::format_impulse_events("allan: ", result.impulses).c_str());
+  std::printf("%s", imu_lab::pipeline::format_impulse_events("allan: ", result.impulses).c_str());
   std::printf("allan: output steps (LSB; none: not quantised): %s\n",
-              imu_lab::ros_io::format_output_steps(result.input, result.output_steps).c_str());
+              imu_lab::pipeline::format_output_steps(result.input, result.output_steps).c_str());
   for (const auto& path : files.written) std::printf("allan: wrote %s\n", path.c_str());
   if (!files.plot_problem.empty()) std::fprintf(stderr, "allan: warning: %s\n", files.plot_problem.c_str());
   for (const auto& problem : files.noise.problems) std::fprintf(stderr, "allan: identification: %s\n", problem.c_str());
   if (!files.noise.triads.empty()) {
     std::printf("allan: identified noise (noise.yaml has SI values, bounds and warnings):\n%s",
-                imu_lab::ros_io::format_noise_table(files.noise.triads).c_str());
+                imu_lab::pipeline::format_noise_table(files.noise.triads).c_str());
   }
 }
 
@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
   bool progress = false;
   bool no_plot = false;
   bool no_identify = false;
-  imu_lab::ros_io::AllanIdentifyOptions identify;
+  imu_lab::pipeline::AllanIdentifyOptions identify;
   imu_lab::ros_io::AllanBagPassOptions options;
   auto& engine = options.engine;
   imu_lab::ros_io::add_recording_arguments(app, recording, "bag to read", true);
@@ -110,10 +110,10 @@ int main(int argc, char** argv) {
                  "sigmas from a parametric bootstrap with N replicas per axis (slow; 0 = the fit's moment covariance)")
       ->capture_default_str()
       ->check([](const std::string& text) {
-        return imu_lab::ros_io::bootstrap_replicas_problem(std::atoi(text.c_str()));
+        return imu_lab::pipeline::bootstrap_replicas_problem(std::atoi(text.c_str()));
       });
   if (const auto status = imu_lab::parse_tool_options("allan", app, argc, argv)) return *status;
-  options.input = imu_lab::ros_io::parse_allan_input("--input", input);
+  options.input = imu_lab::pipeline::parse_allan_input("--input", input);
   identify.enabled = !no_identify;
   options.screen.enabled = !no_impulse_screen;
   engine.stamp_policy = on_gap == "stop" ? imu_lab::allan::StampPolicy::kStop : imu_lab::allan::StampPolicy::kSplitAndPool;
@@ -125,7 +125,7 @@ int main(int argc, char** argv) {
     }
     options.on_progress = imu_lab::terminal_progress("allan", "messages", progress);
     const auto result = imu_lab::ros_io::run_allan_bag_pass(recording.recording(), options);
-    imu_lab::ros_io::AllanRunDescription run;
+    imu_lab::pipeline::AllanRunDescription run;
     run.bag = result.bag_path;
     run.files = result.files;
     run.window = result.window;

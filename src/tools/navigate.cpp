@@ -28,7 +28,7 @@
 
 namespace {
 
-using imu_lab::ros_io::kDegToRad;
+using imu_lab::pipeline::kDegToRad;
 constexpr double kArcsecPerRad = 180.0 / M_PI * 3600.0;
 constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
 
@@ -40,11 +40,11 @@ struct CommandLine {
   double alignment_duration_s = 300.0, initial_roll_deg = 0.0, initial_pitch_deg = 0.0, initial_yaw_deg = 0.0;
   double latitude_deg = kUnset, longitude_deg = kUnset, height_m = kUnset, reference_height_m = kUnset;
   bool no_align = false, skip_bad_samples = false, no_coning_correction = false, no_sculling_correction = false;
-  imu_lab::ros_io::ExpectedSensorErrors expected;
+  imu_lab::pipeline::ExpectedSensorErrors expected;
   // Options whose absence means something (take the truth's value, predict nothing).
   std::vector<CLI::Option*> attitude_options, expected_options;
   imu_lab::ros_io::BagNavigationOptions bag;
-  imu_lab::ros_io::NavigationSettings settings;
+  imu_lab::pipeline::NavigationSettings settings;
   std::string initial_state_source;  // printed: where the start state came from
 };
 
@@ -125,6 +125,7 @@ void add_options(CLI::App& app, CommandLine& c) {
 // Command line -> settings; the start state falls back to the bag's truth at the first sample.
 void fill_settings(CommandLine& c) {
   using namespace imu_lab::ros_io;
+  using namespace imu_lab::pipeline;
   c.bag.input_type = parse_input_type("--input-type", c.input_type);
   NavigationSettings& s = c.settings;
   s.align = !c.no_align;
@@ -176,7 +177,7 @@ void fill_settings(CommandLine& c) {
 }
 
 // The alignment's predicted 1-sigma error as far as it can be predicted (alignment_error_budget.h).
-std::string predicted_error_text(const imu_lab::ros_io::AlignmentResult& a, bool expected_given) {
+std::string predicted_error_text(const imu_lab::pipeline::AlignmentResult& a, bool expected_given) {
   const Eigen::Vector3d arcsec = a.predicted_error_sigma_rad * kArcsecPerRad;
   if (a.method == "given_attitude") return "no predicted error (attitude given, not estimated)";
   if (!expected_given) {
@@ -196,7 +197,7 @@ void print_summary(const CommandLine& c, const imu_lab::ros_io::BagNavigationRes
               static_cast<unsigned long long>(n.gaps));
   const auto& a = *result.alignment;
   std::printf("alignment (%s, %.1f s, ends %s): roll %.6f pitch %.6f yaw %.6f deg; %s\n", a.method.c_str(),
-              a.duration_s, imu_lab::ros_io::format_stamp(a.stamp_ns).c_str(), a.roll_pitch_yaw_rad.x() / kDegToRad,
+              a.duration_s, imu_lab::pipeline::format_stamp(a.stamp_ns).c_str(), a.roll_pitch_yaw_rad.x() / kDegToRad,
               a.roll_pitch_yaw_rad.y() / kDegToRad, a.roll_pitch_yaw_rad.z() / kDegToRad,
               predicted_error_text(a, c.settings.expected_errors.has_value()).c_str());
   if (!c.initial_state_source.empty()) {
@@ -206,7 +207,7 @@ void print_summary(const CommandLine& c, const imu_lab::ros_io::BagNavigationRes
   }
   const auto& last = result.solutions.back();
   std::printf("final (%s): lat %.9f lon %.9f deg, height %.3f m, ENU %.3f %.3f %.3f m\n",
-              imu_lab::ros_io::format_stamp(last.stamp_ns).c_str(), last.latitude_rad / kDegToRad,
+              imu_lab::pipeline::format_stamp(last.stamp_ns).c_str(), last.latitude_rad / kDegToRad,
               last.longitude_rad / kDegToRad, last.height_m, last.position_enu_m.x(), last.position_enu_m.y(),
               last.position_enu_m.z());
   if (result.errors.empty()) return;
@@ -258,11 +259,11 @@ int main(int argc, char** argv) {
     print_summary(c, result);
     // Trajectory, errors and plot are one set: all new, or (on any failure) all as they were.
     imu_lab::OutputSet outputs;
-    imu_lab::ros_io::write_trajectory_csv(outputs.stage(c.out_path), result.solutions);
+    imu_lab::pipeline::write_trajectory_csv(outputs.stage(c.out_path), result.solutions);
     const std::string errors_path = c.errors_path.empty() ? default_errors_path(c.out_path) : c.errors_path;
     if (result.has_truth) {
       const std::string staged_errors = outputs.stage(errors_path);
-      imu_lab::ros_io::write_error_csv(staged_errors, result.errors);
+      imu_lab::pipeline::write_error_csv(staged_errors, result.errors);
       if (!c.plot_path.empty()) plot(staged_errors, outputs.stage(c.plot_path), c.plot_path);
     } else {
       outputs.remove_at_commit(errors_path);  // an earlier run's, which would not belong to this trajectory

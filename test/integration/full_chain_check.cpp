@@ -126,7 +126,7 @@ struct RunError {
 
 RunError horizontal_error(const std::map<std::int64_t, Eigen::Vector3d>& positions_enu_m,
                           const std::map<std::int64_t, imu_lab::io::TruthRecord>& truth,
-                          const imu_lab::ros_io::LocalEnuFrame& world) {
+                          const imu_lab::nav::LocalEnuFrame& world) {
   RunError error;
   for (const auto& [stamp_ns, position] : positions_enu_m) {
     const auto found = truth.find(stamp_ns);
@@ -260,10 +260,10 @@ TEST(FullChain, CorrectedNavigationIsTenTimesBetterAndItsNoiseIsTheProfiles) {
   run_or_fail("rosrun imu_lab navigate " + navigation_bag + " --topic /imu/raw " + private_string("navigate_arguments") +
               " --out " + raw_trajectory + log);
   std::map<std::int64_t, Eigen::Vector3d> raw_positions_enu_m;
-  for (const auto& solution : imu_lab::ros_io::read_trajectory_csv(raw_trajectory)) {
+  for (const auto& solution : imu_lab::pipeline::read_trajectory_csv(raw_trajectory)) {
     if (chain_positions_enu_m.count(solution.stamp_ns)) raw_positions_enu_m[solution.stamp_ns] = solution.position_enu_m;
   }
-  const imu_lab::ros_io::LocalEnuFrame world(imu_lab::nav::EarthModelConfig{}, private_double("latitude_deg") * kDegToRad,
+  const imu_lab::nav::LocalEnuFrame world(imu_lab::nav::EarthModelConfig{}, private_double("latitude_deg") * kDegToRad,
                                              private_double("longitude_deg") * kDegToRad, private_double("height_m"));
   const RunError chain_error = horizontal_error(chain_positions_enu_m, truth, world);
   const RunError raw_error = horizontal_error(raw_positions_enu_m, truth, world);

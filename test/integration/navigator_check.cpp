@@ -45,7 +45,7 @@ TEST(StrapdownNavigatorNode, PublishesTheNavigateToolsSolutionAndTheTransform) {
               "/emulate.log 2>&1");
   run_or_fail("rosrun imu_lab navigate " + bag + " " + private_string("navigate_arguments") + " --out " +
               reference_csv + " > " + directory + "/navigate.log 2>&1");
-  const auto reference = imu_lab::ros_io::read_trajectory_csv(reference_csv);
+  const auto reference = imu_lab::pipeline::read_trajectory_csv(reference_csv);
   ASSERT_GT(reference.size(), 100u);
 
   ros::NodeHandle node;
@@ -84,7 +84,7 @@ TEST(StrapdownNavigatorNode, PublishesTheNavigateToolsSolutionAndTheTransform) {
   double worst_attitude_rad = 0.0;
   for (const auto& expected : reference) {
     const auto found = odometry.find(imu_lab::ros_io::to_ros_time(expected.stamp_ns));
-    ASSERT_NE(found, odometry.end()) << "no odometry at " << imu_lab::ros_io::format_stamp(expected.stamp_ns);
+    ASSERT_NE(found, odometry.end()) << "no odometry at " << imu_lab::pipeline::format_stamp(expected.stamp_ns);
     const auto& pose = found->second.pose.pose;
     const Eigen::Vector3d position(pose.position.x, pose.position.y, pose.position.z);
     const Eigen::Quaterniond q(pose.orientation.w, pose.orientation.x, pose.orientation.y, pose.orientation.z);
@@ -116,7 +116,7 @@ TEST(StrapdownNavigatorNode, PublishesTheNavigateToolsSolutionAndTheTransform) {
 
   double v0_m_s = 0.0;
   if (!ros::param::get("~single_channel_velocity_east_m_s", v0_m_s)) return;
-  const double w0 = imu_lab::nav::EarthModel(imu_lab::ros_io::parse_earth_model("sphere", "sphere")).schulerRate_rad_s();
+  const double w0 = imu_lab::nav::EarthModel(imu_lab::pipeline::parse_earth_model("sphere", "sphere")).schulerRate_rad_s();
   const double peak_m = std::abs(v0_m_s) / w0;
   const ros::Time start = odometry.begin()->first;
   double worst_m = 0.0, last_t = 0.0;

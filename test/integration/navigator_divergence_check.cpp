@@ -109,7 +109,7 @@ TEST(NavigatorDivergence, StopsReportsAndStartsAgainOnlyWhenTold) {
 
   feeder.feed(1, 1e50);
   const std::int64_t absurd_ns = feeder.stamp_ns();
-  const std::string where = imu_lab::ros_io::format_stamp(absurd_ns);
+  const std::string where = imu_lab::pipeline::format_stamp(absurd_ns);
   ASSERT_TRUE(feeder.feed_until([&] {
     const DiagnosticStatus& s = feeder.last_status();
     return s.level == DiagnosticStatus::ERROR && s.message.find("navigation stopped") != std::string::npos &&

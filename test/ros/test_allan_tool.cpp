@@ -22,7 +22,7 @@
 namespace {
 
 using imu_lab::allan::Statistic;
-using imu_lab::ros_io::AllanInput;
+using imu_lab::pipeline::AllanInput;
 using imu_lab::test_support::file_exists;
 using imu_lab::test_support::read_allan_summary;
 using imu_lab::test_support::read_file;
@@ -44,15 +44,15 @@ class AllanTool : public ::testing::Test {
   // The engine fed what the bag reader gives, with the tool's default options.
   static imu_lab::allan::StreamingSnapshot engine_on_bag(AllanInput input, const std::string& topic) {
     imu_lab::allan::StreamingOptions options;
-    options.input_kind = imu_lab::ros_io::engine_input_kind(input);
+    options.input_kind = imu_lab::pipeline::engine_input_kind(input);
     imu_lab::allan::StreamingAllan engine(options);
-    const auto push = [&](const imu_lab::ros_io::AllanSample& sample) {
+    const auto push = [&](const imu_lab::pipeline::AllanSample& sample) {
       engine.push(sample.stamp_ns, sample.values.data(), sample.values.size());
     };
     if (input == AllanInput::kRate) {
-      imu_lab::ros_io::for_each_imu(bag_, topic, [&](const auto& record) { push(imu_lab::ros_io::to_allan_sample(record)); });
+      imu_lab::ros_io::for_each_imu(bag_, topic, [&](const auto& record) { push(imu_lab::pipeline::to_allan_sample(record)); });
     } else {
-      imu_lab::ros_io::for_each_increment(bag_, topic, [&](const auto& record) { push(imu_lab::ros_io::to_allan_sample(record)); });
+      imu_lab::ros_io::for_each_increment(bag_, topic, [&](const auto& record) { push(imu_lab::pipeline::to_allan_sample(record)); });
     }
     return engine.snapshot();
   }

@@ -29,7 +29,7 @@ struct ToolRun {
   CommandResult result;
 };
 
-ToolRun run_allan_on(const std::vector<imu_lab::ros_io::AllanSample>& samples, const std::string& options = "") {
+ToolRun run_allan_on(const std::vector<imu_lab::pipeline::AllanSample>& samples, const std::string& options = "") {
   ToolRun run;
   const std::string directory = scratch_directory();
   run.bag = directory + "/input.bag";

@@ -106,7 +106,7 @@ TEST_F(NavigateTool, AlignmentAndNavigationErrorsStayWithinTheNavCorePrediction)
   const auto run = run_tool("navigate", bag() + " --out " + out + " --every-s 1 --alignment-duration-s 300");
   ASSERT_EQ(run.exit_code, 0) << run.output;
   std::printf("%s", run.output.c_str());
-  const auto trajectory = imu_lab::ros_io::read_trajectory_csv(out);
+  const auto trajectory = imu_lab::pipeline::read_trajectory_csv(out);
   const auto errors = read_error_csv(*directory_ + "/trajectory_errors.csv");
   ASSERT_EQ(errors.size(), trajectory.size());
   ASSERT_NEAR(errors.back().at("time_since_alignment_s"), kNavigationS, 1.5);
@@ -241,7 +241,7 @@ TEST_F(NavigateTool, RefusesABagThatMakesTheStateUnusable) {
   const auto run = run_tool("navigate", absurd + " --alignment-duration-s 10 --out " + out);
   EXPECT_EQ(run.exit_code, 1) << run.output;
   EXPECT_NE(run.output.find("absurd.bag"), std::string::npos) << run.output;
-  EXPECT_NE(run.output.find("unusable at stamp " + imu_lab::ros_io::format_stamp(stamp_ns)), std::string::npos)
+  EXPECT_NE(run.output.find("unusable at stamp " + imu_lab::pipeline::format_stamp(stamp_ns)), std::string::npos)
       << run.output;
   EXPECT_FALSE(imu_lab::test_support::file_exists(out));
   EXPECT_FALSE(imu_lab::test_support::file_exists(*directory_ + "/absurd_errors.csv"));
@@ -340,7 +340,7 @@ TEST(NavigateToolSchuler, InitialVelocityErrorGivesTheSingleChannelSine) {
                                                   "--every-s 10 --out " + out);
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const auto errors = read_error_csv(directory + "/trajectory_errors.csv");
-  const imu_lab::nav::EarthModelConfig sphere = imu_lab::ros_io::parse_earth_model("sphere", "sphere");
+  const imu_lab::nav::EarthModelConfig sphere = imu_lab::pipeline::parse_earth_model("sphere", "sphere");
   const double w0 = imu_lab::nav::EarthModel(sphere).schulerRate_rad_s();
   const double v0_m_s = 1.0, peak_m = v0_m_s / w0;
   ASSERT_GE(errors.size(), 540u);

@@ -18,7 +18,7 @@
 
 namespace {
 
-using imu_lab::ros_io::AllanSample;
+using imu_lab::pipeline::AllanSample;
 using imu_lab::ros_io::BagRecording;
 using imu_lab::io::ImuRecord;
 using imu_lab::test_support::read_allan_summary;

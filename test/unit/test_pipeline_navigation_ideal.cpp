@@ -24,8 +24,8 @@
 
 namespace {
 
-using imu_lab::ros_io::NavigationSession;
-using imu_lab::ros_io::SampleOutcome;
+using imu_lab::pipeline::NavigationSession;
+using imu_lab::pipeline::SampleOutcome;
 
 constexpr double kRateHz = 200.0;
 constexpr double kPositionBound_m = 0.05;  // the requirement
@@ -48,9 +48,9 @@ imu_lab::io::TruthRecord truth_record(const imu_lab::emulator::TruthSample& trut
 }
 
 // The navigate tool's settings for --no-align on a bag with truth: everything from the first sample.
-imu_lab::ros_io::NavigationSettings settings_from_truth(const imu_lab::emulator::ScenarioConfig& scenario,
+imu_lab::pipeline::NavigationSettings settings_from_truth(const imu_lab::emulator::ScenarioConfig& scenario,
                                                         const imu_lab::emulator::TruthSample& truth) {
-  imu_lab::ros_io::NavigationSettings settings;
+  imu_lab::pipeline::NavigationSettings settings;
   settings.align = false;
   settings.initial_attitude_body_to_enu = truth.attitude_body_to_enu;
   settings.initial_velocity_enu_m_s = truth.velocity_enu_m_s;
@@ -80,7 +80,7 @@ TEST_P(NavigateIdealImu, StartedFromTheTruthEndsWithin5cmWithEitherInput) {
   const imu_lab::emulator::ImuSample first = emulator.next();
   const auto settings = settings_from_truth(scenario, first.truth);
   NavigationSession rates(settings), increments(settings);
-  const imu_lab::ros_io::LocalEnuFrame world(settings.navigator.earth, settings.latitude_rad, settings.longitude_rad,
+  const imu_lab::nav::LocalEnuFrame world(settings.navigator.earth, settings.latitude_rad, settings.longitude_rad,
                                              settings.height_m);
   const auto to_increment = [&](const imu_lab::emulator::ImuSample& s) {
     imu_lab::nav::ImuIncrement increment;
@@ -96,7 +96,7 @@ TEST_P(NavigateIdealImu, StartedFromTheTruthEndsWithin5cmWithEitherInput) {
   RunErrors rate_errors, increment_errors;
   const auto track = [&](const NavigationSession& session, const imu_lab::io::TruthRecord& truth, RunErrors& errors) {
     ASSERT_EQ(session.stamp_ns(), truth.stamp_ns);
-    const auto error = imu_lab::ros_io::navigation_error(imu_lab::ros_io::make_solution(session, world), truth, world,
+    const auto error = imu_lab::pipeline::navigation_error(imu_lab::pipeline::make_solution(session, world), truth, world,
                                                          session.alignment()->stamp_ns);
     errors.final_m = error.position_error_enu_m.norm();
     errors.worst_m = std::max(errors.worst_m, errors.final_m);

@@ -15,9 +15,9 @@
 
 namespace {
 
-using imu_lab::ros_io::NavigationSession;
-using imu_lab::ros_io::NavigationSettings;
-using imu_lab::ros_io::SampleOutcome;
+using imu_lab::pipeline::NavigationSession;
+using imu_lab::pipeline::NavigationSettings;
+using imu_lab::pipeline::SampleOutcome;
 
 constexpr std::int64_t kStart_ns = 1000000000LL * 1000000000LL;  // 1e9 s in nanoseconds
 constexpr std::int64_t kInterval_ns = 5000000;                                 // 200 Hz
@@ -127,7 +127,7 @@ TEST(NavigationSettingsCheck, ASiteOrAnAttitudeNoSensorCanHaveIsRefusedByKey) {
     NavigationSettings s = settings();
     change(s);
     try {
-      imu_lab::ros_io::validate(s, "test");
+      imu_lab::pipeline::validate(s, "test");
     } catch (const imu_lab::ConfigError& error) {
       return error.what();
     }
@@ -227,7 +227,7 @@ TEST(NavigateSession, PredictsTheAlignmentErrorOnlyFromGivenExpectedErrors) {
   };
   EXPECT_TRUE(aligned(settings()).array().isNaN().all());
   NavigationSettings s = settings();
-  s.expected_errors = imu_lab::ros_io::ExpectedSensorErrors{};
+  s.expected_errors = imu_lab::pipeline::ExpectedSensorErrors{};
   s.expected_errors->accel_bias_m_s2 = 1e-3;  // sigma_E = sigma_N = b / g (alignment_error_budget.h)
   const Eigen::Vector3d sigma = aligned(s);
   EXPECT_NEAR(sigma.x(), 1e-3 / 9.806, 1e-3 / 9.806 * 0.01);

@@ -11,7 +11,6 @@
 #include <optional>
 
 namespace imu_lab {
-namespace ros_io {
 
 template <class Item>
 class BoundedQueue {
@@ -55,5 +54,4 @@ class BoundedQueue {
   bool closed_ = false;
 };
 
-}  // namespace ros_io
 }  // namespace imu_lab

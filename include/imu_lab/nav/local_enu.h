@@ -9,7 +9,7 @@
 #include "imu_lab/nav/earth_model.h"
 
 namespace imu_lab {
-namespace ros_io {
+namespace nav {
 
 class LocalEnuFrame {
  public:
@@ -28,5 +28,5 @@ class LocalEnuFrame {
   Eigen::Matrix3d earth_centred_to_enu_ = Eigen::Matrix3d::Identity();
 };
 
-}  // namespace ros_io
+}  // namespace nav
 }  // namespace imu_lab

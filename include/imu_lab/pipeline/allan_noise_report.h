@@ -17,7 +17,7 @@
 #include "imu_lab/pipeline/allan_summary.h"
 
 namespace imu_lab {
-namespace ros_io {
+namespace pipeline {
 
 struct AllanIdentifyOptions {
   bool enabled = true;
@@ -58,5 +58,5 @@ AllanNoiseReport write_allan_noise_report(const std::string& directory, const Al
 // files and problems.
 std::string format_identification_summary(const AllanIdentifyOptions& options, const AllanNoiseReport& report);
 
-}  // namespace ros_io
+}  // namespace pipeline
 }  // namespace imu_lab

@@ -11,7 +11,7 @@
 #include "imu_lab/io/imu_records.h"
 
 namespace imu_lab {
-namespace ros_io {
+namespace pipeline {
 
 enum class AllanInput {
   kRate,       // sensor_msgs/Imu: angular velocity [rad/s], linear acceleration [m/s^2]
@@ -41,5 +41,5 @@ struct AllanSample {
 AllanSample to_allan_sample(const io::ImuRecord& record);
 AllanSample to_allan_sample(const io::IncrementRecord& record);
 
-}  // namespace ros_io
+}  // namespace pipeline
 }  // namespace imu_lab

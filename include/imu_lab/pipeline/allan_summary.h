@@ -14,7 +14,7 @@
 #include "imu_lab/pipeline/allan_samples.h"
 
 namespace imu_lab {
-namespace ros_io {
+namespace pipeline {
 
 struct AllanRunDescription {
   std::string bag;    // the bag read; empty for a live topic
@@ -40,5 +40,5 @@ std::string format_output_steps(AllanInput input, const std::vector<allan::Chann
 // The smallest deviation of a curve (nullptr for an empty curve).
 const allan::StabilityPoint* minimum_point(const std::vector<allan::StabilityPoint>& curve);
 
-}  // namespace ros_io
+}  // namespace pipeline
 }  // namespace imu_lab

@@ -18,7 +18,7 @@
 #include "imu_lab/pipeline/navigation_solution.h"
 
 namespace imu_lab {
-namespace ros_io {
+namespace pipeline {
 
 std::string format_stamp(std::int64_t stamp_ns);
 // Inverse of format_stamp; throws InputError for text that is not a stamp.
@@ -31,5 +31,5 @@ void write_error_csv(const std::string& path, const std::vector<NavigationError>
 // stay zero). Throws InputError naming the file and line on anything malformed.
 std::vector<NavigationSolution> read_trajectory_csv(const std::string& path);
 
-}  // namespace ros_io
+}  // namespace pipeline
 }  // namespace imu_lab

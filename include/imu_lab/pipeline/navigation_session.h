@@ -36,7 +36,7 @@
 #include "imu_lab/pipeline/navigation_settings.h"
 
 namespace imu_lab {
-namespace ros_io {
+namespace pipeline {
 
 enum class SampleOutcome {
   kStarted,           // first sample: only starts the first interval
@@ -145,5 +145,5 @@ class NavigationSession {
   Eigen::Vector3d body_rate_wrt_enu_rad_s_ = Eigen::Vector3d::Zero();
 };
 
-}  // namespace ros_io
+}  // namespace pipeline
 }  // namespace imu_lab

@@ -13,7 +13,7 @@
 #include "imu_lab/nav/static_alignment.h"
 
 namespace imu_lab {
-namespace ros_io {
+namespace pipeline {
 
 constexpr double kDegToRad = M_PI / 180.0;
 
@@ -66,5 +66,5 @@ void validate(const NavigationSettings& settings, const std::string& source);
 // emulator::attitude_from_roll_pitch_yaw (pitch in [-pi/2, pi/2], yaw from east towards north).
 Eigen::Vector3d roll_pitch_yaw_from_quaternion(const Eigen::Quaterniond& q_body_to_enu);
 
-}  // namespace ros_io
+}  // namespace pipeline
 }  // namespace imu_lab

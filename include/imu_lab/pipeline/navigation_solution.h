@@ -12,7 +12,7 @@
 #include "imu_lab/pipeline/navigation_session.h"
 
 namespace imu_lab {
-namespace ros_io {
+namespace pipeline {
 
 struct NavigationSolution {
   std::int64_t stamp_ns = 0;  // header stamp of the sample that produced it
@@ -29,7 +29,7 @@ struct NavigationSolution {
 };
 
 // The session's current solution (call while session.navigating()).
-NavigationSolution make_solution(const NavigationSession& session, const LocalEnuFrame& world);
+NavigationSolution make_solution(const NavigationSession& session, const nav::LocalEnuFrame& world);
 
 struct NavigationError {
   std::int64_t stamp_ns = 0;
@@ -43,7 +43,7 @@ struct NavigationError {
 };
 
 NavigationError navigation_error(const NavigationSolution& solution, const io::TruthRecord& truth,
-                                 const LocalEnuFrame& world, std::int64_t alignment_stamp_ns);
+                                 const nav::LocalEnuFrame& world, std::int64_t alignment_stamp_ns);
 
-}  // namespace ros_io
+}  // namespace pipeline
 }  // namespace imu_lab

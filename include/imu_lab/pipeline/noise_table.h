@@ -10,12 +10,12 @@
 #include "imu_lab/identify/units.h"
 
 namespace imu_lab {
-namespace ros_io {
+namespace pipeline {
 
 // The unit a term's amplitude is shown in: the first field unit after the SI one (SI if none).
 identify::UnitScale display_unit(identify::SensorKind sensor, identify::TermKind kind);
 
 std::string format_noise_table(const std::vector<identify::TriadFit>& triads);
 
-}  // namespace ros_io
+}  // namespace pipeline
 }  // namespace imu_lab

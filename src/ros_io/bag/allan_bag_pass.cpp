@@ -18,30 +18,30 @@ constexpr std::size_t kQueuedBatches = 8;
 // tau0 needs a few intervals; below this a bag is refused rather than analysed on noise.
 constexpr std::size_t kMinimumMessages = 16;
 
-using SampleBatch = std::vector<AllanSample>;
+using SampleBatch = std::vector<pipeline::AllanSample>;
 
 // Thrown inside the reader's callback to stop the bag iteration when the consumer gave up.
 struct ReadingCancelled {};
 
-void read_batches(OpenBag& bag, const std::string& topic, AllanInput input, BoundedQueue<SampleBatch>& queue,
+void read_batches(OpenBag& bag, const std::string& topic, pipeline::AllanInput input, BoundedQueue<SampleBatch>& queue,
                   AllanBagPassResult& result) {
   SampleBatch batch;
   batch.reserve(kBatchSamples);
-  const auto add = [&](const AllanSample& sample) {
+  const auto add = [&](const pipeline::AllanSample& sample) {
     batch.push_back(sample);
     if (batch.size() < kBatchSamples) return;
     if (!queue.push(std::move(batch))) throw ReadingCancelled{};
     batch = SampleBatch();
     batch.reserve(kBatchSamples);
   };
-  if (input == AllanInput::kRate) {
+  if (input == pipeline::AllanInput::kRate) {
     bag.for_each_imu(topic, [&](const ImuRecord& record) {
       result.messages_without_angular_rate += record.has_angular_rate ? 0 : 1;
       result.messages_without_specific_force += record.has_specific_force ? 0 : 1;
-      add(to_allan_sample(record));
+      add(pipeline::to_allan_sample(record));
     });
   } else {
-    bag.for_each_increment(topic, [&](const IncrementRecord& record) { add(to_allan_sample(record)); });
+    bag.for_each_increment(topic, [&](const IncrementRecord& record) { add(pipeline::to_allan_sample(record)); });
   }
   if (!batch.empty()) queue.push(std::move(batch));
 }
@@ -65,15 +65,15 @@ AllanBagPassResult run_allan_bag_pass(const BagRecording& recording, const Allan
                      std::to_string(kMinimumMessages) + " (and thousands for useful curves)");
   }
   result.engine = options.engine;
-  result.engine.channel_count = kAllanChannelCount;
-  result.engine.input_kind = engine_input_kind(options.input);
+  result.engine.channel_count = pipeline::kAllanChannelCount;
+  result.engine.input_kind = pipeline::engine_input_kind(options.input);
   result.engine.warm_up_sample_count = std::min(result.engine.warm_up_sample_count, total);
   allan::StreamingAllan engine(result.engine);
   allan::ImpulseScreenOptions screen_options = options.screen;
-  screen_options.channel_count = kAllanChannelCount;
+  screen_options.channel_count = pipeline::kAllanChannelCount;
   screen_options.gap_factor = result.engine.gap_factor;
   allan::ImpulseScreen screen(screen_options);
-  allan::OutputStepDetector steps(kAllanChannelCount);
+  allan::OutputStepDetector steps(pipeline::kAllanChannelCount);
 
   BoundedQueue<SampleBatch> queue(kQueuedBatches);
   std::exception_ptr reader_error;
@@ -96,7 +96,7 @@ AllanBagPassResult run_allan_bag_pass(const BagRecording& recording, const Allan
   };
   try {
     while (std::optional<SampleBatch> batch = queue.pop()) {
-      for (const AllanSample& sample : *batch) {
+      for (const pipeline::AllanSample& sample : *batch) {
         steps.push(sample.values.data());
         screen.push(sample.stamp_ns, sample.values.data(), passed);
       }

@@ -17,7 +17,7 @@ std::vector<std::string> report_file_names() {
     names.push_back(std::string(allan::statistic_name(statistic)) + ".csv");
   }
   for (const char* name : {"allan_summary.yaml", "allan.png", "noise.yaml", "kalibr_imu.yaml"}) names.push_back(name);
-  for (const char* channel : kAllanChannelNames) names.push_back(partial_curves_file_name(channel));
+  for (const char* channel : pipeline::kAllanChannelNames) names.push_back(pipeline::partial_curves_file_name(channel));
   return names;
 }
 
@@ -25,15 +25,15 @@ std::vector<std::string> report_file_names() {
 
 std::vector<io::ChannelCurve> channel_curves(const allan::StreamingSnapshot& snapshot, allan::Statistic statistic) {
   std::vector<io::ChannelCurve> curves;
-  for (std::size_t c = 0; c < kAllanChannelCount && c < snapshot.channels.size(); ++c) {
-    curves.push_back({kAllanChannelNames[c], kAllanChannelUnits[c], snapshot.curve(statistic, c)});
+  for (std::size_t c = 0; c < pipeline::kAllanChannelCount && c < snapshot.channels.size(); ++c) {
+    curves.push_back({pipeline::kAllanChannelNames[c], pipeline::kAllanChannelUnits[c], snapshot.curve(statistic, c)});
   }
   return curves;
 }
 
-AllanReportFiles write_allan_report(const std::string& directory, const AllanRunDescription& run,
+AllanReportFiles write_allan_report(const std::string& directory, const pipeline::AllanRunDescription& run,
                                     const allan::StreamingSnapshot& snapshot, bool plot,
-                                    const AllanIdentifyOptions& identify) {
+                                    const pipeline::AllanIdentifyOptions& identify) {
   // One set: written in full into a staging directory, then moved in together (atomic_file.h).
   OutputSet set;
   const std::string staging = set.stage_directory(directory);
@@ -44,10 +44,10 @@ AllanReportFiles write_allan_report(const std::string& directory, const AllanRun
     files.written.push_back(name);
   }
   // After the curves (a failed fit keeps them) and before the plot (it draws the partial curves).
-  files.noise = write_allan_noise_report(staging, run, snapshot, identify);
+  files.noise = pipeline::write_allan_noise_report(staging, run, snapshot, identify);
   for (const std::string& path : files.noise.written) files.written.push_back(path.substr(staging.size() + 1));
   write_file_atomically(staging + "/allan_summary.yaml",
-                        format_allan_summary(run, snapshot) + format_identification_summary(identify, files.noise));
+                        pipeline::format_allan_summary(run, snapshot) + pipeline::format_identification_summary(identify, files.noise));
   files.written.push_back("allan_summary.yaml");
   if (plot) {
     files.plot_problem = run_plot_script(

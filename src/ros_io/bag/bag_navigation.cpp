@@ -27,15 +27,15 @@ std::unordered_map<std::int64_t, TruthRecord> truth_by_stamp(const BagRecording&
 // Feeds the session and keeps the solutions the output interval asks for.
 class BagRun {
  public:
-  BagRun(const BagNavigationOptions& options, const NavigationSettings& settings, BagNavigationResult& result)
+  BagRun(const BagNavigationOptions& options, const pipeline::NavigationSettings& settings, BagNavigationResult& result)
       : options_(options),
         session_(settings),
         world_(settings.navigator.earth, settings.latitude_rad, settings.longitude_rad, settings.height_m),
         result_(result) {}
 
-  void on_outcome(SampleOutcome outcome, std::int64_t stamp_ns) {
+  void on_outcome(pipeline::SampleOutcome outcome, std::int64_t stamp_ns) {
     ++result_.messages;
-    if ((is_skipped(outcome) || outcome == SampleOutcome::kAlignmentFailed) && result_.first_problem.empty()) {
+    if ((pipeline::is_skipped(outcome) || outcome == pipeline::SampleOutcome::kAlignmentFailed) && result_.first_problem.empty()) {
       result_.first_problem = "at stamp " + std::to_string(stamp_ns * kSecondsPerNanosecond) + " s: " +
                               session_.last_problem();
     }
@@ -43,16 +43,16 @@ class BagRun {
     const bool due = result_.solutions.empty() ||
                      (stamp_ns - result_.solutions.back().stamp_ns) * kSecondsPerNanosecond >=
                          options_.output_interval_s - 1e-9;
-    if (due) result_.solutions.push_back(make_solution(session_, world_));
+    if (due) result_.solutions.push_back(pipeline::make_solution(session_, world_));
   }
 
-  NavigationSession& session() { return session_; }
-  const LocalEnuFrame& world() const { return world_; }
+  pipeline::NavigationSession& session() { return session_; }
+  const nav::LocalEnuFrame& world() const { return world_; }
 
  private:
   const BagNavigationOptions& options_;
-  NavigationSession session_;
-  LocalEnuFrame world_;
+  pipeline::NavigationSession session_;
+  nav::LocalEnuFrame world_;
   BagNavigationResult& result_;
 };
 
@@ -70,7 +70,7 @@ const char* datatype_of(InputType input_type) {
 }
 
 BagNavigationResult navigate_bag(const BagRecording& recording, const BagNavigationOptions& options,
-                                 const NavigationSettings& settings) {
+                                 const pipeline::NavigationSettings& settings) {
   BagNavigationResult result;
   result.topic = choose_topic(recording, options.topic, datatype_of(options.input_type));
   BagRun run(options, settings, result);
@@ -92,7 +92,7 @@ BagNavigationResult navigate_bag(const BagRecording& recording, const BagNavigat
   result.alignment = run.session().alignment();
   if (const auto& divergence = run.session().divergence()) {
     throw InputError("bag " + recording.name() + ", topic " + result.topic + ": the navigation state became unusable at stamp " +
-                     format_stamp(divergence->stamp_ns) + " s (" + divergence->problem +
+                     pipeline::format_stamp(divergence->stamp_ns) + " s (" + divergence->problem +
                      "); nothing written (check the samples around that stamp and their units)");
   }
   if (!run.session().navigating()) {
@@ -107,10 +107,10 @@ BagNavigationResult navigate_bag(const BagRecording& recording, const BagNavigat
   result.has_truth = bag_has_topic(recording, options.truth_topic, "imu_lab/ImuTruth");
   if (result.has_truth) {
     const auto truth = truth_by_stamp(recording, options.truth_topic);
-    for (const NavigationSolution& solution : result.solutions) {
+    for (const pipeline::NavigationSolution& solution : result.solutions) {
       const auto match = truth.find(solution.stamp_ns);
       if (match == truth.end()) continue;
-      result.errors.push_back(navigation_error(solution, match->second, run.world(), result.alignment->stamp_ns));
+      result.errors.push_back(pipeline::navigation_error(solution, match->second, run.world(), result.alignment->stamp_ns));
     }
   }
   return result;
@@ -150,7 +150,7 @@ std::optional<TruthRecord> truth_at_start(const BagRecording& recording, const B
   } catch (const FoundTruth& found) {
     return found.record;
   }
-  throw InputError("bag " + recording.name() + ": " + options.truth_topic + " has no sample at " + format_stamp(*start_ns) +
+  throw InputError("bag " + recording.name() + ": " + options.truth_topic + " has no sample at " + pipeline::format_stamp(*start_ns) +
                    " s, the first stamp of " + topic + " where the run starts; give the initial state instead");
 }
 

@@ -23,7 +23,7 @@ ros::Time to_ros_time(std::int64_t stamp_ns) {
   return stamp;
 }
 
-geometry_msgs::PoseStamped to_pose(const NavigationSolution& solution, const NavigationFrames& frames) {
+geometry_msgs::PoseStamped to_pose(const pipeline::NavigationSolution& solution, const NavigationFrames& frames) {
   geometry_msgs::PoseStamped pose;
   pose.header.stamp = to_ros_time(solution.stamp_ns);
   pose.header.frame_id = frames.world;
@@ -33,7 +33,7 @@ geometry_msgs::PoseStamped to_pose(const NavigationSolution& solution, const Nav
 }
 
 // Odometry and the tf are the pose with the body frame named (and, for odometry, the twist).
-nav_msgs::Odometry to_odometry(const NavigationSolution& solution, const NavigationFrames& frames) {
+nav_msgs::Odometry to_odometry(const pipeline::NavigationSolution& solution, const NavigationFrames& frames) {
   const geometry_msgs::PoseStamped pose = to_pose(solution, frames);
   nav_msgs::Odometry odometry;
   odometry.header = pose.header;
@@ -44,7 +44,7 @@ nav_msgs::Odometry to_odometry(const NavigationSolution& solution, const Navigat
   return odometry;
 }
 
-geometry_msgs::TransformStamped to_transform(const NavigationSolution& solution, const NavigationFrames& frames) {
+geometry_msgs::TransformStamped to_transform(const pipeline::NavigationSolution& solution, const NavigationFrames& frames) {
   const geometry_msgs::PoseStamped pose = to_pose(solution, frames);
   geometry_msgs::TransformStamped transform;
   transform.header = pose.header;
@@ -54,7 +54,7 @@ geometry_msgs::TransformStamped to_transform(const NavigationSolution& solution,
   return transform;
 }
 
-imu_lab::Alignment to_alignment_message(const AlignmentResult& alignment, const NavigationFrames& frames) {
+imu_lab::Alignment to_alignment_message(const pipeline::AlignmentResult& alignment, const NavigationFrames& frames) {
   imu_lab::Alignment message;
   message.header.stamp = to_ros_time(alignment.stamp_ns);
   message.header.frame_id = frames.world;

@@ -38,12 +38,12 @@ imu_lab::NoiseAxis to_noise_axis(identify::SensorKind sensor, int axis, const id
   return message;
 }
 
-imu_lab::NoiseParameters to_noise_parameters(const AllanNoiseReport& report, const allan::StreamingSnapshot& snapshot,
+imu_lab::NoiseParameters to_noise_parameters(const pipeline::AllanNoiseReport& report, const allan::StreamingSnapshot& snapshot,
                                              const std_msgs::Header& header) {
   imu_lab::NoiseParameters message;
   message.header = header;
   message.tau0_s = snapshot.timing.tau0_s;
-  message.record_length_s = record_length_s(snapshot);
+  message.record_length_s = pipeline::record_length_s(snapshot);
   message.target_relative_sigma = kResolvedRelativeSigma;
   message.problems = report.problems;
   for (const identify::TriadFit& triad : report.triads) {

@@ -45,7 +45,7 @@ AllanMonitorNode::AllanMonitorNode(ros::NodeHandle& node, ros::NodeHandle& priva
     : settings_(load_allan_monitor_settings(private_node)),
       engine_(make_engine(settings_, private_node.resolveName("resume"))),
       screen_(settings_.screen),
-      output_steps_(kAllanChannelCount) {
+      output_steps_(pipeline::kAllanChannelCount) {
   if (settings_.resume && engine_->input_sample_count() > 0) {
     resume_after_stamp_ns_ = engine_->last_stamp_ns();
     ROS_INFO("allan_monitor: resumed from %s: %lld samples, skipping input stamped at or before %.9f s",
@@ -58,14 +58,14 @@ AllanMonitorNode::AllanMonitorNode(ros::NodeHandle& node, ros::NodeHandle& priva
   noise_publisher_ = node.advertise<imu_lab::NoiseParameters>("allan/noise", 1, /*latch=*/true);
   // The input health is ready before the first subscription: in a nodelet manager the callbacks
   // run on worker threads as soon as it exists (one found health_ still empty and crashed it).
-  health_.emplace(node.resolveName(settings_.input == AllanInput::kRate ? "imu/raw" : "imu/increment"),
+  health_.emplace(node.resolveName(settings_.input == pipeline::AllanInput::kRate ? "imu/raw" : "imu/increment"),
                   load_input_health_settings(private_node, settings_.engine.gap_factor));
   snapshot_failed_condition_ = health_->define_condition("snapshots that failed (no curves published)",
                                                          diagnostic_msgs::DiagnosticStatus::ERROR);
   impulse_condition_ = health_->define_condition(
       "knocks or spikes (impulse screen events: samples kept from the curves, the run split there)",
       diagnostic_msgs::DiagnosticStatus::WARN);
-  if (settings_.input == AllanInput::kRate) {
+  if (settings_.input == pipeline::AllanInput::kRate) {
     input_subscriber_ = node.subscribe("imu/raw", settings_.queue_size, &AllanMonitorNode::on_imu, this);
   } else {
     input_subscriber_ = node.subscribe("imu/increment", settings_.queue_size, &AllanMonitorNode::on_increment, this);
@@ -98,14 +98,14 @@ AllanMonitorNode::~AllanMonitorNode() { finish(); }
 void AllanMonitorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message) {
   const ImuRecord record = to_imu_record(*message);
   // A triad not provided (covariance[0] = -1) reads as NaN, which its channels leave out.
-  add(to_allan_sample(record), message->header, record.has_angular_rate && record.has_specific_force ? nullptr : &record);
+  add(pipeline::to_allan_sample(record), message->header, record.has_angular_rate && record.has_specific_force ? nullptr : &record);
 }
 
 void AllanMonitorNode::on_increment(const imu_lab::ImuIncrement::ConstPtr& message) {
-  add(to_allan_sample(to_increment_record(*message)), message->header, nullptr);
+  add(pipeline::to_allan_sample(to_increment_record(*message)), message->header, nullptr);
 }
 
-void AllanMonitorNode::add(const AllanSample& sample, const std_msgs::Header& header, const ImuRecord* incomplete) {
+void AllanMonitorNode::add(const pipeline::AllanSample& sample, const std_msgs::Header& header, const ImuRecord* incomplete) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (finished_) return;
   if (resume_after_stamp_ns_ && sample.stamp_ns <= *resume_after_stamp_ns_) {
@@ -202,8 +202,8 @@ void AllanMonitorNode::save_checkpoint() {
   }
 }
 
-AllanRunDescription AllanMonitorNode::run_description(const Current& now) const {
-  AllanRunDescription run;
+pipeline::AllanRunDescription AllanMonitorNode::run_description(const Current& now) const {
+  pipeline::AllanRunDescription run;
   run.topic = input_subscriber_.getTopic();
   run.input = settings_.input;
   run.engine = engine_->options();
@@ -230,7 +230,7 @@ void AllanMonitorNode::start_identification() {
                                   header = last_header_] {
     try {
       noise_publisher_.publish(
-          to_noise_parameters(identify_triads(run, snapshot, settings_.identify), snapshot, header));
+          to_noise_parameters(pipeline::identify_triads(run, snapshot, settings_.identify), snapshot, header));
     } catch (const std::exception& error) {
       ROS_WARN("allan_monitor: periodic identification: %s", error.what());
     }
@@ -245,7 +245,7 @@ std::string AllanMonitorNode::write_report() {
                      input_subscriber_.getTopic() + ", the warm-up needs " +
                      std::to_string(engine_->options().warm_up_sample_count));
   }
-  const AllanRunDescription run = run_description(now);
+  const pipeline::AllanRunDescription run = run_description(now);
   const allan::StreamingSnapshot& snapshot = now.snapshot;
   const AllanReportFiles files =
       write_allan_report(settings_.report_dir, run, snapshot, settings_.plot, settings_.identify);

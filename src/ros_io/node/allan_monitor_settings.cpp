@@ -30,7 +30,7 @@ allan::Statistic parse_statistic(const std::string& key, const std::string& name
 
 AllanMonitorSettings load_allan_monitor_settings(const ros::NodeHandle& private_node) {
   AllanMonitorSettings settings;
-  settings.input = parse_allan_input(private_node.resolveName("input_type"),
+  settings.input = pipeline::parse_allan_input(private_node.resolveName("input_type"),
                                      parameter<std::string>(private_node, "input_type", "imu"));
   if (has_parameter(private_node, "statistics")) {
     const auto statistic_names = parameter(private_node, "statistics", std::vector<std::string>());
@@ -54,14 +54,14 @@ AllanMonitorSettings load_allan_monitor_settings(const ros::NodeHandle& private_
   settings.identify.enabled = parameter(private_node, "identify", settings.identify.enabled);
   settings.identify_period_s = non_negative_parameter(private_node, "identify_period_s", settings.identify_period_s);
   settings.identify.bootstrap_replicas = parameter(private_node, "bootstrap_replicas", settings.identify.bootstrap_replicas);
-  const std::string replicas_problem = bootstrap_replicas_problem(settings.identify.bootstrap_replicas);
+  const std::string replicas_problem = pipeline::bootstrap_replicas_problem(settings.identify.bootstrap_replicas);
   if (!replicas_problem.empty()) {
     throw parameter_error(private_node, "bootstrap_replicas", replicas_problem);
   }
 
   allan::StreamingOptions& engine = settings.engine;
-  engine.channel_count = kAllanChannelCount;
-  engine.input_kind = engine_input_kind(settings.input);
+  engine.channel_count = pipeline::kAllanChannelCount;
+  engine.input_kind = pipeline::engine_input_kind(settings.input);
   engine.points_per_decade = positive_parameter(private_node, "points_per_decade", engine.points_per_decade);
   engine.max_tau_s = positive_parameter(private_node, "max_tau_s", engine.max_tau_s);
   engine.exact_max_averaging_factor =

@@ -10,7 +10,7 @@ namespace ros_io {
 namespace {
 
 double degrees_parameter_rad(const ros::NodeHandle& node, const std::string& name) {
-  return parameter(node, name, 0.0) * kDegToRad;
+  return parameter(node, name, 0.0) * pipeline::kDegToRad;
 }
 
 // Without alignment the node starts from the given state and has no truth to take the velocity
@@ -28,17 +28,17 @@ Eigen::Vector3d initial_velocity_parameter(const ros::NodeHandle& node, bool ali
     throw parameter_error(node, name, "expected [east, north, up] in m/s, got " + std::to_string(value.size()) +
                                           " numbers");
   }
-  return Eigen::Vector3d(value[0], value[1], value[2]);  // finiteness: validate()
+  return Eigen::Vector3d(value[0], value[1], value[2]);  // finiteness: pipeline::validate()
 }
 
 // Only when at least one is given: without them there is nothing to predict from.
-std::optional<ExpectedSensorErrors> expected_errors_parameters(const ros::NodeHandle& node) {
+std::optional<pipeline::ExpectedSensorErrors> expected_errors_parameters(const ros::NodeHandle& node) {
   const char* const names[] = {"expected_gyro_bias_rad_s", "expected_accel_bias_m_s2",
                                "gyro_noise_density_rad_s_per_sqrt_hz", "accel_noise_density_m_s2_per_sqrt_hz"};
   if (std::none_of(std::begin(names), std::end(names), [&](const char* name) { return has_parameter(node, name); })) {
     return std::nullopt;
   }
-  ExpectedSensorErrors expected;
+  pipeline::ExpectedSensorErrors expected;
   expected.gyro_bias_rad_s = parameter(node, names[0], 0.0);
   expected.accel_bias_m_s2 = parameter(node, names[1], 0.0);
   expected.gyro_noise_density_rad_s_per_sqrt_hz = parameter(node, names[2], 0.0);
@@ -48,13 +48,13 @@ std::optional<ExpectedSensorErrors> expected_errors_parameters(const ros::NodeHa
 
 }  // namespace
 
-NavigationSettings load_navigation_settings(const ros::NodeHandle& private_node) {
-  NavigationSettings settings;
+pipeline::NavigationSettings load_navigation_settings(const ros::NodeHandle& private_node) {
+  pipeline::NavigationSettings settings;
   const ros::NodeHandle& p = private_node;
   settings.align = parameter(p, "align", true);
   settings.alignment.duration_s = parameter(p, "alignment_duration_s", 300.0);
   settings.alignment.heading_source =
-      parse_heading_source(p.resolveName("heading_source"), parameter<std::string>(p, "heading_source", "gyrocompass"));
+      pipeline::parse_heading_source(p.resolveName("heading_source"), parameter<std::string>(p, "heading_source", "gyrocompass"));
   settings.initial_roll_rad = degrees_parameter_rad(p, "initial_roll_deg");
   settings.initial_pitch_rad = degrees_parameter_rad(p, "initial_pitch_deg");
   settings.initial_yaw_rad = degrees_parameter_rad(p, "initial_yaw_deg");
@@ -64,15 +64,15 @@ NavigationSettings load_navigation_settings(const ros::NodeHandle& private_node)
   settings.longitude_rad = degrees_parameter_rad(p, "longitude_deg");
   settings.height_m = parameter(p, "height_m", 0.0);
   settings.navigator.earth =
-      parse_earth_model(p.resolveName("earth_model"), parameter<std::string>(p, "earth_model", "wgs84"));
+      pipeline::parse_earth_model(p.resolveName("earth_model"), parameter<std::string>(p, "earth_model", "wgs84"));
   settings.navigator.vertical.mode =
-      parse_vertical_channel(p.resolveName("vertical_channel"), parameter<std::string>(p, "vertical_channel", "held"));
+      pipeline::parse_vertical_channel(p.resolveName("vertical_channel"), parameter<std::string>(p, "vertical_channel", "held"));
   settings.navigator.vertical.fixed_reference_height_m = parameter(p, "reference_height_m", settings.height_m);
   settings.navigator.corrections.coning_correction = parameter(p, "coning_correction", true);
   settings.navigator.corrections.sculling_correction = parameter(p, "sculling_correction", true);
   settings.gap_factor = parameter(p, "gap_factor", settings.gap_factor);
   settings.expected_errors = expected_errors_parameters(p);
-  validate(settings, p.getNamespace());
+  pipeline::validate(settings, p.getNamespace());
   return settings;
 }
 

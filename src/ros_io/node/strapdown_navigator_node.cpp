@@ -17,9 +17,9 @@ constexpr double kLogThrottle_s = 5.0;
 }  // namespace
 
 StrapdownNavigatorNode::StrapdownNavigatorNode(ros::NodeHandle& node, ros::NodeHandle& private_node) {
-  const NavigationSettings settings = load_navigation_settings(private_node);
-  session_ = std::make_unique<NavigationSession>(settings);
-  world_ = std::make_unique<LocalEnuFrame>(settings.navigator.earth, settings.latitude_rad, settings.longitude_rad,
+  const pipeline::NavigationSettings settings = load_navigation_settings(private_node);
+  session_ = std::make_unique<pipeline::NavigationSession>(settings);
+  world_ = std::make_unique<nav::LocalEnuFrame>(settings.navigator.earth, settings.latitude_rad, settings.longitude_rad,
                                            settings.height_m);
   frames_.world = parameter(private_node, "world_frame", frames_.world);
   frames_.body = parameter(private_node, "body_frame", frames_.body);
@@ -65,7 +65,7 @@ StrapdownNavigatorNode::StrapdownNavigatorNode(ros::NodeHandle& node, ros::NodeH
            datatype_of(input_type), input_subscriber_.getTopic().c_str(),
            settings.align ? ("aligning for " + std::to_string(settings.alignment.duration_s) + " s").c_str()
                           : "given attitude",
-           frames_.world.c_str(), settings.latitude_rad / kDegToRad, settings.longitude_rad / kDegToRad,
+           frames_.world.c_str(), settings.latitude_rad / pipeline::kDegToRad, settings.longitude_rad / pipeline::kDegToRad,
            settings.height_m);
 }
 
@@ -104,32 +104,32 @@ void StrapdownNavigatorNode::on_reference_height(const std_msgs::Float64::ConstP
   }
 }
 
-void StrapdownNavigatorNode::after_sample(SampleOutcome outcome, const ros::Time& stamp) {
-  if (outcome == SampleOutcome::kDiverged) {
+void StrapdownNavigatorNode::after_sample(pipeline::SampleOutcome outcome, const ros::Time& stamp) {
+  if (outcome == pipeline::SampleOutcome::kDiverged) {
     ROS_ERROR("strapdown_navigator: navigation stopped: %s (sample at %.9f); call %s to start again",
               session_->last_problem().c_str(), stamp.toSec(), reinitialise_service_.getService().c_str());
     return;
   }
-  if (outcome == SampleOutcome::kHalted) return;  // counted, and on /diagnostics at ERROR level
-  if (outcome == SampleOutcome::kAlignmentFailed) health_->count(failed_alignment_condition_);
-  if (is_skipped(outcome) || outcome == SampleOutcome::kAlignmentFailed) {
+  if (outcome == pipeline::SampleOutcome::kHalted) return;  // counted, and on /diagnostics at ERROR level
+  if (outcome == pipeline::SampleOutcome::kAlignmentFailed) health_->count(failed_alignment_condition_);
+  if (pipeline::is_skipped(outcome) || outcome == pipeline::SampleOutcome::kAlignmentFailed) {
     ROS_WARN_THROTTLE(kLogThrottle_s, "strapdown_navigator: sample at %.9f skipped: %s (counted in diagnostics)",
                       stamp.toSec(), session_->last_problem().c_str());
-    if (is_skipped(outcome)) return;
+    if (pipeline::is_skipped(outcome)) return;
   }
   if (session_->alignment() && !alignment_published_) {
     alignment_published_ = true;
-    const AlignmentResult& alignment = *session_->alignment();
+    const pipeline::AlignmentResult& alignment = *session_->alignment();
     alignment_publisher_.publish(to_alignment_message(alignment, frames_));
     ROS_INFO("strapdown_navigator: %s alignment: roll %.4f pitch %.4f yaw %.4f deg", alignment.method.c_str(),
-             alignment.roll_pitch_yaw_rad.x() / kDegToRad, alignment.roll_pitch_yaw_rad.y() / kDegToRad,
-             alignment.roll_pitch_yaw_rad.z() / kDegToRad);
+             alignment.roll_pitch_yaw_rad.x() / pipeline::kDegToRad, alignment.roll_pitch_yaw_rad.y() / pipeline::kDegToRad,
+             alignment.roll_pitch_yaw_rad.z() / pipeline::kDegToRad);
   }
   if (session_->new_solution()) publish_solution();
 }
 
 void StrapdownNavigatorNode::publish_solution() {
-  NavigationSolution solution = make_solution(*session_, *world_);
+  pipeline::NavigationSolution solution = pipeline::make_solution(*session_, *world_);
   if (attitude_only_) {
     solution.position_enu_m.setZero();
     solution.velocity_body_m_s.setZero();
@@ -146,7 +146,7 @@ void StrapdownNavigatorNode::publish_solution() {
 }
 
 void StrapdownNavigatorNode::report(diagnostic_updater::DiagnosticStatusWrapper& status) {
-  const InputCounters& counters = session_->counters();
+  const pipeline::InputCounters& counters = session_->counters();
   health_->fill(status, session_->halted() ? "stopped" : session_->navigating() ? "navigating" : "aligning");
   if (!session_->last_problem().empty()) status.add("last problem", session_->last_problem());
   status.add("samples used", counters.used);
@@ -157,7 +157,7 @@ void StrapdownNavigatorNode::report(diagnostic_updater::DiagnosticStatusWrapper&
                                                  : std::to_string(session_->alignment_progress_s()) + " of " +
                                                        std::to_string(session_->settings().alignment.duration_s) + " s");
   if (session_->navigating()) {
-    const Eigen::Vector3d rpy = roll_pitch_yaw_from_quaternion(session_->state().q_body_to_enu) / kDegToRad;
+    const Eigen::Vector3d rpy = pipeline::roll_pitch_yaw_from_quaternion(session_->state().q_body_to_enu) / pipeline::kDegToRad;
     status.addf("roll, pitch, yaw [deg]", "%.4f, %.4f, %.4f", rpy.x(), rpy.y(), rpy.z());
   }
   status.add("divergences", counters.divergences);
@@ -165,10 +165,10 @@ void StrapdownNavigatorNode::report(diagnostic_updater::DiagnosticStatusWrapper&
   if (const auto& divergence = session_->divergence()) {
     // Every report until told to start again: the condition persists, unlike the input problems.
     status.mergeSummary(diagnostic_msgs::DiagnosticStatus::ERROR,
-                        "navigation stopped: state unusable at stamp " + format_stamp(divergence->stamp_ns) + " s (" +
+                        "navigation stopped: state unusable at stamp " + pipeline::format_stamp(divergence->stamp_ns) + " s (" +
                             divergence->problem + "); call " + reinitialise_service_.getService() +
                             " to start again");
-    status.add("navigation stopped at stamp [s]", format_stamp(divergence->stamp_ns));
+    status.add("navigation stopped at stamp [s]", pipeline::format_stamp(divergence->stamp_ns));
     status.add("samples ignored since", counters.halted);
   }
 }
@@ -178,7 +178,7 @@ bool StrapdownNavigatorNode::on_reinitialise(std_srvs::Trigger::Request&, std_sr
   session_->reinitialise();
   alignment_published_ = false;
   path_.poses.clear();
-  const NavigationSettings& settings = session_->settings();
+  const pipeline::NavigationSettings& settings = session_->settings();
   response.success = true;
   response.message = settings.align ? "re-initialised: aligning for " + format_number(settings.alignment.duration_s, 6) +
                                           " s from the next sample"

@@ -22,7 +22,7 @@ namespace ros_io {
 
 struct AllanBagPassOptions {
   std::string topic;  // empty: the bag's only topic of the input's message type
-  AllanInput input = AllanInput::kRate;
+  pipeline::AllanInput input = pipeline::AllanInput::kRate;
   // channel_count and input_kind are set from `input`; a bag shorter than warm_up_sample_count
   // warms up on all of its messages instead.
   allan::StreamingOptions engine;
@@ -38,7 +38,7 @@ struct AllanBagPassResult {
   TimeWindow window;                // the part of the recording analysed
   std::vector<FileJoin> joins;      // where one split file handed over to the next
   std::string topic;
-  AllanInput input = AllanInput::kRate;
+  pipeline::AllanInput input = pipeline::AllanInput::kRate;
   allan::StreamingOptions engine;  // as used
   std::size_t message_count = 0;
   // sensor_msgs/Imu messages marking a triad as not provided (covariance[0] = -1): the triad's

@@ -20,7 +20,7 @@ namespace ros_io {
 struct AllanReportFiles {
   std::vector<std::string> written;  // paths, in the order written
   std::string plot_problem;          // empty when the plot was written (or not asked for)
-  AllanNoiseReport noise;            // the identified triads and what went wrong identifying them
+  pipeline::AllanNoiseReport noise;            // the identified triads and what went wrong identifying them
 };
 
 // The six channels' curves of one statistic, named and with units for the CSV.
@@ -29,9 +29,9 @@ std::vector<io::ChannelCurve> channel_curves(const allan::StreamingSnapshot& sna
 // Throws std::runtime_error naming the file when a data file cannot be written. A failed plot
 // (no python3/matplotlib) is reported in plot_problem only: the numbers are the report. A failed
 // identification is reported in noise.problems and in allan_summary.yaml; the curves are kept.
-AllanReportFiles write_allan_report(const std::string& directory, const AllanRunDescription& run,
+AllanReportFiles write_allan_report(const std::string& directory, const pipeline::AllanRunDescription& run,
                                     const allan::StreamingSnapshot& snapshot, bool plot,
-                                    const AllanIdentifyOptions& identify = AllanIdentifyOptions());
+                                    const pipeline::AllanIdentifyOptions& identify = pipeline::AllanIdentifyOptions());
 
 }  // namespace ros_io
 }  // namespace imu_lab

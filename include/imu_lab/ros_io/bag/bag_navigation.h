@@ -1,4 +1,4 @@
-// Offline strapdown navigation of a bag: IMU messages -> NavigationSession -> solutions, and,
+// Offline strapdown navigation of a bag: IMU messages -> pipeline::NavigationSession -> solutions, and,
 // when the bag holds the emulator's /imu/truth, each solution's error against the truth sample
 // with the same stamp. The navigate tool is a thin wrapper around it; the rostest checker and
 // the tests use the tool's output to check the live node against it.
@@ -32,11 +32,11 @@ struct BagNavigationOptions {
 struct BagNavigationResult {
   std::string topic;
   std::size_t messages = 0;
-  std::vector<NavigationSolution> solutions;
+  std::vector<pipeline::NavigationSolution> solutions;
   bool has_truth = false;
-  std::vector<NavigationError> errors;  // one per kept solution that has a truth sample
-  std::optional<AlignmentResult> alignment;
-  InputCounters counters;
+  std::vector<pipeline::NavigationError> errors;  // one per kept solution that has a truth sample
+  std::optional<pipeline::AlignmentResult> alignment;
+  pipeline::InputCounters counters;
   std::string first_problem;  // the first skipped sample's stamp and reason, if any
 };
 
@@ -44,10 +44,10 @@ struct BagNavigationResult {
 // ends before the navigation starts (too short for the alignment, or an alignment that failed).
 // Bad samples are skipped and counted, as in the node; callers decide whether that is fatal.
 BagNavigationResult navigate_bag(const BagRecording& recording, const BagNavigationOptions& options,
-                                 const NavigationSettings& settings);
+                                 const pipeline::NavigationSettings& settings);
 
 // The truth where a run starts: the sample at the stamp of the input topic's first sample with
-// finite values (where NavigationSession starts a run without alignment), if the bag has the
+// finite values (where pipeline::NavigationSession starts a run without alignment), if the bag has the
 // truth topic. Throws InputError naming the bag when it has the truth topic but no sample at that
 // stamp (a start state from another instant would be wrong by the motion in between).
 std::optional<TruthRecord> truth_at_start(const BagRecording& recording, const BagNavigationOptions& options);

@@ -1,4 +1,4 @@
-// NavigationSolution / AlignmentResult -> the messages the strapdown navigator publishes.
+// pipeline::NavigationSolution / pipeline::AlignmentResult -> the messages the strapdown navigator publishes.
 // Odometry (nav_msgs convention): pose in the world frame (local ENU at the initial position,
 // REP-103), twist in the child (body, REP-145) frame. Covariances are left zero: the navigator
 // does not propagate them.
@@ -23,10 +23,10 @@ struct NavigationFrames {
 };
 
 ros::Time to_ros_time(std::int64_t stamp_ns);
-nav_msgs::Odometry to_odometry(const NavigationSolution& solution, const NavigationFrames& frames);
-geometry_msgs::TransformStamped to_transform(const NavigationSolution& solution, const NavigationFrames& frames);
-geometry_msgs::PoseStamped to_pose(const NavigationSolution& solution, const NavigationFrames& frames);
-imu_lab::Alignment to_alignment_message(const AlignmentResult& alignment, const NavigationFrames& frames);
+nav_msgs::Odometry to_odometry(const pipeline::NavigationSolution& solution, const NavigationFrames& frames);
+geometry_msgs::TransformStamped to_transform(const pipeline::NavigationSolution& solution, const NavigationFrames& frames);
+geometry_msgs::PoseStamped to_pose(const pipeline::NavigationSolution& solution, const NavigationFrames& frames);
+imu_lab::Alignment to_alignment_message(const pipeline::AlignmentResult& alignment, const NavigationFrames& frames);
 
 }  // namespace ros_io
 }  // namespace imu_lab

@@ -59,7 +59,7 @@ class AllanMonitorNode {
   void on_imu(const sensor_msgs::Imu::ConstPtr& message);
   void on_increment(const imu_lab::ImuIncrement::ConstPtr& message);
   // incomplete: the record when it lacks a triad (covariance[0] = -1), for the diagnostics.
-  void add(const AllanSample& sample, const std_msgs::Header& header, const ImuRecord* incomplete);
+  void add(const pipeline::AllanSample& sample, const std_msgs::Header& header, const ImuRecord* incomplete);
   void push_screened();  // what the screen passed, into the engine
   // The curves and the screen's report as they would end if the input ended now: the samples the
   // screen still holds go through a copy of it into a copy of the engine, so that what is
@@ -72,7 +72,7 @@ class AllanMonitorNode {
   };
   Current current() const;
   void publish_curves();
-  AllanRunDescription run_description(const Current& now) const;
+  pipeline::AllanRunDescription run_description(const Current& now) const;
   // Identifies the current curves on identify_thread_ and publishes allan/noise, unless the
   // previous identification is still running.
   void start_identification();

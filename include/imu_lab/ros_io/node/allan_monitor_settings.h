@@ -27,7 +27,7 @@ namespace imu_lab {
 namespace ros_io {
 
 struct AllanMonitorSettings {
-  AllanInput input = AllanInput::kRate;
+  pipeline::AllanInput input = pipeline::AllanInput::kRate;
   std::vector<allan::Statistic> statistics = {allan::Statistic::kOverlappingAllan};
   double publish_period_s = 1.0;
   std::string report_dir;
@@ -36,7 +36,7 @@ struct AllanMonitorSettings {
   double checkpoint_period_s = 60.0;
   bool resume = false;
   int queue_size = 20000;
-  AllanIdentifyOptions identify;
+  pipeline::AllanIdentifyOptions identify;
   double identify_period_s = 0.0;
   allan::StreamingOptions engine;
   allan::ImpulseScreenOptions screen;  // channel_count and gap_factor follow the engine's

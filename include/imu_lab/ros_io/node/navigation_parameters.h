@@ -1,4 +1,4 @@
-// The strapdown navigator's ROS parameters (private namespace) -> NavigationSettings.
+// The strapdown navigator's ROS parameters (private namespace) -> pipeline::NavigationSettings.
 //   align (true); alignment_duration_s (300); heading_source (gyrocompass | given);
 //   initial_roll_deg, initial_pitch_deg (used with align: false), initial_yaw_deg (with
 //   heading_source given or align: false; REP-103: from east towards north) (0);
@@ -20,7 +20,7 @@ namespace imu_lab {
 namespace ros_io {
 
 // Throws ConfigError naming the parameter that is wrong.
-NavigationSettings load_navigation_settings(const ros::NodeHandle& private_node);
+pipeline::NavigationSettings load_navigation_settings(const ros::NodeHandle& private_node);
 
 }  // namespace ros_io
 }  // namespace imu_lab

@@ -57,14 +57,14 @@ class StrapdownNavigatorNode {
   void on_imu(const sensor_msgs::Imu::ConstPtr& message);
   void on_increment(const imu_lab::ImuIncrement::ConstPtr& message);
   void on_reference_height(const std_msgs::Float64::ConstPtr& message);
-  void after_sample(SampleOutcome outcome, const ros::Time& stamp);
+  void after_sample(pipeline::SampleOutcome outcome, const ros::Time& stamp);
   void publish_solution();
   void report(diagnostic_updater::DiagnosticStatusWrapper& status);
   bool on_reinitialise(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
 
   std::mutex mutex_;  // a nodelet may run the callbacks on several threads
-  std::unique_ptr<NavigationSession> session_;
-  std::unique_ptr<LocalEnuFrame> world_;
+  std::unique_ptr<pipeline::NavigationSession> session_;
+  std::unique_ptr<nav::LocalEnuFrame> world_;
   NavigationFrames frames_;
   bool publish_tf_ = true;
   bool attitude_only_ = false;
