@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
     const std::size_t block = static_cast<std::size_t>(std::min<long long>(kBlockSamples, samples - done));
     auto start = std::chrono::steady_clock::now();
     for (std::size_t k = 0; k < block; ++k) {
-      const imu_lab::emulator::ImuSample sample = emulator.next();
+      const imu_lab::emulator::EmulatedSample sample = emulator.next();
       stamps_ns[k] = static_cast<std::int64_t>(sample.stamp_s * 1e9 + 0.5);
       for (int axis = 0; axis < 3; ++axis) {
         values[k * kChannels + axis] = sample.angular_rate_rad_s[axis];

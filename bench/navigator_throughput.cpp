@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
   std::vector<nav::ImuIncrement> increments(samples);
   const auto generation_start = std::chrono::steady_clock::now();
   for (auto& increment : increments) {
-    const emulator::ImuSample sample = emulator.next();
+    const emulator::EmulatedSample sample = emulator.next();
     increment.delta_angle_rad = sample.delta_angle_rad;
     increment.delta_velocity_m_s = sample.delta_velocity_m_s;
     increment.dt_s = emulator.sample_interval_s();

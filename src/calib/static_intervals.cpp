@@ -6,11 +6,11 @@
 
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/robust_statistics.h"
-#include "imu_lab/emulator/earth_model.h"
+#include "imu_lab/common/earth_constants.h"
 
 namespace imu_lab {
 namespace calib {
-StaticDetection detect_static_intervals(const std::vector<CalibrationSample>& samples,
+StaticDetection detect_static_intervals(const std::vector<ImuSample>& samples,
                                         const StaticDetectionOptions& options) {
   if (samples.size() < 2) throw InputError("calibration recording: fewer than 2 samples");
   for (std::size_t k = 1; k < samples.size(); ++k) {
@@ -49,7 +49,7 @@ StaticDetection detect_static_intervals(const std::vector<CalibrationSample>& sa
   detection.threshold_rad_s = options.threshold_rad_s > 0.0
                                   ? options.threshold_rad_s
                                   : options.threshold_sigmas * detection.window_noise_rad_s +
-                                        2.0 * emulator::kWgs84EarthRate_rad_s;
+                                        2.0 * wgs84::kEarthRate_rad_s;
 
   detection.resting_level_rad_s = resting_level;
   if (resting_level.norm() > options.max_resting_rate_rad_s) return detection;

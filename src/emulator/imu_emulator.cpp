@@ -39,7 +39,7 @@ ImuEmulator::~ImuEmulator() = default;
 ImuEmulator::ImuEmulator(ImuEmulator&&) noexcept = default;
 ImuEmulator& ImuEmulator::operator=(ImuEmulator&&) noexcept = default;
 
-ImuSample ImuEmulator::next() {
+EmulatedSample ImuEmulator::next() {
   // Times from the index (not accumulated) so long runs do not drift.
   const double elapsed_start_s = static_cast<double>(sample_index_) * interval_s_;
   ++sample_index_;
@@ -48,7 +48,7 @@ ImuSample ImuEmulator::next() {
   const Eigen::Vector3d true_rate = truth_increment.delta_angle_rad / interval_s_;
   const Eigen::Vector3d true_force = truth_increment.delta_velocity_m_s / interval_s_;
 
-  ImuSample sample;
+  EmulatedSample sample;
   sample.stamp_s = settings_.start_time_s + static_cast<double>(sample_index_) * interval_s_;
   const SensorTemperature temperature{truth_increment.mean_temperature_c,
                                       truth_increment.mean_temperature_rate_c_s};

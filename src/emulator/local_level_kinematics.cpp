@@ -7,19 +7,15 @@
 namespace imu_lab {
 namespace emulator {
 
-namespace {
-constexpr double kWgs84EccentricitySquared = kWgs84Flattening * (2.0 - kWgs84Flattening);
-}
-
-RadiiOfCurvature radii_of_curvature(EarthModel model, double latitude_rad) {
-  if (model == EarthModel::kSphereNonRotating) return {kSphereRadius_m, kSphereRadius_m};
+RadiiOfCurvature radii_of_curvature(EarthShape model, double latitude_rad) {
+  if (model == EarthShape::kSphereNonRotating) return {textbook_sphere::kRadius_m, textbook_sphere::kRadius_m};
   const double s = std::sin(latitude_rad);
-  const double w2 = 1.0 - kWgs84EccentricitySquared * s * s;
-  const double prime_vertical = kWgs84SemiMajorAxis_m / std::sqrt(w2);
-  return {prime_vertical * (1.0 - kWgs84EccentricitySquared) / w2, prime_vertical};
+  const double w2 = 1.0 - wgs84::kEccentricitySquared * s * s;
+  const double prime_vertical = wgs84::kSemiMajorAxis_m / std::sqrt(w2);
+  return {prime_vertical * (1.0 - wgs84::kEccentricitySquared) / w2, prime_vertical};
 }
 
-Eigen::Vector3d transport_rate_enu_rad_s(EarthModel model, double latitude_rad, double height_m,
+Eigen::Vector3d transport_rate_enu_rad_s(EarthShape model, double latitude_rad, double height_m,
                                          const Eigen::Vector3d& velocity_enu_m_s) {
   const RadiiOfCurvature radii = radii_of_curvature(model, latitude_rad);
   const double east_over_radius = velocity_enu_m_s.x() / (radii.prime_vertical_m + height_m);
@@ -27,7 +23,7 @@ Eigen::Vector3d transport_rate_enu_rad_s(EarthModel model, double latitude_rad, 
           east_over_radius * std::tan(latitude_rad)};
 }
 
-TruthState truth_from_local_level(const LocalLevelMotion& motion, EarthModel model,
+TruthState truth_from_local_level(const LocalLevelMotion& motion, EarthShape model,
                                   double time_s, double temperature_c) {
   const Eigen::Vector3d earth_rate = earth_rate_enu_rad_s(model, motion.latitude_rad);
   const Eigen::Vector3d transport_rate = transport_rate_enu_rad_s(

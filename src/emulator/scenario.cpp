@@ -75,9 +75,9 @@ ScenarioConfig scenario_from_yaml(const YAML::Node& root, const std::string& sou
   }
   const std::string earth = f.text("earth_model");
   if (earth == "wgs84_rotating") {
-    scenario.earth_model = EarthModel::kWgs84Rotating;
+    scenario.earth_model = EarthShape::kWgs84Rotating;
   } else if (earth == "sphere_non_rotating") {
-    scenario.earth_model = EarthModel::kSphereNonRotating;
+    scenario.earth_model = EarthShape::kSphereNonRotating;
   } else {
     f.fail("earth_model", "expected 'wgs84_rotating' or 'sphere_non_rotating', got '" + earth + "'");
   }

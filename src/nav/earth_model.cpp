@@ -8,13 +8,13 @@ namespace imu_lab {
 namespace nav {
 
 namespace {
-bool isSphere(const EarthModelConfig& config) {
+bool is_sphere(const EarthModelConfig& config) {
   return config.shape == EarthShape::kSphereNonRotating;
 }
 }  // namespace
 
 EarthModel::EarthModel(const EarthModelConfig& config) : config_(config) {
-  if (isSphere(config_)) {
+  if (is_sphere(config_)) {
     if (!(config_.sphere_radius_m > 0.0)) {
       throw ConfigError("nav", "earth.sphere_radius_m", "must be a positive radius in metres");
     }
@@ -26,7 +26,7 @@ EarthModel::EarthModel(const EarthModelConfig& config) : config_(config) {
 }
 
 double EarthModel::gravity_m_s2(double latitude_rad, double height_m) const {
-  if (isSphere(config_)) {
+  if (is_sphere(config_)) {
     const double g0 = config_.sphere_surface_gravity_m_s2;
     if (config_.sphere_gravity_law == SphereGravityLaw::kConstant) return g0;
     const double ratio = config_.sphere_radius_m / (config_.sphere_radius_m + height_m);
@@ -44,38 +44,38 @@ double EarthModel::gravity_m_s2(double latitude_rad, double height_m) const {
   return surface * height_factor;
 }
 
-double EarthModel::meridianRadius_m(double latitude_rad) const {
-  if (isSphere(config_)) return config_.sphere_radius_m;
+double EarthModel::meridian_radius_m(double latitude_rad) const {
+  if (is_sphere(config_)) return config_.sphere_radius_m;
   const double sin2 = std::sin(latitude_rad) * std::sin(latitude_rad);
   const double w = 1.0 - wgs84::kEccentricitySquared * sin2;
   return wgs84::kSemiMajorAxis_m * (1.0 - wgs84::kEccentricitySquared) / (w * std::sqrt(w));
 }
 
-double EarthModel::primeVerticalRadius_m(double latitude_rad) const {
-  if (isSphere(config_)) return config_.sphere_radius_m;
+double EarthModel::prime_vertical_radius_m(double latitude_rad) const {
+  if (is_sphere(config_)) return config_.sphere_radius_m;
   const double sin2 = std::sin(latitude_rad) * std::sin(latitude_rad);
   return wgs84::kSemiMajorAxis_m / std::sqrt(1.0 - wgs84::kEccentricitySquared * sin2);
 }
 
-double EarthModel::earthRate_rad_s() const {
-  return isSphere(config_) ? 0.0 : wgs84::kEarthRate_rad_s;
+double EarthModel::earth_rate_rad_s() const {
+  return is_sphere(config_) ? 0.0 : wgs84::kEarthRate_rad_s;
 }
 
-Eigen::Vector3d EarthModel::earthRateEnu_rad_s(double latitude_rad) const {
-  const double rate = earthRate_rad_s();
+Eigen::Vector3d EarthModel::earth_rate_enu_rad_s(double latitude_rad) const {
+  const double rate = earth_rate_rad_s();
   return Eigen::Vector3d(0.0, rate * std::cos(latitude_rad), rate * std::sin(latitude_rad));
 }
 
-Eigen::Vector3d EarthModel::transportRateEnu_rad_s(const Eigen::Vector3d& velocity_enu_m_s,
+Eigen::Vector3d EarthModel::transport_rate_enu_rad_s(const Eigen::Vector3d& velocity_enu_m_s,
                                                    double latitude_rad, double height_m) const {
-  const double east_radius = primeVerticalRadius_m(latitude_rad) + height_m;
-  const double north_radius = meridianRadius_m(latitude_rad) + height_m;
+  const double east_radius = prime_vertical_radius_m(latitude_rad) + height_m;
+  const double north_radius = meridian_radius_m(latitude_rad) + height_m;
   return Eigen::Vector3d(-velocity_enu_m_s.y() / north_radius, velocity_enu_m_s.x() / east_radius,
                          velocity_enu_m_s.x() * std::tan(latitude_rad) / east_radius);
 }
 
-double EarthModel::schulerRate_rad_s() const {
-  return std::sqrt(gravity_m_s2(0.0, 0.0) / primeVerticalRadius_m(0.0));
+double EarthModel::schuler_rate_rad_s() const {
+  return std::sqrt(gravity_m_s2(0.0, 0.0) / prime_vertical_radius_m(0.0));
 }
 
 }  // namespace nav

@@ -7,9 +7,9 @@ namespace nav {
 
 LocalEnuFrame::LocalEnuFrame(const nav::EarthModelConfig& earth, double origin_latitude_rad,
                              double origin_longitude_rad, double origin_height_m) {
-  if (earth.shape == nav::EarthShape::kWgs84Rotating) {
-    semi_major_axis_m_ = nav::wgs84::kSemiMajorAxis_m;
-    eccentricity_squared_ = nav::wgs84::kEccentricitySquared;
+  if (earth.shape == EarthShape::kWgs84Rotating) {
+    semi_major_axis_m_ = wgs84::kSemiMajorAxis_m;
+    eccentricity_squared_ = wgs84::kEccentricitySquared;
   } else {
     semi_major_axis_m_ = earth.sphere_radius_m;
     eccentricity_squared_ = 0.0;

@@ -13,11 +13,11 @@ namespace nav {
 
 namespace {
 
-double wrapLongitude(double longitude_rad) { return std::remainder(longitude_rad, 2.0 * M_PI); }
+double wrap_longitude(double longitude_rad) { return std::remainder(longitude_rad, 2.0 * M_PI); }
 
 }  // namespace
 
-std::string stateProblem(const NavState& state) {
+std::string state_problem(const NavState& state) {
   const bool finite = std::isfinite(state.stamp_s) && state.q_body_to_enu.coeffs().allFinite() &&
                       state.velocity_enu_m_s.allFinite() && std::isfinite(state.latitude_rad) &&
                       std::isfinite(state.longitude_rad) && std::isfinite(state.height_m);
@@ -39,13 +39,13 @@ Navigator::Navigator(const NavigatorConfig& config)
     : earth_(config.earth), vertical_(config.vertical), compensator_(config.corrections) {}
 
 void Navigator::initialise(const NavState& initial_state) {
-  const std::string problem = stateProblem(initial_state);
+  const std::string problem = state_problem(initial_state);
   if (!problem.empty()) {
     throw InputError("nav: initial state: " + problem + "; check the alignment or the initial-state parameters");
   }
   state_ = initial_state;
   state_.q_body_to_enu.normalize();
-  state_.longitude_rad = wrapLongitude(state_.longitude_rad);
+  state_.longitude_rad = wrap_longitude(state_.longitude_rad);
   compensator_.reset();
   initialised_ = true;
 }
@@ -61,14 +61,14 @@ const NavState& Navigator::update(const Eigen::Vector3d& delta_angle_rad,
 
 const NavState& Navigator::update(const ImuIncrement& increment) {
   if (!initialised_) throw std::logic_error("nav: Navigator::update called before initialise");
-  validateIncrement(increment);
+  validate_increment(increment);
   const double dt = increment.dt_s;
   const CompensatedIncrement body = compensator_.compensate(increment);
 
   const NavState old = state_;
-  const Eigen::Vector3d earth_rate = earth_.earthRateEnu_rad_s(old.latitude_rad);
+  const Eigen::Vector3d earth_rate = earth_.earth_rate_enu_rad_s(old.latitude_rad);
   const Eigen::Vector3d transport_rate =
-      earth_.transportRateEnu_rad_s(old.velocity_enu_m_s, old.latitude_rad, old.height_m);
+      earth_.transport_rate_enu_rad_s(old.velocity_enu_m_s, old.latitude_rad, old.height_m);
 
   // Velocity: specific force rotated with the attitude at the interval start, corrected for the
   // nav frame turning during the interval; gravity and Coriolis from the start-of-interval state.
@@ -90,12 +90,12 @@ const NavState& Navigator::update(const ImuIncrement& increment) {
   const double mid_height = 0.5 * (old.height_m + state_.height_m);
   state_.latitude_rad =
       old.latitude_rad +
-      mean_velocity.y() / (earth_.meridianRadius_m(old.latitude_rad) + mid_height) * dt;
+      mean_velocity.y() / (earth_.meridian_radius_m(old.latitude_rad) + mid_height) * dt;
   const double mid_latitude = 0.5 * (old.latitude_rad + state_.latitude_rad);
-  state_.longitude_rad = wrapLongitude(
+  state_.longitude_rad = wrap_longitude(
       old.longitude_rad +
       mean_velocity.x() /
-          ((earth_.primeVerticalRadius_m(mid_latitude) + mid_height) * std::cos(mid_latitude)) *
+          ((earth_.prime_vertical_radius_m(mid_latitude) + mid_height) * std::cos(mid_latitude)) *
           dt);
   const VerticalCorrection height_loop = vertical_.feedback(old.height_m, dt);
   state_.height_m += height_loop.height_m;
@@ -104,13 +104,13 @@ const NavState& Navigator::update(const ImuIncrement& increment) {
   // Attitude: nav frame rotation at mid-interval, which also keeps the Schuler loop from
   // gaining energy through the explicit velocity step above.
   const Eigen::Vector3d nav_rotation_mid =
-      (earth_.earthRateEnu_rad_s(mid_latitude) +
-       earth_.transportRateEnu_rad_s(mean_velocity, mid_latitude, mid_height)) *
+      (earth_.earth_rate_enu_rad_s(mid_latitude) +
+       earth_.transport_rate_enu_rad_s(mean_velocity, mid_latitude, mid_height)) *
       dt;
   state_.q_body_to_enu =
-      propagateAttitude(old.q_body_to_enu, body.rotation_vector_rad, nav_rotation_mid);
+      propagate_attitude(old.q_body_to_enu, body.rotation_vector_rad, nav_rotation_mid);
   state_.stamp_s = old.stamp_s + dt;
-  const std::string problem = stateProblem(state_);
+  const std::string problem = state_problem(state_);
   if (!problem.empty()) {
     state_ = old;
     initialised_ = false;

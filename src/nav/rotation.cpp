@@ -13,7 +13,7 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
   return m;
 }
 
-Eigen::Quaterniond quaternionFromRotationVector(const Eigen::Vector3d& rotation_vector_rad) {
+Eigen::Quaterniond quaternion_from_rotation_vector(const Eigen::Vector3d& rotation_vector_rad) {
   const double angle = rotation_vector_rad.norm();
   // sin(angle/2)/angle is 0/0 at zero: use its series where the direct form loses digits.
   const double sin_half_over_angle =
@@ -23,7 +23,7 @@ Eigen::Quaterniond quaternionFromRotationVector(const Eigen::Vector3d& rotation_
                             vector_part.z());
 }
 
-Eigen::Vector3d rotationVectorFromQuaternion(const Eigen::Quaterniond& rotation) {
+Eigen::Vector3d rotation_vector_from_quaternion(const Eigen::Quaterniond& rotation) {
   Eigen::Quaterniond q = rotation.normalized();
   if (q.w() < 0.0) q.coeffs() = -q.coeffs();  // q and -q are the same rotation; take angle <= pi
   const double sin_half = q.vec().norm();
@@ -32,14 +32,14 @@ Eigen::Vector3d rotationVectorFromQuaternion(const Eigen::Quaterniond& rotation)
   return q.vec() * (angle / sin_half);
 }
 
-Eigen::Quaterniond propagateAttitude(const Eigen::Quaterniond& q_body_to_nav,
+Eigen::Quaterniond propagate_attitude(const Eigen::Quaterniond& q_body_to_nav,
                                      const Eigen::Vector3d& body_rotation_vector_rad,
                                      const Eigen::Vector3d& nav_rotation_vector_rad) {
   // C(k) = C_{n(k-1)}^{n(k)} C(k-1) C_{b(k)}^{b(k-1)}; the nav frame turning by +zeta moves
   // fixed vectors' coordinates by -zeta.
-  Eigen::Quaterniond updated = quaternionFromRotationVector(-nav_rotation_vector_rad) *
+  Eigen::Quaterniond updated = quaternion_from_rotation_vector(-nav_rotation_vector_rad) *
                                q_body_to_nav *
-                               quaternionFromRotationVector(body_rotation_vector_rad);
+                               quaternion_from_rotation_vector(body_rotation_vector_rad);
   updated.normalize();
   return updated;
 }

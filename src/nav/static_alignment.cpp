@@ -26,18 +26,18 @@ StaticAligner::StaticAligner(const StaticAlignmentConfig& config) : config_(conf
 }
 
 void StaticAligner::add(const ImuIncrement& increment) {
-  validateIncrement(increment);
+  validate_increment(increment);
   sum_delta_angle_rad_ += increment.delta_angle_rad;
   sum_delta_velocity_m_s_ += increment.delta_velocity_m_s;
   accumulated_s_ += increment.dt_s;
 }
 
-Eigen::Vector3d StaticAligner::meanAngularRate_rad_s() const {
+Eigen::Vector3d StaticAligner::mean_angular_rate_rad_s() const {
   return accumulated_s_ > 0.0 ? Eigen::Vector3d(sum_delta_angle_rad_ / accumulated_s_)
                               : Eigen::Vector3d::Zero();
 }
 
-Eigen::Vector3d StaticAligner::meanSpecificForce_m_s2() const {
+Eigen::Vector3d StaticAligner::mean_specific_force_m_s2() const {
   return accumulated_s_ > 0.0 ? Eigen::Vector3d(sum_delta_velocity_m_s_ / accumulated_s_)
                               : Eigen::Vector3d::Zero();
 }
@@ -46,18 +46,18 @@ Eigen::Quaterniond StaticAligner::attitude() const {
   if (accumulated_s_ <= 0.0) {
     throw InputError("nav alignment: no IMU data yet; feed increments with add() first");
   }
-  const Eigen::Vector3d specific_force = meanSpecificForce_m_s2();
+  const Eigen::Vector3d specific_force = mean_specific_force_m_s2();
   const double magnitude = specific_force.norm();
   if (magnitude < kMinStaticSpecificForce_m_s2 || magnitude > kMaxStaticSpecificForce_m_s2) {
     throw InputError("nav alignment: mean specific force is " + std::to_string(magnitude) +
                      " m/s^2, not about 1 g; the IMU is not static or the accelerometer units "
                      "are wrong");
   }
-  return config_.heading_source == HeadingSource::kGiven ? levelledWithGivenYaw(specific_force)
+  return config_.heading_source == HeadingSource::kGiven ? levelled_with_given_yaw(specific_force)
                                                          : gyrocompassed(specific_force);
 }
 
-Eigen::Quaterniond StaticAligner::levelledWithGivenYaw(const Eigen::Vector3d& f) const {
+Eigen::Quaterniond StaticAligner::levelled_with_given_yaw(const Eigen::Vector3d& f) const {
   // Static: f_body = C_enu^body (0, 0, g); with C_body^enu = Rz(yaw) Ry(pitch) Rx(roll) this is
   // g (-sin pitch, sin roll cos pitch, cos roll cos pitch).
   const double roll = std::atan2(f.y(), f.z());
@@ -70,7 +70,7 @@ Eigen::Quaterniond StaticAligner::levelledWithGivenYaw(const Eigen::Vector3d& f)
 
 Eigen::Quaterniond StaticAligner::gyrocompassed(const Eigen::Vector3d& f) const {
   const Eigen::Vector3d up = f.normalized();
-  const Eigen::Vector3d east_unnormalised = meanAngularRate_rad_s().cross(up);
+  const Eigen::Vector3d east_unnormalised = mean_angular_rate_rad_s().cross(up);
   if (east_unnormalised.norm() < kMinHorizontalRate_rad_s) {
     throw InputError("nav alignment: horizontal Earth rate is " +
                      std::to_string(east_unnormalised.norm()) +

@@ -7,7 +7,7 @@
 namespace imu_lab {
 namespace nav {
 
-VerticalLoopGains criticallyDampedVerticalGains(double time_constant_s, double schuler_rate_rad_s) {
+VerticalLoopGains critically_damped_vertical_gains(double time_constant_s, double schuler_rate_rad_s) {
   if (!(time_constant_s > 0.0)) {
     throw ConfigError("nav", "vertical.time_constant_s", "must be a positive number of seconds");
   }
@@ -29,14 +29,14 @@ VerticalChannel::VerticalChannel(const VerticalChannelConfig& config)
   }
 }
 
-void VerticalChannel::setReferenceHeight(double reference_height_m) {
+void VerticalChannel::set_reference_height(double reference_height_m) {
   if (!std::isfinite(reference_height_m)) {
     throw InputError("nav: reference height is not finite; drop the sample");
   }
   reference_height_m_ = reference_height_m;
 }
 
-void VerticalChannel::clearReferenceHeight() { reference_height_m_.reset(); }
+void VerticalChannel::clear_reference_height() { reference_height_m_.reset(); }
 
 bool VerticalChannel::aiding() const {
   return config_.mode == VerticalChannelMode::kHeld && reference_height_m_.has_value();

@@ -29,9 +29,9 @@ Eigen::Vector3d predicted_error_sigma_rad(const NavigationSettings& settings, co
                                            expected.accel_noise_density_m_s2_per_sqrt_hz *
                                                expected.accel_noise_density_m_s2_per_sqrt_hz);
   const double gravity = earth.gravity_m_s2(settings.latitude_rad, settings.height_m);
-  const double earth_rate = earth.earthRate_rad_s();
+  const double earth_rate = earth.earth_rate_rad_s();
   const Eigen::Matrix3d covariance =
-      nav::alignmentNoiseCovariance_rad2(gyro_effective, accel_effective, duration_s, settings.latitude_rad, gravity,
+      nav::alignment_noise_covariance_rad2(gyro_effective, accel_effective, duration_s, settings.latitude_rad, gravity,
                                          earth_rate > 0.0 ? earth_rate : 1.0);
   Eigen::Vector3d sigma = covariance.diagonal().cwiseSqrt();
   if (settings.alignment.heading_source == nav::HeadingSource::kGiven || !(earth_rate > 0.0)) {
@@ -133,7 +133,7 @@ SampleOutcome NavigationSession::add_rates(std::int64_t stamp_ns, const Eigen::V
                             : interval_s;
   nav::ImuIncrement increment;
   try {
-    increment = nav::incrementFromMeanRates(angular_rate_rad_s, specific_force_m_s2, interval_s);
+    increment = nav::increment_from_mean_rates(angular_rate_rad_s, specific_force_m_s2, interval_s);
   } catch (const InputError& error) {  // finite rates whose increment overflows
     return skip(SampleOutcome::kSkippedInvalid, counters_.invalid, error.what());
   }
@@ -181,8 +181,8 @@ SampleOutcome NavigationSession::integrate(std::int64_t stamp_ns, const nav::Imu
   }
   last_stamp_ns_ = stamp_ns;
   const nav::NavState& state = navigator_.state();
-  const Eigen::Vector3d enu_rate = navigator_.earth().earthRateEnu_rad_s(state.latitude_rad) +
-                                   navigator_.earth().transportRateEnu_rad_s(state.velocity_enu_m_s,
+  const Eigen::Vector3d enu_rate = navigator_.earth().earth_rate_enu_rad_s(state.latitude_rad) +
+                                   navigator_.earth().transport_rate_enu_rad_s(state.velocity_enu_m_s,
                                                                              state.latitude_rad, state.height_m);
   body_rate_wrt_enu_rad_s_ =
       increment.delta_angle_rad / increment.dt_s - state.q_body_to_enu.conjugate() * enu_rate;
@@ -203,8 +203,8 @@ SampleOutcome NavigationSession::finish_alignment(std::int64_t stamp_ns) {
   result.method = settings_.alignment.heading_source == nav::HeadingSource::kGyrocompass ? "gyrocompass"
                                                                                           : "given_heading";
   result.duration_s = aligner_.accumulated_s();
-  result.mean_angular_rate_rad_s = aligner_.meanAngularRate_rad_s();
-  result.mean_specific_force_m_s2 = aligner_.meanSpecificForce_m_s2();
+  result.mean_angular_rate_rad_s = aligner_.mean_angular_rate_rad_s();
+  result.mean_specific_force_m_s2 = aligner_.mean_specific_force_m_s2();
   result.predicted_error_sigma_rad = predicted_error_sigma_rad(settings_, navigator_.earth(), result.duration_s);
   result.q_body_to_enu = attitude;
   start_navigation(stamp_ns, result);

@@ -18,9 +18,9 @@ nav::HeadingSource parse_heading_source(const std::string& key, const std::strin
 nav::EarthModelConfig parse_earth_model(const std::string& key, const std::string& value) {
   nav::EarthModelConfig config;
   if (value == "wgs84") {
-    config.shape = nav::EarthShape::kWgs84Rotating;
+    config.shape = EarthShape::kWgs84Rotating;
   } else if (value == "sphere") {
-    config.shape = nav::EarthShape::kSphereNonRotating;
+    config.shape = EarthShape::kSphereNonRotating;
   } else {
     throw ConfigError("navigation settings", key, "is '" + value + "'; use wgs84 or sphere");
   }

@@ -32,7 +32,7 @@ NavigationError navigation_error(const NavigationSolution& solution, const io::T
   error.height_error_m = solution.height_m - truth.height_m;
   error.velocity_error_enu_m_s = solution.velocity_enu_m_s - truth.velocity_enu_m_s;
   error.attitude_error_enu_rad =
-      nav::rotationVectorFromQuaternion(solution.q_body_to_enu * truth.q_body_to_enu.conjugate());
+      nav::rotation_vector_from_quaternion(solution.q_body_to_enu * truth.q_body_to_enu.conjugate());
   return error;
 }
 

@@ -67,9 +67,9 @@ RateTableSetup load_rate_table_setup(const std::string& path) {
   if (f.has("earth_model")) {
     const std::string earth = f.text("earth_model");
     if (earth == "wgs84_rotating") {
-      setup.earth_model = emulator::EarthModel::kWgs84Rotating;
+      setup.earth_model = EarthShape::kWgs84Rotating;
     } else if (earth == "sphere_non_rotating") {
-      setup.earth_model = emulator::EarthModel::kSphereNonRotating;
+      setup.earth_model = EarthShape::kSphereNonRotating;
     } else {
       f.fail("earth_model", "expected 'wgs84_rotating' or 'sphere_non_rotating', got '" + earth + "'");
     }

@@ -32,9 +32,9 @@ std::string beside(const std::string& path, const std::string& suffix) {
   return (has_extension ? path.substr(0, dot) : path) + suffix;
 }
 
-imu_lab::emulator::EarthModel earth_model_named(const std::string& name) {
-  if (name == "wgs84_rotating") return imu_lab::emulator::EarthModel::kWgs84Rotating;
-  if (name == "sphere_non_rotating") return imu_lab::emulator::EarthModel::kSphereNonRotating;
+imu_lab::EarthShape earth_model_named(const std::string& name) {
+  if (name == "wgs84_rotating") return imu_lab::EarthShape::kWgs84Rotating;
+  if (name == "sphere_non_rotating") return imu_lab::EarthShape::kSphereNonRotating;
   throw imu_lab::ConfigError("--earth-model", "earth_model", "must be wgs84_rotating or sphere_non_rotating");
 }
 
@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
     }
     const imu_lab::ros_io::BagRecording bag = recording.recording();
     input.topic = topic = imu_lab::ros_io::choose_imu_topic(bag, topic);
-    std::vector<imu_lab::calib::CalibrationSample> samples;
+    std::vector<imu_lab::ImuSample> samples;
     imu_lab::ros_io::for_each_imu_strictly(bag, topic, [&](const imu_lab::io::ImuRecord& record) {
       samples.push_back({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2});
     });

@@ -112,7 +112,7 @@ int main(int argc, char** argv) {
   if (c.no_scale_factor) c.fit.accelerometer_scale_factor = c.fit.gyro_scale_factor = false;
   c.fit.second_sensor_term = !c.topics.second_temperature.empty();
   c.fit.earth.latitude_rad = c.latitude_deg * kRadPerDeg;
-  c.fit.earth.gravity_m_s2 = imu_lab::emulator::normal_gravity_m_s2(imu_lab::emulator::EarthModel::kWgs84Rotating,
+  c.fit.earth.gravity_m_s2 = imu_lab::emulator::normal_gravity_m_s2(imu_lab::EarthShape::kWgs84Rotating,
                                                                      c.fit.earth.latitude_rad, c.height_m);
   if (c.csv_path.empty()) c.csv_path = default_csv_path(c.out_path);
 

@@ -116,7 +116,7 @@ TEST(StrapdownNavigatorNode, PublishesTheNavigateToolsSolutionAndTheTransform) {
 
   double v0_m_s = 0.0;
   if (!ros::param::get("~single_channel_velocity_east_m_s", v0_m_s)) return;
-  const double w0 = imu_lab::nav::EarthModel(imu_lab::pipeline::parse_earth_model("sphere", "sphere")).schulerRate_rad_s();
+  const double w0 = imu_lab::nav::EarthModel(imu_lab::pipeline::parse_earth_model("sphere", "sphere")).schuler_rate_rad_s();
   const double peak_m = std::abs(v0_m_s) / w0;
   const ros::Time start = odometry.begin()->first;
   double worst_m = 0.0, last_t = 0.0;

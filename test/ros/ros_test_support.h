@@ -27,6 +27,8 @@ std::string read_file(const std::string& path);
 // returns destination.
 std::string write_truncated_copy(const std::string& source, const std::string& destination, double fraction);
 bool file_exists(const std::string& path);
+// Whether a tool's output holds the expected words.
+bool contains(const std::string& text, const std::string& part);
 // Sorted names of the entries of a directory (without . and ..).
 std::vector<std::string> list_directory(const std::string& path);
 // The thesis's 12 orientations (config/scenarios/multiposition_12_thesis.yaml) with 6 s dwells and

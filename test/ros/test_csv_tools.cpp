@@ -36,7 +36,7 @@ std::vector<TemperatureRecord> read_temperatures(const std::string& bag) {
 
 void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using imu_lab::test_support::contains;
 
 // A logger's file: semicolons, decimal commas, ms since boot, deg/s, g, a temperature column
 // that is empty where the thermosensor had no new reading.

@@ -13,7 +13,7 @@ using imu_lab::test_support::file_exists;
 using imu_lab::test_support::run_command;
 using imu_lab::test_support::scratch_directory;
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using imu_lab::test_support::contains;
 
 TEST(InstallSpace, ToolsAndLaunchFilesWorkFromTheInstallSpace) {
   const std::string directory = scratch_directory();

@@ -117,9 +117,9 @@ TEST_F(NavigateTool, AlignmentAndNavigationErrorsStayWithinTheNavCorePrediction)
   const MeanSensorError during_alignment = mean_sensor_error(bag(), 0, alignment_end_ns);
   const imu_lab::nav::EarthModel earth;
   const double latitude = during_alignment.truth.latitude_rad;
-  const Eigen::Vector3d predicted = imu_lab::nav::predictedAlignmentError_rad(
+  const Eigen::Vector3d predicted = imu_lab::nav::predicted_alignment_error_rad(
       during_alignment.gyro_rad_s, during_alignment.accel_m_s2, during_alignment.truth.q_body_to_enu, latitude,
-      earth.gravity_m_s2(latitude, during_alignment.truth.height_m), earth.earthRate_rad_s());
+      earth.gravity_m_s2(latitude, during_alignment.truth.height_m), earth.earth_rate_rad_s());
   const Eigen::Vector3d measured(errors.front().at("attitude_error_east_rad"),
                                  errors.front().at("attitude_error_north_rad"),
                                  errors.front().at("attitude_error_up_rad"));
@@ -341,7 +341,7 @@ TEST(NavigateToolSchuler, InitialVelocityErrorGivesTheSingleChannelSine) {
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const auto errors = read_error_csv(directory + "/trajectory_errors.csv");
   const imu_lab::nav::EarthModelConfig sphere = imu_lab::pipeline::parse_earth_model("sphere", "sphere");
-  const double w0 = imu_lab::nav::EarthModel(sphere).schulerRate_rad_s();
+  const double w0 = imu_lab::nav::EarthModel(sphere).schuler_rate_rad_s();
   const double v0_m_s = 1.0, peak_m = v0_m_s / w0;
   ASSERT_GE(errors.size(), 540u);
   ASSERT_GE(errors.back().at("time_since_alignment_s"), 5390.0);

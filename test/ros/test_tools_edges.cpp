@@ -31,7 +31,7 @@ using namespace imu_lab::test_support;  // NOLINT: the scratch, bag and tool hel
 constexpr std::int64_t kInterval_ns = 10'000'000;  // 100 Hz
 const std::string kData = IMU_LAB_TEST_DATA_DIR;
 
-bool contains(const std::string& text, const std::string& words) { return text.find(words) != std::string::npos; }
+using imu_lab::test_support::contains;
 
 using FileContents = std::map<std::string, std::string>;  // name -> bytes
 

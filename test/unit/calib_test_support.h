@@ -118,7 +118,7 @@ inline emulator::ScenarioConfig table_scenario(const Attitudes& positions, const
 }
 
 struct EmulatedRun {
-  std::vector<calib::CalibrationSample> samples;
+  std::vector<ImuSample> samples;
   calib::ImuCalibration truth;  // the emulator's realised error model
   calib::TableSchedule schedule;
 };
@@ -148,7 +148,7 @@ inline EmulatedRun emulate_table_run(const emulator::SensorProfile& profile, con
   const auto count = static_cast<std::size_t>(scenario.duration_s * run.rate_hz);
   result.samples.reserve(count);
   for (std::size_t k = 0; k < count; ++k) {
-    const emulator::ImuSample sample = imu.next();
+    const emulator::EmulatedSample sample = imu.next();
     result.samples.push_back({sample.stamp_s, sample.angular_rate_rad_s, sample.specific_force_m_s2});
   }
   return result;

@@ -26,7 +26,7 @@ calib_test::TableRun short_run() {
   return run;
 }
 
-std::string refusal(const std::vector<calib::CalibrationSample>& samples, const calib::CalibrationOptions& options) {
+std::string refusal(const std::vector<ImuSample>& samples, const calib::CalibrationOptions& options) {
   try {
     calib::calibrate(samples, options);
   } catch (const InputError& error) {
@@ -80,7 +80,7 @@ TEST(CalibRefusals, NoStaticIntervalsInAContinuousRotation) {
   emulator::EmulatorSettings settings;
   settings.rate_hz = 100.0;
   emulator::ImuEmulator imu(calib_test::tactical_test_profile(), scenario, settings);
-  std::vector<calib::CalibrationSample> samples;
+  std::vector<ImuSample> samples;
   imu.next();  // the table starts at rest: skip past the first instant
   for (int k = 0; k < 3000; ++k) {
     const auto sample = imu.next();

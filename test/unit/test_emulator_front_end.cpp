@@ -53,7 +53,7 @@ TEST(EmulatorOutputLsb, EverySampleIsAWholeNumberOfSteps) {
   const double lsb = 1e-3, tau0 = 1.0 / 200.0;
   ImuEmulator emulator(lsb_profile(lsb), static_scenario(), {200.0, 0.0, 3});
   for (int k = 0; k < 20000; ++k) {
-    const ImuSample sample = emulator.next();
+    const EmulatedSample sample = emulator.next();
     for (int axis = 0; axis < 3; ++axis) {
       ASSERT_TRUE(whole_steps(sample.angular_rate_rad_s[axis], lsb)) << sample.angular_rate_rad_s[axis];
       ASSERT_TRUE(whole_steps(sample.delta_angle_rad[axis], lsb * tau0));
@@ -75,7 +75,7 @@ TEST(EmulatorOutputLsb, AvarIsTheFilteredWhiteNoisePlusTheRoundingNoise) {
   const std::size_t count = std::size_t(1) << 20;
   std::vector<double> rates(count), errors(count);
   for (std::size_t k = 0; k < count; ++k) {
-    const ImuSample sample = emulator.next();
+    const EmulatedSample sample = emulator.next();
     rates[k] = sample.angular_rate_rad_s.x();
     errors[k] = sample.angular_rate_rad_s.x() - sample.truth.angular_rate_rad_s.x();
   }
@@ -173,7 +173,7 @@ TEST(EmulatorScaleFactorNonlinearity, RateTablePlateausAgainstHandComputedValues
     const double middle_s = start_s + 30.0;
     start_s += 60.0;
     previous_rate = plateau.table_rate_deg_s;
-    ImuSample sample, reference;
+    EmulatedSample sample, reference;
     while (sample.stamp_s < middle_s) {
       sample = emulator.next();
       reference = ideal.next();
@@ -249,7 +249,7 @@ TEST(EmulatorCrossAxisCorrelation, WhiteRateNoiseCarriesTheProfileMatrix) {
     const int stride = bandwidth_hz > 0.0 ? 10 : 1;
     std::vector<Eigen::Vector3d> noise;
     for (int k = 0; k < (1 << 17) * stride; ++k) {
-      const ImuSample sample = emulator.next();
+      const EmulatedSample sample = emulator.next();
       if (k % stride == 0) noise.push_back(sample.angular_rate_rad_s - sample.truth.angular_rate_rad_s);
     }
     expect_correlation(noise, correlation, bandwidth_hz > 0.0 ? "40 Hz filtered" : "white");
@@ -269,7 +269,7 @@ TEST(EmulatorCrossAxisCorrelation, IdentityLeavesTheStreamsAsBefore) {
   ImuEmulator a(profile, static_scenario(), {200.0, 0.0, 9}), b(explicit_identity, static_scenario(), {200.0, 0.0, 9});
   std::vector<Eigen::Vector3d> noise;
   for (int k = 0; k < (1 << 17); ++k) {
-    const ImuSample sa = a.next(), sb = b.next();
+    const EmulatedSample sa = a.next(), sb = b.next();
     ASSERT_EQ(sa.angular_rate_rad_s, sb.angular_rate_rad_s);
     noise.push_back(sa.angular_rate_rad_s - sa.truth.angular_rate_rad_s);
   }

@@ -49,7 +49,7 @@ TEST_P(EmulatorIdealTruth, RawEqualsTheTruthsIntervalAverages) {
   const long samples = std::lround(scenario.duration_s * kRateHz);
   std::array<double, 6> largest_truth{}, largest_difference{}, largest_increment_difference{};
   for (long k = 0; k < samples; ++k) {
-    const ImuSample s = emulator.next();
+    const EmulatedSample s = emulator.next();
     Eigen::Matrix<double, 6, 1> truth, raw, increment;
     truth << s.truth.angular_rate_rad_s, s.truth.specific_force_m_s2;
     raw << s.angular_rate_rad_s, s.specific_force_m_s2;

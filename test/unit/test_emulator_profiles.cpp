@@ -271,7 +271,7 @@ TEST_P(EmulatorShippedProfiles, LoadsAndRunsFourSeconds) {
   ImuEmulator emulator(profile, scenario, {GetParam().rate_hz, 100.0, 7});
   const auto count = static_cast<int>(4.0 * GetParam().rate_hz);
   Eigen::Vector3d force_sum = Eigen::Vector3d::Zero();
-  ImuSample sample;
+  EmulatedSample sample;
   for (int k = 0; k < count; ++k) {
     sample = emulator.next();
     ASSERT_TRUE(sample.angular_rate_rad_s.allFinite() && sample.specific_force_m_s2.allFinite());

@@ -24,7 +24,7 @@ TEST(EmulatorScenarioFiles, EveryShippedScenarioLoadsAndRuns) {
     const ScenarioConfig scenario = load_scenario(entry.path().string());
     ImuEmulator emulator(profile, scenario, {200.0, 1.0e9, 5});
     for (int k = 0; k < 400; ++k) {
-      const ImuSample s = emulator.next();
+      const EmulatedSample s = emulator.next();
       ASSERT_TRUE(s.angular_rate_rad_s.allFinite() && s.specific_force_m_s2.allFinite()) << entry.path();
       ASSERT_TRUE(std::isfinite(s.temperature_c)) << entry.path();
       ASSERT_NEAR(s.truth.attitude_body_to_enu.norm(), 1.0, 1e-12) << entry.path();

@@ -24,22 +24,22 @@ namespace scenario_test {
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
-inline ScenarioConfig shipped_scenario(const std::string& file, EarthModel earth) {
+inline ScenarioConfig shipped_scenario(const std::string& file, EarthShape earth) {
   ScenarioConfig scenario = load_scenario(test::config_path("scenarios/" + file));
   scenario.earth_model = earth;
   return scenario;
 }
 
 // Rate of the ENU frame w.r.t. inertial space at the truth's position and velocity.
-inline Eigen::Vector3d enu_frame_rate(const TruthState& truth, EarthModel earth) {
-  const bool sphere = earth == EarthModel::kSphereNonRotating;
-  const double e2 = sphere ? 0.0 : kWgs84Flattening * (2.0 - kWgs84Flattening);
-  const double a = sphere ? kSphereRadius_m : kWgs84SemiMajorAxis_m;
+inline Eigen::Vector3d enu_frame_rate(const TruthState& truth, EarthShape earth) {
+  const bool sphere = earth == EarthShape::kSphereNonRotating;
+  const double e2 = sphere ? 0.0 : wgs84::kEccentricitySquared;
+  const double a = sphere ? textbook_sphere::kRadius_m : wgs84::kSemiMajorAxis_m;
   const double s = std::sin(truth.latitude_rad);
   const double n = a / std::sqrt(1.0 - e2 * s * s);
   const double m = n * (1.0 - e2) / (1.0 - e2 * s * s);
   const Eigen::Vector3d& v = truth.velocity_enu_m_s;
-  const double w = sphere ? 0.0 : kWgs84EarthRate_rad_s;
+  const double w = sphere ? 0.0 : wgs84::kEarthRate_rad_s;
   const Eigen::Vector3d earth_rate(0.0, w * std::cos(truth.latitude_rad), w * s);
   const Eigen::Vector3d transport(-v.y() / (m + truth.height_m), v.x() / (n + truth.height_m),
                                   v.x() * std::tan(truth.latitude_rad) / (n + truth.height_m));
@@ -97,7 +97,7 @@ struct IntegrationErrors {
 //   lat' = v_N / (M + h), lon' = v_E / ((N + h) cos lat), h' = v_U,
 // from the truth at 0, compared with the truth at every step; steps no longer than max_step_s,
 // never across a cut.
-inline IntegrationErrors integrate_against_truth(const MotionSource& motion, EarthModel earth, double end_s,
+inline IntegrationErrors integrate_against_truth(const MotionSource& motion, EarthShape earth, double end_s,
                                                  const std::vector<double>& cuts, double max_step_s) {
   const TruthState initial = motion.truth_at(0.0);
   NavigationState state{initial.attitude_body_to_enu, initial.velocity_enu_m_s, initial.latitude_rad,
@@ -117,15 +117,15 @@ inline IntegrationErrors integrate_against_truth(const MotionSource& motion, Ear
                                        truth.angular_rate_body_rad_s.z());
     const Eigen::Quaterniond frame(0.0, frame_rate.x(), frame_rate.y(), frame_rate.z());
     const Eigen::Vector4d q_dot = 0.5 * ((s.attitude * body_rate).coeffs() - (frame * s.attitude).coeffs());
-    const bool sphere = earth == EarthModel::kSphereNonRotating;
+    const bool sphere = earth == EarthShape::kSphereNonRotating;
     here.velocity_enu_m_s.setZero();
     const Eigen::Vector3d earth_rate = enu_frame_rate(here, earth);
     const Eigen::Vector3d transport = frame_rate - earth_rate;
     const Eigen::Vector3d gravity(0.0, 0.0, -normal_gravity_m_s2(earth, s.latitude, s.height));
     const Eigen::Vector3d v_dot = s.attitude * truth.specific_force_body_m_s2 + gravity -
                                   (2.0 * earth_rate + transport).cross(s.velocity);
-    const double e2 = sphere ? 0.0 : kWgs84Flattening * (2.0 - kWgs84Flattening);
-    const double a = sphere ? kSphereRadius_m : kWgs84SemiMajorAxis_m;
+    const double e2 = sphere ? 0.0 : wgs84::kEccentricitySquared;
+    const double a = sphere ? textbook_sphere::kRadius_m : wgs84::kSemiMajorAxis_m;
     const double sl = std::sin(s.latitude);
     const double n = a / std::sqrt(1.0 - e2 * sl * sl);
     const double m = n * (1.0 - e2) / (1.0 - e2 * sl * sl);
@@ -159,7 +159,7 @@ inline IntegrationErrors integrate_against_truth(const MotionSource& motion, Ear
       state = advance(state, sum, h);
       state.attitude.normalize();
       const TruthState truth = motion.truth_at(t_end);
-      const double radius = kSphereRadius_m;
+      const double radius = textbook_sphere::kRadius_m;
       worst.attitude_rad = std::max(worst.attitude_rad, state.attitude.angularDistance(truth.attitude_body_to_enu));
       worst.velocity_m_s = std::max(worst.velocity_m_s, (state.velocity - truth.velocity_enu_m_s).norm());
       worst.position_m = std::max(

@@ -136,7 +136,7 @@ thermal:
     Eigen::Vector3d gyro_residual = Eigen::Vector3d::Zero(), accel_residual = Eigen::Vector3d::Zero();
     Eigen::Vector3d gyro_thermal = Eigen::Vector3d::Zero(), accel_thermal = Eigen::Vector3d::Zero();
     for (int k = 0; k < window; ++k) {
-      const ImuSample s = emulator.next();
+      const EmulatedSample s = emulator.next();
       const double dt_c = s.temperature_c - 20.0;  // the interval's mean temperature
       const Eigen::Vector3d force = s.truth.specific_force_m_s2;  // static: constant
       const Eigen::Vector3d gyro_model = polynomial(g.bias_polynomial, dt_c);
@@ -170,7 +170,7 @@ TEST(EmulatorScenarioThermal, SecondThermosensorOnlyWhenConfigured) {
   const SensorProfile profile = load_sensor_profile(test::config_path("sensors/tactical_mems.yaml"));
   ImuEmulator with(profile, load_scenario(test::config_path("scenarios/thermal_chamber.yaml")), {100.0, 0.0, 1});
   ImuEmulator without(profile, load_scenario(test::config_path("scenarios/static.yaml")), {100.0, 0.0, 1});
-  const ImuSample a = with.next(), b = without.next();
+  const EmulatedSample a = with.next(), b = without.next();
   ASSERT_TRUE(a.second_temperature_c.has_value() && a.truth.second_temperature_c.has_value());
   EXPECT_NEAR(*a.second_temperature_c, 20.0, 1e-6);  // the chamber starts at 20, self-heating at 0
   EXPECT_FALSE(b.second_temperature_c.has_value() || b.truth.second_temperature_c.has_value());

@@ -31,7 +31,7 @@ TEST(EmulatorScenarioTruth, QuadratureExactForDegree15AndSplitsAtBreakpoints) {
 
 struct TruthCase {
   const char* file;
-  EarthModel earth;
+  EarthShape earth;
   double window_s;              // run this long from the start
   std::vector<double> cuts_s;   // instants where the rate or force jumps (known from the file)
   double max_step_s;            // reference integrator step
@@ -56,7 +56,7 @@ TEST_P(EmulatorScenarioTruthCases, IncrementsEqualFineIntegralsOfTheTruth) {
     worst_velocity = std::max(worst_velocity, (increment.delta_velocity_m_s - velocity).norm());
   }
   std::printf("[truth] %s (%s): worst increment error %.2e rad, %.2e m/s per 10 ms sample\n", c.file,
-              c.earth == EarthModel::kWgs84Rotating ? "wgs84" : "sphere", worst_angle, worst_velocity);
+              c.earth == EarthShape::kWgs84Rotating ? "wgs84" : "sphere", worst_angle, worst_velocity);
   EXPECT_LT(worst_angle, 1e-10);
   EXPECT_LT(worst_velocity, 1e-9);
 }
@@ -67,7 +67,7 @@ TEST_P(EmulatorScenarioTruthCases, StrapdownEquationsReproduceTheTruth) {
   const auto errors =
       scenario_test::integrate_against_truth(*motion, c.earth, c.window_s, c.cuts_s, c.max_step_s);
   std::printf("[truth] %s (%s): RK4 over %.0f s: attitude %.2e rad, velocity %.2e m/s, position %.2e m\n",
-              c.file, c.earth == EarthModel::kWgs84Rotating ? "wgs84" : "sphere", c.window_s,
+              c.file, c.earth == EarthShape::kWgs84Rotating ? "wgs84" : "sphere", c.window_s,
               errors.attitude_rad, errors.velocity_m_s, errors.position_m);
   EXPECT_LT(errors.attitude_rad, 1e-9);
   EXPECT_LT(errors.velocity_m_s, 1e-7);
@@ -85,18 +85,18 @@ INSTANTIATE_TEST_SUITE_P(
     Shipped, EmulatorScenarioTruthCases,
     ::testing::Values(
         // 60 s dwell, a 180-degree turn, the next dwell: rate kinks only (no cuts needed).
-        TruthCase{"multiposition_6.yaml", EarthModel::kWgs84Rotating, 85.0, {}, 2e-3},
-        TruthCase{"multiposition_12_thesis.yaml", EarthModel::kSphereNonRotating, 130.0, {}, 2e-3},
+        TruthCase{"multiposition_6.yaml", EarthShape::kWgs84Rotating, 85.0, {}, 2e-3},
+        TruthCase{"multiposition_12_thesis.yaml", EarthShape::kSphereNonRotating, 130.0, {}, 2e-3},
         // +1, -1 and +10 deg/s holds and the changes between them.
-        TruthCase{"rate_table.yaml", EarthModel::kWgs84Rotating, 130.0, {}, 2e-3},
-        TruthCase{"coning.yaml", EarthModel::kWgs84Rotating, 20.0, {}, 1e-3},
-        TruthCase{"coning.yaml", EarthModel::kSphereNonRotating, 5.0, {}, 1e-3},
-        TruthCase{"sculling.yaml", EarthModel::kWgs84Rotating, 10.0, {}, 2e-4},
-        TruthCase{"trajectory.yaml", EarthModel::kWgs84Rotating, 400.0, trajectory_leg_ends(), 1e-2},
-        TruthCase{"trajectory.yaml", EarthModel::kSphereNonRotating, 120.0, trajectory_leg_ends(), 1e-2}));
+        TruthCase{"rate_table.yaml", EarthShape::kWgs84Rotating, 130.0, {}, 2e-3},
+        TruthCase{"coning.yaml", EarthShape::kWgs84Rotating, 20.0, {}, 1e-3},
+        TruthCase{"coning.yaml", EarthShape::kSphereNonRotating, 5.0, {}, 1e-3},
+        TruthCase{"sculling.yaml", EarthShape::kWgs84Rotating, 10.0, {}, 2e-4},
+        TruthCase{"trajectory.yaml", EarthShape::kWgs84Rotating, 400.0, trajectory_leg_ends(), 1e-2},
+        TruthCase{"trajectory.yaml", EarthShape::kSphereNonRotating, 120.0, trajectory_leg_ends(), 1e-2}));
 
 TEST(EmulatorScenarioTruth, DwellsSeeExactlyGravityAndEarthRateThroughTheirOrientation) {
-  for (EarthModel earth : {EarthModel::kWgs84Rotating, EarthModel::kSphereNonRotating}) {
+  for (EarthShape earth : {EarthShape::kWgs84Rotating, EarthShape::kSphereNonRotating}) {
     const ScenarioConfig scenario = scenario_test::shipped_scenario("multiposition_12_thesis.yaml", earth);
     auto motion = make_motion_source(scenario);
     const auto& config = *scenario.multi_position;
@@ -125,7 +125,7 @@ TEST(EmulatorScenarioTruth, DwellsSeeExactlyGravityAndEarthRateThroughTheirOrien
     }
     std::printf("[dwell] 12-position thesis scheme (%s): worst |rate - C^T w_ie| %.1e rad/s, "
                 "|force - C^T g| %.1e m/s^2, attitude %.1e rad\n",
-                earth == EarthModel::kWgs84Rotating ? "wgs84" : "sphere", worst_rate, worst_force, worst_attitude);
+                earth == EarthShape::kWgs84Rotating ? "wgs84" : "sphere", worst_rate, worst_force, worst_attitude);
     EXPECT_LT(worst_rate, 1e-18);
     EXPECT_LT(worst_force, 2e-14);
     EXPECT_LT(worst_attitude, 1e-12);
@@ -145,7 +145,7 @@ TEST(EmulatorScenarioTruth, ThesisSchemePutsEachAxisUpAndDown) {
 }
 
 TEST(EmulatorScenarioTruth, ConingIsTheClosedFormSolution) {
-  for (EarthModel earth : {EarthModel::kSphereNonRotating, EarthModel::kWgs84Rotating}) {
+  for (EarthShape earth : {EarthShape::kSphereNonRotating, EarthShape::kWgs84Rotating}) {
     const ScenarioConfig scenario = scenario_test::shipped_scenario("coning.yaml", earth);
     auto motion = make_motion_source(scenario);
     const double a = scenario.coning->half_angle_rad, w = 2.0 * M_PI * scenario.coning->frequency_hz;
@@ -170,20 +170,20 @@ TEST(EmulatorScenarioTruth, ConingIsTheClosedFormSolution) {
       z_sum += motion->increment(k * 0.01, 0.01).delta_angle_rad.z();
     }
     double z_expected = -2.0 * w * std::sin(a / 2) * std::sin(a / 2) * cycles_s;
-    if (earth == EarthModel::kWgs84Rotating) z_expected = std::nan("");  // Earth rate adds to z
+    if (earth == EarthShape::kWgs84Rotating) z_expected = std::nan("");  // Earth rate adds to z
     std::printf("[coning] %s: attitude %.1e rad, rate %.1e rad/s from the closed form; z drift %.6e rad "
-                "over %.0f s\n", earth == EarthModel::kWgs84Rotating ? "wgs84" : "sphere", worst_attitude,
+                "over %.0f s\n", earth == EarthShape::kWgs84Rotating ? "wgs84" : "sphere", worst_attitude,
                 worst_rate, z_sum, cycles_s);
     EXPECT_LT(worst_attitude, 1e-15);
     EXPECT_LT(worst_rate, 1e-14);
-    if (earth == EarthModel::kSphereNonRotating) {
+    if (earth == EarthShape::kSphereNonRotating) {
       EXPECT_NEAR(z_sum, z_expected, 1e-14);
     }
   }
 }
 
 TEST(EmulatorScenarioTruth, RateTableHoldsItsConfiguredRates) {
-  const ScenarioConfig scenario = scenario_test::shipped_scenario("rate_table.yaml", EarthModel::kWgs84Rotating);
+  const ScenarioConfig scenario = scenario_test::shipped_scenario("rate_table.yaml", EarthShape::kWgs84Rotating);
   auto motion = make_motion_source(scenario);
   const auto& table = *scenario.rate_table;
   double t = 0.0, rate = 0.0, worst = 0.0;
@@ -204,7 +204,7 @@ TEST(EmulatorScenarioTruth, RateTableHoldsItsConfiguredRates) {
 
 TEST(EmulatorScenarioTruth, TrajectoryFollowsItsLegs) {
   // Speed and yaw at each leg's end from the configured legs (plain sums in the test).
-  const ScenarioConfig scenario = scenario_test::shipped_scenario("trajectory.yaml", EarthModel::kWgs84Rotating);
+  const ScenarioConfig scenario = scenario_test::shipped_scenario("trajectory.yaml", EarthShape::kWgs84Rotating);
   auto motion = make_motion_source(scenario);
   double t = 0.0, speed = scenario.trajectory->initial_speed_m_s, yaw = scenario.trajectory->initial_yaw_rad;
   for (const auto& leg : scenario.trajectory->legs) {

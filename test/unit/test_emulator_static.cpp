@@ -64,7 +64,7 @@ Eigen::Vector3d expected_output(const TriadErrorModel& model, const TriadChannel
 struct RecordMeans {
   Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();
   Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();
-  ImuSample last;
+  EmulatedSample last;
 };
 
 RecordMeans record_means(ImuEmulator& emulator, int count) {
@@ -79,13 +79,13 @@ RecordMeans record_means(ImuEmulator& emulator, int count) {
 
 TEST(EmulatorStatic, NormalGravityReferenceValues) {
   // WGS-84 normal gravity (NIMA TR8350.2): equator, pole, 45 deg; free-air gradient ~3.086e-6 /s^2.
-  EXPECT_NEAR(normal_gravity_m_s2(EarthModel::kWgs84Rotating, 0.0, 0.0), 9.7803253359, 1e-9);
-  EXPECT_NEAR(normal_gravity_m_s2(EarthModel::kWgs84Rotating, 90 * kDeg, 0.0), 9.8321849378, 1e-9);
-  EXPECT_NEAR(normal_gravity_m_s2(EarthModel::kWgs84Rotating, 45 * kDeg, 0.0), 9.8061977694, 1e-9);
-  EXPECT_NEAR(normal_gravity_m_s2(EarthModel::kWgs84Rotating, 45 * kDeg, 1000.0) -
-                  normal_gravity_m_s2(EarthModel::kWgs84Rotating, 45 * kDeg, 0.0),
+  EXPECT_NEAR(normal_gravity_m_s2(EarthShape::kWgs84Rotating, 0.0, 0.0), 9.7803253359, 1e-9);
+  EXPECT_NEAR(normal_gravity_m_s2(EarthShape::kWgs84Rotating, 90 * kDeg, 0.0), 9.8321849378, 1e-9);
+  EXPECT_NEAR(normal_gravity_m_s2(EarthShape::kWgs84Rotating, 45 * kDeg, 0.0), 9.8061977694, 1e-9);
+  EXPECT_NEAR(normal_gravity_m_s2(EarthShape::kWgs84Rotating, 45 * kDeg, 1000.0) -
+                  normal_gravity_m_s2(EarthShape::kWgs84Rotating, 45 * kDeg, 0.0),
               -3.086e-3, 2e-6);
-  EXPECT_DOUBLE_EQ(normal_gravity_m_s2(EarthModel::kSphereNonRotating, 10 * kDeg, 0.0), 9.81);
+  EXPECT_DOUBLE_EQ(normal_gravity_m_s2(EarthShape::kSphereNonRotating, 10 * kDeg, 0.0), 9.81);
 }
 
 TEST(EmulatorStatic, TruthThroughOrientation) {
@@ -93,7 +93,7 @@ TEST(EmulatorStatic, TruthThroughOrientation) {
   const double lat = 55.75 * kDeg;
   StaticMotionSource north(scenario_at(55.75, 0.0, 0.0, 90.0));
   const TruthState truth = north.truth_at(5.0);
-  const double w = kWgs84EarthRate_rad_s, g = normal_gravity_m_s2(EarthModel::kWgs84Rotating, lat, 150.0);
+  const double w = wgs84::kEarthRate_rad_s, g = normal_gravity_m_s2(EarthShape::kWgs84Rotating, lat, 150.0);
   EXPECT_LT((truth.angular_rate_body_rad_s - Eigen::Vector3d(w * std::cos(lat), 0.0, w * std::sin(lat))).norm(), 1e-18);
   EXPECT_LT((truth.specific_force_body_m_s2 - Eigen::Vector3d(0.0, 0.0, g)).norm(), 1e-12);
   // Roll 90 deg about x: body y points Up, so the reaction to gravity is along +y.
@@ -111,7 +111,7 @@ TEST(EmulatorStatic, MeansEqualGravityAndEarthRateThroughBiasAndK) {
   ImuEmulator emulator(profile, scenario, settings);
   const int count = 200000;  // 1000 s
   const RecordMeans means = record_means(emulator, count);
-  const ImuSample& sample = means.last;
+  const EmulatedSample& sample = means.last;
   const Eigen::Vector3d true_rate = sample.truth.angular_rate_rad_s;
   const Eigen::Vector3d true_force = sample.truth.specific_force_m_s2;
   const Eigen::Vector3d gyro_expected =
@@ -142,7 +142,7 @@ TEST(EmulatorStatic, TacticalProfileMeansWithinTheBoundFromItsNoise) {
   const int count = 30000;
   const double duration = count / settings.rate_hz;
   const RecordMeans means = record_means(emulator, count);
-  const ImuSample& sample = means.last;
+  const EmulatedSample& sample = means.last;
   auto mean_sigma = [&](const TriadChannel& channel, int axis) {
     double variance = 0.0;
     for (const auto& process : channel.processes(axis)) {
@@ -172,14 +172,14 @@ TEST(EmulatorStatic, StampsIncrementsAndTruth) {
   const ScenarioConfig scenario = scenario_at(-33.9, 5.0, 6.0, 7.0);
   ImuEmulator emulator(profile, scenario, {250.0, 1.7e9, 3});
   for (int k = 1; k <= 1000; ++k) {
-    const ImuSample sample = emulator.next();
+    const EmulatedSample sample = emulator.next();
     ASSERT_EQ(sample.stamp_s, 1.7e9 + k / 250.0);  // end of the interval, from the index
     ASSERT_EQ(sample.delta_angle_rad, sample.angular_rate_rad_s * (1.0 / 250.0));
     ASSERT_EQ(sample.delta_velocity_m_s, sample.specific_force_m_s2 * (1.0 / 250.0));
     ASSERT_EQ(sample.truth.stamp_s, sample.stamp_s);
     ASSERT_EQ(sample.temperature_c, 31.5);
   }
-  const ImuSample sample = emulator.next();
+  const EmulatedSample sample = emulator.next();
   const Eigen::Quaterniond expected = attitude_from_roll_pitch_yaw(5 * kDeg, 6 * kDeg, 7 * kDeg);
   EXPECT_LT(sample.truth.attitude_body_to_enu.angularDistance(expected), 1e-15);
   EXPECT_EQ(sample.truth.velocity_enu_m_s, Eigen::Vector3d::Zero());
@@ -189,7 +189,7 @@ TEST(EmulatorStatic, StampsIncrementsAndTruth) {
 
 TEST(EmulatorStatic, NonRotatingSphereHasNoEarthRate) {
   ScenarioConfig scenario = scenario_at(45.0, 0.0, 0.0, 0.0);
-  scenario.earth_model = EarthModel::kSphereNonRotating;
+  scenario.earth_model = EarthShape::kSphereNonRotating;
   scenario.height_m = 0.0;
   StaticMotionSource source(scenario);
   EXPECT_EQ(source.truth_at(0.0).angular_rate_body_rad_s, Eigen::Vector3d::Zero());
@@ -201,7 +201,7 @@ std::vector<double> run_bits(std::uint64_t seed, const std::string& profile_file
                        load_scenario(test::config_path("scenarios/static.yaml")), {100.0, 0.0, seed});
   std::vector<double> values;
   for (int k = 0; k < 2000; ++k) {
-    const ImuSample s = emulator.next();
+    const EmulatedSample s = emulator.next();
     values.insert(values.end(), {s.angular_rate_rad_s.x(), s.angular_rate_rad_s.y(),
                                  s.angular_rate_rad_s.z(), s.specific_force_m_s2.x(),
                                  s.specific_force_m_s2.y(), s.specific_force_m_s2.z()});

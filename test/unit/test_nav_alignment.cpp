@@ -68,9 +68,9 @@ Eigen::Vector3d alignmentError(const AlignmentRun& run, unsigned seed) {
 }
 
 Eigen::Vector3d predictedError(const AlignmentRun& run) {
-  return predictedAlignmentError_rad(
+  return predicted_alignment_error_rad(
       run.gyro_bias_rad_s, run.accel_bias_m_s2, run.q_true, run.latitude_rad,
-      wgs84().gravity_m_s2(run.latitude_rad, run.height_m), wgs84().earthRate_rad_s());
+      wgs84().gravity_m_s2(run.latitude_rad, run.height_m), wgs84().earth_rate_rad_s());
 }
 
 TEST(NavAlignment, BiasesGiveThePredictedTiltAndHeadingErrors) {
@@ -93,10 +93,10 @@ TEST(NavAlignment, NoiseStaysWithinTheDerivedBound) {
   AlignmentRun run;
   run.gyro_arw_rad_per_sqrt_s = 0.002 * kDegToRad / 60.0;   // 0.002 deg/sqrt(h)
   run.accel_vrw_m_s_per_sqrt_s = 20e-6 * kStandardGravity;  // 20 micro-g/sqrt(Hz)
-  const Eigen::Matrix3d covariance = alignmentNoiseCovariance_rad2(
+  const Eigen::Matrix3d covariance = alignment_noise_covariance_rad2(
       run.gyro_arw_rad_per_sqrt_s, run.accel_vrw_m_s_per_sqrt_s, run.config.duration_s,
       run.latitude_rad, wgs84().gravity_m_s2(run.latitude_rad, run.height_m),
-      wgs84().earthRate_rad_s());
+      wgs84().earth_rate_rad_s());
   const Eigen::Matrix3d whitening = covariance.llt().matrixL().solve(Eigen::Matrix3d::Identity());
   const Eigen::Vector3d sigma = covariance.diagonal().cwiseSqrt();
   const Eigen::Vector3d predicted = predictedError(run);

@@ -51,10 +51,10 @@ double coningAttitudeError_rad(bool coning_correction) {
     ImuIncrement increment;
     increment.delta_angle_rad = motion.deltaAngle((k - 1) * kDt_s, k * kDt_s);
     increment.dt_s = kDt_s;
-    attitude = propagateAttitude(attitude, compensator.compensate(increment).rotation_vector_rad,
+    attitude = propagate_attitude(attitude, compensator.compensate(increment).rotation_vector_rad,
                                  Eigen::Vector3d::Zero());
   }
-  return rotationVectorFromQuaternion(attitude * motion.attitude(kDuration_s).conjugate()).norm();
+  return rotation_vector_from_quaternion(attitude * motion.attitude(kDuration_s).conjugate()).norm();
 }
 
 // The error of a motion integrated with the correction off and on; on must be 10x smaller.
@@ -93,7 +93,7 @@ double scullingVelocityError_m_s(bool sculling_correction) {
     const CompensatedIncrement compensated = compensator.compensate(increment);
     velocity += attitude * compensated.delta_velocity_m_s;
     attitude =
-        propagateAttitude(attitude, compensated.rotation_vector_rad, Eigen::Vector3d::Zero());
+        propagate_attitude(attitude, compensated.rotation_vector_rad, Eigen::Vector3d::Zero());
   }
   const Eigen::Vector3d truth(
       0.0, 0.0, accel_amplitude_m_s2 * std::cyl_bessel_j(1.0, roll_amplitude_rad) * kDuration_s);

@@ -19,16 +19,16 @@ TEST(NavEarthModel, SomiglianaNormalGravity) {
   EXPECT_NEAR(
       earth.gravity_m_s2(45.0 * kDegToRad, 1000.0) - earth.gravity_m_s2(45.0 * kDegToRad, 0.0),
       -3.086e-3, 1e-5);
-  EXPECT_NEAR(earth.meridianRadius_m(0.0), 6335439.327, 1e-3);
-  EXPECT_NEAR(earth.primeVerticalRadius_m(90.0 * kDegToRad), 6399593.626, 1e-3);
+  EXPECT_NEAR(earth.meridian_radius_m(0.0), 6335439.327, 1e-3);
+  EXPECT_NEAR(earth.prime_vertical_radius_m(90.0 * kDegToRad), 6399593.626, 1e-3);
 }
 
 TEST(NavEarthModel, TextbookSphere) {
   const EarthModel sphere(test_support::textbookSphere());
   EXPECT_DOUBLE_EQ(sphere.gravity_m_s2(0.3, 0.0), 9.81);
   EXPECT_DOUBLE_EQ(sphere.gravity_m_s2(0.3, 6371000.0), 9.81 / 4.0);
-  EXPECT_EQ(sphere.earthRateEnu_rad_s(0.3), Eigen::Vector3d::Zero());
-  EXPECT_NEAR(2.0 * M_PI / sphere.schulerRate_rad_s() / 60.0, 84.39, 0.01);
+  EXPECT_EQ(sphere.earth_rate_enu_rad_s(0.3), Eigen::Vector3d::Zero());
+  EXPECT_NEAR(2.0 * M_PI / sphere.schuler_rate_rad_s() / 60.0, 84.39, 0.01);
 }
 
 // A perfect static IMU on the rotating ellipsoid: Earth rate, normal gravity, curvature and the
@@ -57,9 +57,9 @@ TEST(NavRotatingEarth, SchulerOscillationTurnsAtTheFoucaultRate) {
   scenario.latitude_rad = 50.0 * kDegToRad;
   const EarthModel earth;
   const double w0_squared = earth.gravity_m_s2(scenario.latitude_rad, 0.0) /
-                            std::sqrt(earth.meridianRadius_m(scenario.latitude_rad) *
-                                      earth.primeVerticalRadius_m(scenario.latitude_rad));
-  const double foucault_rate = earth.earthRate_rad_s() * std::sin(scenario.latitude_rad);
+                            std::sqrt(earth.meridian_radius_m(scenario.latitude_rad) *
+                                      earth.prime_vertical_radius_m(scenario.latitude_rad));
+  const double foucault_rate = earth.earth_rate_rad_s() * std::sin(scenario.latitude_rad);
   const double schuler_rate = std::sqrt(w0_squared + foucault_rate * foucault_rate);
   scenario.duration_s = 1.5 * 2.0 * M_PI / schuler_rate;
   scenario.initial_velocity_error_enu_m_s = Eigen::Vector3d(1.0, 0.0, 0.0);
@@ -93,17 +93,17 @@ TEST(NavRotatingEarth, ConstantVelocityFlightFollowsTheEllipsoid) {
   const auto position_rate = [&](const Eigen::Vector2d& latitude_longitude) {
     const double latitude = latitude_longitude.x();
     return Eigen::Vector2d(
-        velocity_enu.y() / earth.meridianRadius_m(latitude),
-        velocity_enu.x() / (earth.primeVerticalRadius_m(latitude) * std::cos(latitude)));
+        velocity_enu.y() / earth.meridian_radius_m(latitude),
+        velocity_enu.x() / (earth.prime_vertical_radius_m(latitude) * std::cos(latitude)));
   };
   const auto body_rate = [&](double latitude) {
-    return (earth.earthRateEnu_rad_s(latitude) +
-            earth.transportRateEnu_rad_s(velocity_enu, latitude, 0.0))
+    return (earth.earth_rate_enu_rad_s(latitude) +
+            earth.transport_rate_enu_rad_s(velocity_enu, latitude, 0.0))
         .eval();
   };
   const auto specific_force = [&](double latitude) {
-    const Eigen::Vector3d coriolis_rate = 2.0 * earth.earthRateEnu_rad_s(latitude) +
-                                          earth.transportRateEnu_rad_s(velocity_enu, latitude, 0.0);
+    const Eigen::Vector3d coriolis_rate = 2.0 * earth.earth_rate_enu_rad_s(latitude) +
+                                          earth.transport_rate_enu_rad_s(velocity_enu, latitude, 0.0);
     return (coriolis_rate.cross(velocity_enu) +
             Eigen::Vector3d(0.0, 0.0, earth.gravity_m_s2(latitude, 0.0)))
         .eval();

@@ -72,7 +72,7 @@ SlopeEstimate measureDispersionSlope(const NoiseCase& noise, std::uint64_t seed)
       ImuIncrement increment;
       increment.delta_angle_rad = delta_angles[k] + angle_noise();
       increment.dt_s = kDt_s;
-      attitude = propagateAttitude(attitude, compensator.compensate(increment).rotation_vector_rad,
+      attitude = propagate_attitude(attitude, compensator.compensate(increment).rotation_vector_rad,
                                    Eigen::Vector3d::Zero());
       if (k + 1 == kEarlyStep) *early = attitude;
     }
@@ -101,8 +101,8 @@ SlopeEstimate measureDispersionSlope(const NoiseCase& noise, std::uint64_t seed)
     Eigen::Quaterniond early, end;
     propagate(angle_noise, &early, &end);
     const Eigen::Vector3d error_early =
-        rotationVectorFromQuaternion(early * true_early.conjugate());
-    const Eigen::Vector3d error_end = rotationVectorFromQuaternion(end * true_end.conjugate());
+        rotation_vector_from_quaternion(early * true_early.conjugate());
+    const Eigen::Vector3d error_end = rotation_vector_from_quaternion(end * true_end.conjugate());
     sum_early += error_early;
     sum_end += error_end;
     const double difference = error_end.squaredNorm() - error_early.squaredNorm();

@@ -76,16 +76,16 @@ TEST(NavNavigatorApi, StopsWhenAStepMakesTheStateUnusable) {
   navigator.initialise(NavState());
   EXPECT_THROW(navigator.update(Eigen::Vector3d::Constant(1e300), Eigen::Vector3d::Constant(1e300), 0.01),
                UnusableStateError);
-  EXPECT_TRUE(stateProblem(usable).empty());
+  EXPECT_TRUE(state_problem(usable).empty());
 }
 
 TEST(NavNavigatorApi, RateAveragesBecomeIncrements) {
   const ImuIncrement increment =
-      incrementFromMeanRates(Eigen::Vector3d(0.1, 0.2, 0.3), Eigen::Vector3d(0.0, 0.0, 9.8), 0.01);
+      increment_from_mean_rates(Eigen::Vector3d(0.1, 0.2, 0.3), Eigen::Vector3d(0.0, 0.0, 9.8), 0.01);
   EXPECT_TRUE(increment.delta_angle_rad.isApprox(Eigen::Vector3d(1e-3, 2e-3, 3e-3)));
   EXPECT_TRUE(increment.delta_velocity_m_s.isApprox(Eigen::Vector3d(0.0, 0.0, 0.098)));
   EXPECT_EQ(increment.dt_s, 0.01);
-  EXPECT_THROW(incrementFromMeanRates(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.0),
+  EXPECT_THROW(increment_from_mean_rates(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.0),
                InputError);
 }
 

@@ -33,7 +33,7 @@ StaticScenario heldSphereScenario(double duration_s) {
   return scenario;
 }
 
-double schulerRate() { return EarthModel(test_support::textbookSphere()).schulerRate_rad_s(); }
+double schulerRate() { return EarthModel(test_support::textbookSphere()).schuler_rate_rad_s(); }
 double schulerPeriod_s() { return 2.0 * M_PI / schulerRate(); }
 
 // Every sample's horizontal error within tolerance_fraction of the formula's peak over the run.
@@ -103,7 +103,7 @@ TEST(NavSchuler, HorizontalGyroDriftGivesRampWithSchulerRipple) {
   scenario.gyro_bias_body_rad_s = Eigen::Vector3d(0.0, drift_rad_s, 0.0);  // horizontal axis
   const Eigen::Vector3d drift_enu = scenario.q_body_to_enu * scenario.gyro_bias_body_rad_s;
   const double w0 = schulerRate();
-  const double radius_m = EarthModel(test_support::textbookSphere()).meridianRadius_m(0.0);
+  const double radius_m = EarthModel(test_support::textbookSphere()).meridian_radius_m(0.0);
   const auto formula = [&](double t) -> Eigen::Vector2d {
     return radius_m * Eigen::Vector2d(drift_enu.y(), -drift_enu.x()) * (t - std::sin(w0 * t) / w0);
   };

@@ -32,7 +32,7 @@ inline ImuIncrement staticImuIncrement(const EarthModel& earth,
                                        double height_m, double dt_s) {
   const Eigen::Quaterniond enu_to_body = q_body_to_enu.conjugate();
   ImuIncrement increment;
-  increment.delta_angle_rad = enu_to_body * earth.earthRateEnu_rad_s(latitude_rad) * dt_s;
+  increment.delta_angle_rad = enu_to_body * earth.earth_rate_enu_rad_s(latitude_rad) * dt_s;
   increment.delta_velocity_m_s =
       enu_to_body * Eigen::Vector3d(0.0, 0.0, earth.gravity_m_s2(latitude_rad, height_m)) * dt_s;
   increment.dt_s = dt_s;
@@ -46,16 +46,16 @@ inline Eigen::Vector3d positionErrorEnu_m(const EarthModel& earth, const NavStat
   const double longitude_error =
       std::remainder(estimate.longitude_rad - truth.longitude_rad, 2.0 * M_PI);
   return Eigen::Vector3d(
-      longitude_error * (earth.primeVerticalRadius_m(latitude) + truth.height_m) *
+      longitude_error * (earth.prime_vertical_radius_m(latitude) + truth.height_m) *
           std::cos(latitude),
-      (estimate.latitude_rad - latitude) * (earth.meridianRadius_m(latitude) + truth.height_m),
+      (estimate.latitude_rad - latitude) * (earth.meridian_radius_m(latitude) + truth.height_m),
       estimate.height_m - truth.height_m);
 }
 
 // Small rotation delta (nav axes) with estimate = exp(delta) * truth.
 inline Eigen::Vector3d attitudeError_rad(const Eigen::Quaterniond& estimate,
                                          const Eigen::Quaterniond& truth) {
-  return rotationVectorFromQuaternion(estimate * truth.conjugate());
+  return rotation_vector_from_quaternion(estimate * truth.conjugate());
 }
 
 // A static IMU with constant sensor errors, navigated from a (possibly wrong) initial state.

@@ -28,7 +28,7 @@ StaticScenario sphereScenario(VerticalChannelMode mode, double duration_s) {
   return scenario;
 }
 
-double schulerRate() { return EarthModel(test_support::textbookSphere()).schulerRate_rad_s(); }
+double schulerRate() { return EarthModel(test_support::textbookSphere()).schuler_rate_rad_s(); }
 
 // Relative agreement with a closed form at every sample; returns the worst relative deviation.
 double expectHeightErrorFollows(const std::vector<ErrorSample>& samples,
@@ -120,10 +120,10 @@ TEST(NavVertical, ReferenceFedLaterPullsFreeChannelBack) {
   for (int step = 0; step < 600; ++step) navigator.update(increment);
   const double free_error_m = navigator.state().height_m;
   EXPECT_GT(free_error_m, 10.0 * std::cosh(std::sqrt(2.0) * schulerRate() * 600.0) * 0.98);
-  navigator.setReferenceHeight(0.0);
+  navigator.set_reference_height(0.0);
   for (int step = 0; step < 600; ++step) navigator.update(increment);  // 20 loop time constants
   EXPECT_LT(std::abs(navigator.state().height_m), 1e-3 * free_error_m);
-  navigator.clearReferenceHeight();  // prediction mode again: nothing pulls it any more
+  navigator.clear_reference_height();  // prediction mode again: nothing pulls it any more
   navigator.initialise(initial);
   for (int step = 0; step < 600; ++step) navigator.update(increment);
   EXPECT_NEAR(navigator.state().height_m, free_error_m, 1e-9 * free_error_m);

@@ -57,9 +57,9 @@ imu_lab::pipeline::NavigationSettings settings_from_truth(const imu_lab::emulato
   settings.latitude_rad = truth.latitude_rad;
   settings.longitude_rad = truth.longitude_rad;
   settings.height_m = truth.height_m;
-  settings.navigator.earth.shape = scenario.earth_model == imu_lab::emulator::EarthModel::kWgs84Rotating
-                                       ? imu_lab::nav::EarthShape::kWgs84Rotating
-                                       : imu_lab::nav::EarthShape::kSphereNonRotating;
+  settings.navigator.earth.shape = scenario.earth_model == imu_lab::EarthShape::kWgs84Rotating
+                                       ? imu_lab::EarthShape::kWgs84Rotating
+                                       : imu_lab::EarthShape::kSphereNonRotating;
   settings.navigator.vertical.fixed_reference_height_m = truth.height_m;
   return settings;
 }
@@ -77,12 +77,12 @@ TEST_P(NavigateIdealImu, StartedFromTheTruthEndsWithin5cmWithEitherInput) {
   emulator_settings.rate_hz = kRateHz;
   imu_lab::emulator::ImuEmulator emulator(imu_lab::emulator::load_sensor_profile(config_path("sensors/ideal.yaml")),
                                           scenario, emulator_settings);
-  const imu_lab::emulator::ImuSample first = emulator.next();
+  const imu_lab::emulator::EmulatedSample first = emulator.next();
   const auto settings = settings_from_truth(scenario, first.truth);
   NavigationSession rates(settings), increments(settings);
   const imu_lab::nav::LocalEnuFrame world(settings.navigator.earth, settings.latitude_rad, settings.longitude_rad,
                                              settings.height_m);
-  const auto to_increment = [&](const imu_lab::emulator::ImuSample& s) {
+  const auto to_increment = [&](const imu_lab::emulator::EmulatedSample& s) {
     imu_lab::nav::ImuIncrement increment;
     increment.delta_angle_rad = s.delta_angle_rad;
     increment.delta_velocity_m_s = s.delta_velocity_m_s;
@@ -103,7 +103,7 @@ TEST_P(NavigateIdealImu, StartedFromTheTruthEndsWithin5cmWithEitherInput) {
   };
   const long samples = std::lround(scenario.duration_s * kRateHz);
   for (long k = 1; k < samples; ++k) {
-    const imu_lab::emulator::ImuSample s = emulator.next();
+    const imu_lab::emulator::EmulatedSample s = emulator.next();
     const auto truth = truth_record(s.truth);
     ASSERT_EQ(rates.add_rates(truth.stamp_ns, s.angular_rate_rad_s, s.specific_force_m_s2), SampleOutcome::kNavigated);
     ASSERT_EQ(increments.add_increment(truth.stamp_ns, to_increment(s)), SampleOutcome::kNavigated);

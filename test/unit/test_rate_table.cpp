@@ -61,7 +61,7 @@ std::vector<ImuSample> emulate(const emulator::SensorProfile& profile, std::uint
   std::vector<ImuSample> samples;
   const auto count = static_cast<std::size_t>(scenario.duration_s * rate_hz);
   for (std::size_t k = 0; k < count; ++k) {
-    const emulator::ImuSample s = emulator.next();
+    const emulator::EmulatedSample s = emulator.next();
     samples.push_back({s.stamp_s, s.angular_rate_rad_s, s.specific_force_m_s2});
   }
   return samples;

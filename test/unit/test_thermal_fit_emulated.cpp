@@ -25,7 +25,7 @@ thermal::ThermalFitOptions fit_options(bool rate_term) {
   options.temperature_rate_term = rate_term;
   options.earth.latitude_rad = 50.45 * M_PI / 180.0;
   options.earth.gravity_m_s2 =
-      emulator::normal_gravity_m_s2(emulator::EarthModel::kWgs84Rotating, options.earth.latitude_rad, 180.0);
+      emulator::normal_gravity_m_s2(EarthShape::kWgs84Rotating, options.earth.latitude_rad, 180.0);
   return options;
 }
 

@@ -71,7 +71,7 @@ TEST(ThermalModel, TemperatureHistoryMatchesByStampAndEstimatesTheRate) {
 // The node's compensator must give the same output whatever the interleaving of the topics.
 TEST(ThermalModel, CompensatorOutputDoesNotDependOnArrivalOrder) {
   const auto model = example_model();
-  std::vector<thermal::ImuReading> readings;
+  std::vector<ImuSample> readings;
   std::vector<std::pair<double, double>> temperatures;
   for (int i = 1; i <= 3000; ++i) {
     const double t = 0.01 * i;

@@ -29,7 +29,7 @@ inline std::string shipped_scenario(const std::string& name) { return std::strin
 inline std::string test_scenario(const std::string& name) { return std::string(IMU_LAB_TEST_DATA_DIR) + "/thermal/" + name + ".yaml"; }
 
 struct ThermalRun {
-  std::vector<thermal::ImuReading> readings;
+  std::vector<ImuSample> readings;
   thermal::TemperatureHistory temperature;
   thermal::TemperatureHistory second_temperature;
   // What the profile's temperature terms added to each sample (bias + scale factor * true input).
@@ -51,7 +51,7 @@ inline ThermalRun emulate_thermal_run(const emulator::SensorProfile& profile, co
   const auto count = static_cast<std::size_t>(std::llround(scenario.duration_s / run.sample_interval_s));
   run.readings.reserve(count);
   for (std::size_t k = 0; k < count; ++k) {
-    const emulator::ImuSample sample = imu.next();
+    const emulator::EmulatedSample sample = imu.next();
     run.readings.push_back({sample.stamp_s, sample.angular_rate_rad_s, sample.specific_force_m_s2});
     run.temperature.add(sample.stamp_s, sample.temperature_c);
     if (sample.second_temperature_c) run.second_temperature.add(sample.stamp_s, *sample.second_temperature_c);

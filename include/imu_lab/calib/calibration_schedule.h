@@ -16,7 +16,7 @@ namespace calib {
 struct CalibrationSite {
   double latitude_rad = 0.0;
   double height_m = 0.0;
-  emulator::EarthModel earth_model = emulator::EarthModel::kWgs84Rotating;
+  EarthShape earth_model = EarthShape::kWgs84Rotating;
 
   double gravity_m_s2() const;               // WGS-84 normal gravity (Somigliana) at the site
   Eigen::Vector3d earth_rate_enu_rad_s() const;

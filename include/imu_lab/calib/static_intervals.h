@@ -12,8 +12,6 @@
 namespace imu_lab {
 namespace calib {
 
-using CalibrationSample = ImuSample;
-
 struct StaticInterval {
   std::size_t begin = 0;  // first sample
   std::size_t end = 0;    // one past the last sample
@@ -39,7 +37,7 @@ struct StaticDetection {
 };
 
 // Throws InputError if the samples are too few for one window or the stamps are not increasing.
-StaticDetection detect_static_intervals(const std::vector<CalibrationSample>& samples,
+StaticDetection detect_static_intervals(const std::vector<ImuSample>& samples,
                                         const StaticDetectionOptions& options);
 
 }  // namespace calib

@@ -40,7 +40,10 @@ struct TruthSample {
   std::optional<double> second_temperature_c;  // when the scenario has a second thermosensor
 };
 
-struct ImuSample {
+// What one step of the emulator gives: the sensor's output (rates, increments, temperatures, the
+// noise variances a message's covariances carry) with the truth it was made from; the ROS layer
+// turns it into messages (ros_io/msg/emulator_messages.h).
+struct EmulatedSample {
   double stamp_s = 0.0;  // end of the interval
   Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();   // interval average
   Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();  // interval average
@@ -68,7 +71,7 @@ class ImuEmulator {
   ImuEmulator(ImuEmulator&&) noexcept;
   ImuEmulator& operator=(ImuEmulator&&) noexcept;
 
-  ImuSample next();
+  EmulatedSample next();
 
   double sample_interval_s() const { return interval_s_; }
   std::uint64_t samples_emitted() const { return sample_index_; }

@@ -21,11 +21,11 @@ struct RadiiOfCurvature {
 };
 
 // WGS-84: M = a (1 - e^2) / (1 - e^2 sin^2 lat)^1.5, N = a / sqrt(1 - e^2 sin^2 lat); sphere: R.
-RadiiOfCurvature radii_of_curvature(EarthModel model, double latitude_rad);
+RadiiOfCurvature radii_of_curvature(EarthShape model, double latitude_rad);
 
 // Rate of the ENU frame w.r.t. the Earth while moving: (-v_N / (M + h), v_E / (N + h),
 // v_E tan(lat) / (N + h)).
-Eigen::Vector3d transport_rate_enu_rad_s(EarthModel model, double latitude_rad, double height_m,
+Eigen::Vector3d transport_rate_enu_rad_s(EarthShape model, double latitude_rad, double height_m,
                                          const Eigen::Vector3d& velocity_enu_m_s);
 
 struct LocalLevelMotion {
@@ -38,7 +38,7 @@ struct LocalLevelMotion {
   Eigen::Vector3d rate_body_wrt_enu_rad_s = Eigen::Vector3d::Zero();  // w_nb^b, body axes
 };
 
-TruthState truth_from_local_level(const LocalLevelMotion& motion, EarthModel model,
+TruthState truth_from_local_level(const LocalLevelMotion& motion, EarthShape model,
                                   double time_s, double temperature_c);
 
 }  // namespace emulator

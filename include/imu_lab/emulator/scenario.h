@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "imu_lab/emulator/motion_source.h"
+#include "imu_lab/common/earth_constants.h"
 
 namespace YAML {
 class Node;
@@ -18,11 +19,6 @@ class Node;
 
 namespace imu_lab {
 namespace emulator {
-
-enum class EarthModel {
-  kWgs84Rotating,      // WGS-84 ellipsoid, Somigliana normal gravity with height term, Earth rate
-  kSphereNonRotating,  // sphere R = 6371 km, g = 9.81 m/s^2, no Earth rate
-};
 
 // Multi-position sequence on a table: dwell in each orientation, then rotate to the next about
 // the single axis joining them, with a trapezoidal rate profile (accelerate, cruise, decelerate).
@@ -112,7 +108,7 @@ struct ScenarioConfig {
   double pitch_rad = 0.0;
   double yaw_rad = 0.0;
   double temperature_c = 25.0;  // constant, when there is no thermal block
-  EarthModel earth_model = EarthModel::kWgs84Rotating;
+  EarthShape earth_model = EarthShape::kWgs84Rotating;
   double duration_s = 0.0;
   std::string source;
   // The block matching `type` (none for static), and the optional thermal profile.

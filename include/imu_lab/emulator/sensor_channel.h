@@ -52,7 +52,7 @@ class TriadChannel {
 
   // The rate-dependent response r above, dead zone included (no bias, no noise).
   Eigen::Vector3d response(const Eigen::Vector3d& true_average, const Eigen::Vector3d& thermal_scale) const;
-  // Per-axis variance of one sample's stationary noise (see ImuSample); the LSB adds LSB^2 / 12.
+  // Per-axis variance of one sample's stationary noise (see EmulatedSample); the LSB adds LSB^2 / 12.
   Eigen::Vector3d sample_variance(double interval_s) const;
   // b_fixed + the run-to-run bias drawn for this run.
   Eigen::Vector3d total_bias() const { return model_.bias_fixed + turn_on_bias_; }

@@ -15,28 +15,19 @@
 
 #include <Eigen/Core>
 
+#include "imu_lab/common/earth_constants.h"
+
 namespace imu_lab {
 namespace nav {
 
-namespace wgs84 {
-constexpr double kSemiMajorAxis_m = 6378137.0;
-constexpr double kFlattening = 1.0 / 298.257223563;
-constexpr double kEccentricitySquared = kFlattening * (2.0 - kFlattening);
-constexpr double kEarthRate_rad_s = 7.292115e-5;
-constexpr double kEquatorialGravity_m_s2 = 9.7803253359;
-constexpr double kSomiglianaConstant = 0.00193185265241;  // k = (b g_p - a g_e) / (a g_e)
-constexpr double kGravityRatio = 0.00344978650684;        // m = w^2 a^2 b / GM
-}  // namespace wgs84
-
-enum class EarthShape { kWgs84Rotating, kSphereNonRotating };
 enum class SphereGravityLaw { kInverseSquare, kConstant };
 
 struct EarthModelConfig {
   EarthShape shape = EarthShape::kWgs84Rotating;
   // Used only by kSphereNonRotating:
   SphereGravityLaw sphere_gravity_law = SphereGravityLaw::kInverseSquare;
-  double sphere_radius_m = 6371000.0;
-  double sphere_surface_gravity_m_s2 = 9.81;
+  double sphere_radius_m = textbook_sphere::kRadius_m;
+  double sphere_surface_gravity_m_s2 = textbook_sphere::kSurfaceGravity_m_s2;
 };
 
 class EarthModel {
@@ -48,17 +39,17 @@ class EarthModel {
   // Magnitude of (normal) gravity; the vector is (0, 0, -g) in ENU.
   double gravity_m_s2(double latitude_rad, double height_m) const;
   // Radius of curvature in the meridian (north-south), R_M, and in the prime vertical, R_N.
-  double meridianRadius_m(double latitude_rad) const;
-  double primeVerticalRadius_m(double latitude_rad) const;
-  double earthRate_rad_s() const;  // zero for the non-rotating sphere
+  double meridian_radius_m(double latitude_rad) const;
+  double prime_vertical_radius_m(double latitude_rad) const;
+  double earth_rate_rad_s() const;  // zero for the non-rotating sphere
   // Earth rate relative to inertial space, in ENU: (0, W cos L, W sin L).
-  Eigen::Vector3d earthRateEnu_rad_s(double latitude_rad) const;
+  Eigen::Vector3d earth_rate_enu_rad_s(double latitude_rad) const;
   // Rate of the ENU frame relative to the Earth caused by moving over the curved surface:
   // (-v_N / (R_M + h), v_E / (R_N + h), v_E tan L / (R_N + h)).
-  Eigen::Vector3d transportRateEnu_rad_s(const Eigen::Vector3d& velocity_enu_m_s,
+  Eigen::Vector3d transport_rate_enu_rad_s(const Eigen::Vector3d& velocity_enu_m_s,
                                          double latitude_rad, double height_m) const;
   // Schuler frequency sqrt(g / R) at the surface (the equator for WGS-84).
-  double schulerRate_rad_s() const;
+  double schuler_rate_rad_s() const;
 
  private:
   EarthModelConfig config_;

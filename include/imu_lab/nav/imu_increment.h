@@ -4,7 +4,7 @@
 //
 // The coning and sculling corrections (coning_sculling.h) are derived for true increments, i.e.
 // integrals over the interval. A rate sample that is the sensor's average over its interval turns
-// into the exact increment by multiplying with dt (incrementFromMeanRates). A point sample of the
+// into the exact increment by multiplying with dt (increment_from_mean_rates). A point sample of the
 // rate multiplied by dt is only an approximation of the increment; the corrections then fix
 // errors the data do not contain and can add their own.
 #pragma once
@@ -23,11 +23,11 @@ struct ImuIncrement {
 // Increment from interval-average angular rate (rad/s) and specific force (m/s^2):
 // increment = average * dt. Throws InputError for a non-positive or non-finite dt or non-finite
 // rates.
-ImuIncrement incrementFromMeanRates(const Eigen::Vector3d& mean_angular_rate_rad_s,
+ImuIncrement increment_from_mean_rates(const Eigen::Vector3d& mean_angular_rate_rad_s,
                                     const Eigen::Vector3d& mean_specific_force_m_s2, double dt_s);
 
 // Throws InputError naming what is wrong if the increment cannot be integrated.
-void validateIncrement(const ImuIncrement& increment);
+void validate_increment(const ImuIncrement& increment);
 
 }  // namespace nav
 }  // namespace imu_lab

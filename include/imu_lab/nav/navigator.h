@@ -16,7 +16,7 @@
 //  - attitude: q(k) = exp(-zeta) q(k-1) exp(phi), zeta evaluated at mid-interval, normalised.
 // Not valid within a few metres of the poles (ENU and longitude are singular there).
 //
-// The navigator checks its own state after every step (stateProblem): NaN/Inf anywhere, a latitude
+// The navigator checks its own state after every step (state_problem): NaN/Inf anywhere, a latitude
 // at or beyond a pole, or a height beyond +-1000 km (kMaxAbsoluteHeight_m) means the input was
 // absurd (units, a wild sample) or the free vertical channel has run away; update() then throws
 // UnusableStateError and the navigator stops until initialise() is called again.
@@ -42,7 +42,7 @@ constexpr double kMaxAbsoluteHeight_m = 1.0e6;
 
 // Why a state cannot be navigated from or published (empty when it can): NaN/Inf in any field or
 // a zero quaternion, a latitude not strictly between the poles, |height| > kMaxAbsoluteHeight_m.
-std::string stateProblem(const NavState& state);
+std::string state_problem(const NavState& state);
 
 // The step that made the state unusable: bad data, so an InputError.
 class UnusableStateError : public InputError {
@@ -61,23 +61,23 @@ class Navigator {
   explicit Navigator(const NavigatorConfig& config = NavigatorConfig());
 
   // Starts (or restarts) navigation from a known state; forgets the previous increment.
-  // Throws InputError naming the problem for a state stateProblem() refuses.
+  // Throws InputError naming the problem for a state state_problem() refuses.
   void initialise(const NavState& initial_state);
   bool initialised() const { return initialised_; }
 
   // One IMU interval: increments in the body frame; stamp advances by dt_s.
   // Throws std::logic_error before initialise(), InputError for a bad increment, and
-  // UnusableStateError when the new state is unusable (stateProblem); then state() keeps the last
+  // UnusableStateError when the new state is unusable (state_problem); then state() keeps the last
   // usable state and initialised() is false until the next initialise().
   const NavState& update(const Eigen::Vector3d& delta_angle_rad,
                          const Eigen::Vector3d& delta_velocity_m_s, double dt_s);
   const NavState& update(const ImuIncrement& increment);
 
   // Height aiding for the held vertical channel (e.g. from a barometer topic).
-  void setReferenceHeight(double reference_height_m) {
-    vertical_.setReferenceHeight(reference_height_m);
+  void set_reference_height(double reference_height_m) {
+    vertical_.set_reference_height(reference_height_m);
   }
-  void clearReferenceHeight() { vertical_.clearReferenceHeight(); }
+  void clear_reference_height() { vertical_.clear_reference_height(); }
 
   const NavState& state() const { return state_; }
   const EarthModel& earth() const { return earth_; }

@@ -14,15 +14,15 @@ namespace nav {
 Eigen::Matrix3d skew(const Eigen::Vector3d& vector);
 
 // Exact (not small-angle) quaternion of a rotation through |r| about r / |r|.
-Eigen::Quaterniond quaternionFromRotationVector(const Eigen::Vector3d& rotation_vector_rad);
+Eigen::Quaterniond quaternion_from_rotation_vector(const Eigen::Vector3d& rotation_vector_rad);
 
 // Inverse of the above; returns the rotation vector of angle in [0, pi].
-Eigen::Vector3d rotationVectorFromQuaternion(const Eigen::Quaterniond& rotation);
+Eigen::Vector3d rotation_vector_from_quaternion(const Eigen::Quaterniond& rotation);
 
 // One attitude step of a body->nav quaternion: the body turned by body_rotation_vector_rad
 // (coning-compensated, in the body frame at the interval start) while the nav frame turned by
 // nav_rotation_vector_rad (in nav axes) relative to inertial space. Result is normalised.
-Eigen::Quaterniond propagateAttitude(const Eigen::Quaterniond& q_body_to_nav,
+Eigen::Quaterniond propagate_attitude(const Eigen::Quaterniond& q_body_to_nav,
                                      const Eigen::Vector3d& body_rotation_vector_rad,
                                      const Eigen::Vector3d& nav_rotation_vector_rad);
 

@@ -34,8 +34,8 @@ class StaticAligner {
   void add(const ImuIncrement& increment);
   bool complete() const { return accumulated_s_ >= config_.duration_s; }
   double accumulated_s() const { return accumulated_s_; }
-  Eigen::Vector3d meanAngularRate_rad_s() const;
-  Eigen::Vector3d meanSpecificForce_m_s2() const;
+  Eigen::Vector3d mean_angular_rate_rad_s() const;
+  Eigen::Vector3d mean_specific_force_m_s2() const;
 
   // Body->ENU attitude from the data so far (normally called once complete()). Throws InputError
   // if there is no data, the specific force is not gravity-like, or (gyrocompassing) the
@@ -45,7 +45,7 @@ class StaticAligner {
   void reset();
 
  private:
-  Eigen::Quaterniond levelledWithGivenYaw(const Eigen::Vector3d& specific_force) const;
+  Eigen::Quaterniond levelled_with_given_yaw(const Eigen::Vector3d& specific_force) const;
   Eigen::Quaterniond gyrocompassed(const Eigen::Vector3d& specific_force) const;
 
   StaticAlignmentConfig config_;

@@ -16,6 +16,8 @@
 
 #include <optional>
 
+#include "imu_lab/common/earth_constants.h"
+
 namespace imu_lab {
 namespace nav {
 
@@ -27,7 +29,7 @@ struct VerticalLoopGains {
 };
 
 // Gains giving a double root at -1 / time_constant_s for a Schuler rate w0.
-VerticalLoopGains criticallyDampedVerticalGains(double time_constant_s, double schuler_rate_rad_s);
+VerticalLoopGains critically_damped_vertical_gains(double time_constant_s, double schuler_rate_rad_s);
 
 struct VerticalCorrection {
   double height_m = 0.0;
@@ -36,10 +38,10 @@ struct VerticalCorrection {
 
 struct VerticalChannelConfig {
   VerticalChannelMode mode = VerticalChannelMode::kHeld;
-  // Defaults: criticallyDampedVerticalGains(30 s, sqrt(9.7803253359 / 6378137)).
+  // Defaults: critically_damped_vertical_gains(30 s, sqrt(g_e / a)), WGS-84 at the equator.
   double k1_per_s = -2.0 / 30.0;
-  double k2_per_s2 = -1.0 / 900.0 - 2.0 * 9.7803253359 / 6378137.0;
-  // A fixed reference; without one, the held channel runs free until setReferenceHeight is called.
+  double k2_per_s2 = -1.0 / 900.0 - 2.0 * wgs84::kEquatorialGravity_m_s2 / wgs84::kSemiMajorAxis_m;
+  // A fixed reference; without one, the held channel runs free until set_reference_height is called.
   std::optional<double> fixed_reference_height_m;
 };
 
@@ -48,9 +50,9 @@ class VerticalChannel {
   explicit VerticalChannel(const VerticalChannelConfig& config = VerticalChannelConfig());
 
   // A new reference (e.g. barometer or GNSS height from a topic). Ignored in kFree mode.
-  void setReferenceHeight(double reference_height_m);
-  // Reference lost: run free (prediction) until the next setReferenceHeight.
-  void clearReferenceHeight();
+  void set_reference_height(double reference_height_m);
+  // Reference lost: run free (prediction) until the next set_reference_height.
+  void clear_reference_height();
   bool aiding() const;
 
   // Feedback of eq. (34) over one step of dt_s, from the height at the interval start (which

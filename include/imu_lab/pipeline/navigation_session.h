@@ -11,7 +11,7 @@
 // first sample's stamp, with either input: a rate sample only starts the first interval, and the
 // first increment, which covers the interval ending there, is not integrated either.
 //
-// The navigator checks its state after every step (nav::stateProblem): when it becomes unusable
+// The navigator checks its state after every step (nav::state_problem): when it becomes unusable
 // (NaN/Inf, |height| > 1000 km, ...) the session stops (kDiverged, then kHalted for every sample),
 // keeps the last usable solution and the stamp and reason (divergence()), and starts again from
 // scratch only when reinitialise() is called.
@@ -118,7 +118,7 @@ class NavigationSession {
   const std::string& last_problem() const { return last_problem_; }
   const NavigationSettings& settings() const { return settings_; }
   // Height aiding for a held vertical channel (e.g. from a topic).
-  void set_reference_height(double reference_height_m) { navigator_.setReferenceHeight(reference_height_m); }
+  void set_reference_height(double reference_height_m) { navigator_.set_reference_height(reference_height_m); }
 
  private:
   // Resets the per-sample flags. Returns the outcome (counted) of a sample that goes no further: a

@@ -25,7 +25,7 @@ namespace rate_table {
 struct RateTableSetup {
   std::string source;
   double latitude_rad = 0.0;
-  emulator::EarthModel earth_model = emulator::EarthModel::kWgs84Rotating;
+  EarthShape earth_model = EarthShape::kWgs84Rotating;
   Eigen::Vector3d axis_enu = Eigen::Vector3d::UnitZ();  // unit
   Eigen::Quaterniond mount_body_to_enu = Eigen::Quaterniond::Identity();
   // Plateau rates in running order, consecutive repeats merged (one plateau on the recording).

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "imu_lab/common/earth_constants.h"
 #include "imu_lab/thermal/thermal_windows.h"
 
 namespace imu_lab {
@@ -14,7 +15,7 @@ namespace thermal {
 
 struct EarthReference {
   double gravity_m_s2 = 9.80665;
-  double earth_rate_rad_s = 7.292115e-5;
+  double earth_rate_rad_s = wgs84::kEarthRate_rad_s;
   double latitude_rad = 0.0;
 };
 

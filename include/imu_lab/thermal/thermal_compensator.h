@@ -20,7 +20,7 @@ namespace thermal {
 struct CompensatedSample {
   enum class Status { kCorrected, kClamped, kStale };
   Status status = Status::kCorrected;
-  ImuReading corrected;  // the raw reading when stale
+  ImuSample corrected;  // the raw reading when stale
   ThermalInput input;    // what the correction used (before clamping)
 };
 
@@ -32,7 +32,7 @@ class ThermalCompensator {
   // readings are refused (false / counted) and change nothing.
   bool add_temperature(double stamp_s, double temperature_c, std::vector<CompensatedSample>* ready);
   bool add_second_temperature(double stamp_s, double temperature_c, std::vector<CompensatedSample>* ready);
-  bool add_imu(const ImuReading& reading, std::vector<CompensatedSample>* ready);
+  bool add_imu(const ImuSample& reading, std::vector<CompensatedSample>* ready);
   // Decides every waiting sample with what has arrived (end of a bag).
   void flush(std::vector<CompensatedSample>* ready);
 
@@ -42,13 +42,13 @@ class ThermalCompensator {
  private:
   void release(bool everything, std::vector<CompensatedSample>* ready);
   bool has_reading_after(const TemperatureHistory& history, double stamp_s) const;
-  CompensatedSample compensate(const ImuReading& reading) const;
+  CompensatedSample compensate(const ImuSample& reading) const;
 
   ThermalModel model_;
   double max_temperature_age_s_;
   TemperatureHistory temperature_;
   TemperatureHistory second_temperature_;
-  std::deque<ImuReading> waiting_;
+  std::deque<ImuSample> waiting_;
   double newest_imu_stamp_s_ = -1.0;
 };
 

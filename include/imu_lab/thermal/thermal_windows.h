@@ -15,8 +15,6 @@
 namespace imu_lab {
 namespace thermal {
 
-using ImuReading = ImuSample;
-
 struct ThermalWindow {
   double start_s = 0.0;  // window [start, start + window)
   double mid_stamp_s = 0.0;
@@ -52,7 +50,7 @@ class ThermalWindowAverager {
 
   // Samples in stamp order. Throws InputError when the temperature is stale at the sample's
   // stamp (no reading within max_temperature_age_s) or stamps go backwards.
-  void add(const ImuReading& reading);
+  void add(const ImuSample& reading);
   // Closes the last window and returns all of them.
   std::vector<ThermalWindow> finish();
 

@@ -38,7 +38,7 @@ std::uint64_t write_emulated_bag(emulator::ImuEmulator& emulator, const Emulated
   const auto sample_count = static_cast<std::uint64_t>(std::llround(samples));
   AtomicBag bag(bag_path);
   for (std::uint64_t i = 0; i < sample_count; ++i) {
-    const emulator::ImuSample sample = emulator.next();
+    const emulator::EmulatedSample sample = emulator.next();
     const ros::Time stamp = sample_stamp(emulator.settings().start_time_s, interval_s, emulator.samples_emitted());
     const EmulatorMessages messages = to_messages(sample, stamp, interval_s, options.frame_id);
     bag.write(options.topics.raw, stamp, messages.raw);

@@ -19,7 +19,7 @@ ros::Time sample_stamp(double start_time_s, double interval_s, std::uint64_t n) 
   return start + ros::Duration(static_cast<double>(n) * interval_s);
 }
 
-EmulatorMessages to_messages(const emulator::ImuSample& sample, const ros::Time& stamp, double interval_s,
+EmulatorMessages to_messages(const emulator::EmulatedSample& sample, const ros::Time& stamp, double interval_s,
                              const std::string& frame_id) {
   EmulatorMessages out;
   std_msgs::Header header;

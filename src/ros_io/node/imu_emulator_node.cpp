@@ -47,7 +47,7 @@ ImuEmulatorNode::ImuEmulatorNode(ros::NodeHandle& node, ros::NodeHandle& private
 }
 
 void ImuEmulatorNode::publish_next() {
-  const emulator::ImuSample sample = emulator_->next();
+  const emulator::EmulatedSample sample = emulator_->next();
   const double interval_s = emulator_->sample_interval_s();
   const ros::Time stamp = sample_stamp(emulator_->settings().start_time_s, interval_s, emulator_->samples_emitted());
   EmulatorMessages messages = to_messages(sample, stamp, interval_s, frame_id_);

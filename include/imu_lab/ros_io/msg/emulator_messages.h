@@ -38,7 +38,7 @@ struct EmulatorMessages {
 // `frame_id` names the sensor frame (REP-145). The Imu orientation is marked unknown
 // (covariance[0] = -1): a raw IMU does not estimate attitude. Covariance diagonals are the
 // profile's per-sample stationary noise variances.
-EmulatorMessages to_messages(const emulator::ImuSample& sample, const ros::Time& stamp, double interval_s,
+EmulatorMessages to_messages(const emulator::EmulatedSample& sample, const ros::Time& stamp, double interval_s,
                              const std::string& frame_id);
 
 // Header stamp of the n-th sample (n counts from 1; the stamp is the end of the interval), in

@@ -19,7 +19,7 @@
 //   expected_rate_hz (input_health.h; gap_factor is the navigation's own).
 // Bad input (NaN, gaps, unordered stamps) is skipped, logged (throttled) and counted in the
 // diagnostics (input_health.h); the node keeps running.
-// When the navigation state becomes unusable (NaN/Inf, |height| > 1000 km: nav::stateProblem) the
+// When the navigation state becomes unusable (NaN/Inf, |height| > 1000 km: nav::state_problem) the
 // node stops publishing solutions, logs the stamp and reason once and reports them on
 // /diagnostics at ERROR level at every update; it starts again (alignment, or the given initial
 // state at the next sample) only when told to: service ~reinitialise (std_srvs/Trigger), which
