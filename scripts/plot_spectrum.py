@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""Plot the spectrum tool's CSV files: per triad, each axis's one-sided PSD with its confidence
-interval (log-log), and each axis's autocorrelation with the white-noise band.
+"""Plot the spectrum tool's CSV files: per triad, each axis's one-sided PSD (log-log; the x axis's
+confidence interval shaded, the same factors hold for every axis), and each axis's autocorrelation
+with the white-noise band.
 
     scripts/plot_spectrum.py spectrum_psd.csv spectrum_autocorrelation.csv spectrum.png
 
@@ -27,11 +28,15 @@ def main(psd_path, autocorrelation_path, png_path):
         for axis in "xyz":
             channel = f"{triad}_{axis}"
             key = next(name for name in psd[0] if name.startswith(channel + "_psd_") and name.endswith("_per_hz"))
-            line, = top.loglog(frequency, [float(row[key]) for row in psd], lw=0.8, label=axis)
-            top.fill_between(frequency, [float(row[key + "_lower"]) for row in psd],
-                             [float(row[key + "_upper"]) for row in psd], color=line.get_color(), alpha=0.2)
-            bottom.plot(lag, [float(row[channel]) for row in acf], lw=0.8, label=axis)
-        top.set_title(f"{triad}: Welch PSD with its interval")
+            line, = top.loglog(frequency, [float(row[key]) for row in psd], lw=0.6, label=axis)
+            if axis == "x":
+                top.fill_between(frequency, [float(row[key + "_lower"]) for row in psd],
+                                 [float(row[key + "_upper"]) for row in psd], color=line.get_color(), alpha=0.15,
+                                 lw=0, label="x: interval")
+                factors = (float(psd[0][key + "_lower"]) / float(psd[0][key]),
+                           float(psd[0][key + "_upper"]) / float(psd[0][key]))
+            bottom.plot(lag, [float(row[channel]) for row in acf], lw=0.6, label=axis)
+        top.set_title(f"{triad}: Welch PSD, interval x{factors[0]:.2g} .. x{factors[1]:.2g} of the estimate")
         top.set_xlabel("frequency [Hz]")
         top.set_ylabel(f"one-sided PSD [{unit}]")
         top.grid(alpha=0.3, which="both")
@@ -42,7 +47,7 @@ def main(psd_path, autocorrelation_path, png_path):
         bottom.set_ylabel("r(lag)")
         bottom.grid(alpha=0.3)
         bottom.legend(fontsize=8)
-    save_figure(figure, png_path, 90)
+    save_figure(figure, png_path, 72)
 
 
 if __name__ == "__main__":

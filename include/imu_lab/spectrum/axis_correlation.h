@@ -1,4 +1,4 @@
-// Correlation of a triad's three axes' noise (Krobka 2015 eq. 2.36's cross terms): the sample
+// Correlation of a triad's three axes' noise (Krobka 2015 eq. 2.36 at equal times, normalised): the sample
 // correlation matrix of the axes' samples, each axis's mean removed, at tau0 and of the means of
 // non-overlapping blocks of m samples (the noise after averaging over m tau0). Correlated white
 // noise keeps its matrix under averaging; noise whose low-frequency part is correlated

@@ -24,7 +24,7 @@ struct PowerSpectrum {
   // Equivalent degrees of freedom of each bin away from 0 and Nyquist, for a spectrum that is
   // smooth over a few bins: 2 K / (1 + 2 (1 - 1/K) c^2) for K segments, c the correlation of
   // neighbouring windowed segments (sum of w_k w_(k+L/2) over sum of w_k^2: 1/6 for Hann at 50 %
-  // overlap), Welch 1967 eq. 11, Percival & Walden 1993 eq. 292b: about 1.89 per segment.
+  // overlap), Welch 1967, Percival & Walden 1993 eq. 292b: about 1.89 per segment.
   double degrees_of_freedom = 0.0;
 };
 
@@ -34,7 +34,7 @@ double bin_degrees_of_freedom(const PowerSpectrum& spectrum, std::size_t bin);
 
 // Two-sided chi-squared confidence interval of the true density at one bin: nu P / chi2(nu, (1 +
 // confidence) / 2) .. nu P / chi2(nu, (1 - confidence) / 2), nu = bin_degrees_of_freedom
-// (Bendat & Piersol 2010 section 8.5.4). Both NaN at DC. Throws std::invalid_argument unless
+// (Bendat & Piersol 2010 ch. 8). Both NaN at DC. Throws std::invalid_argument unless
 // 0 < confidence < 1.
 struct DensityInterval {
   double lower = 0.0;
