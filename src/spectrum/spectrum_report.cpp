@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "imu_lab/common/config_error.h"
@@ -35,12 +34,6 @@ void emit_matrix(YAML::Emitter& out, const char* key, const Eigen::Matrix3d& mat
     out << YAML::EndSeq;
   }
   out << YAML::EndSeq;
-}
-
-std::string fixed(double value, const char* format) {
-  char text[64];
-  std::snprintf(text, sizeof text, format, value);
-  return text;
 }
 
 }  // namespace
@@ -181,16 +174,16 @@ std::string correlation_yaml(const SpectrumAnalysis& analysis, const std::string
 
 std::string spectrum_summary(const SpectrumAnalysis& analysis) {
   const PowerSpectrum& first = analysis.channels.front().psd;
-  std::string text = std::to_string(analysis.sample_count) + " samples, tau0 " + fixed(analysis.tau0_s, "%.6g") +
+  std::string text = std::to_string(analysis.sample_count) + " samples, tau0 " + format_printf(analysis.tau0_s, "%.6g") +
                      " s; Welch: " + std::to_string(first.segment_count) + " segments of " +
-                     std::to_string(first.segment_length) + ", resolution " + fixed(first.resolution_hz, "%.4g") +
-                     " Hz, " + fixed(first.degrees_of_freedom, "%.1f") + " degrees of freedom per bin\n";
+                     std::to_string(first.segment_length) + ", resolution " + format_printf(first.resolution_hz, "%.4g") +
+                     " Hz, " + format_printf(first.degrees_of_freedom, "%.1f") + " degrees of freedom per bin\n";
   for (const TriadCorrelation& triad : analysis.triads) {
     for (const AxisCorrelation& c : triad.by_factor) {
-      text += triad.triad + " axis correlation at " + fixed(c.averaging_time_s, "%.4g") + " s: xy " +
-              fixed(c.correlation(0, 1), "%+.3f") + " xz " + fixed(c.correlation(0, 2), "%+.3f") + " yz " +
-              fixed(c.correlation(1, 2), "%+.3f") + " (" + fixed(100.0 * analysis.confidence, "%.3g") +
-              " % half-width ~" + fixed(0.5 * (c.upper(0, 1) - c.lower(0, 1)), "%.2g") + ")" +
+      text += triad.triad + " axis correlation at " + format_printf(c.averaging_time_s, "%.4g") + " s: xy " +
+              format_printf(c.correlation(0, 1), "%+.3f") + " xz " + format_printf(c.correlation(0, 2), "%+.3f") + " yz " +
+              format_printf(c.correlation(1, 2), "%+.3f") + " (" + format_printf(100.0 * analysis.confidence, "%.3g") +
+              " % half-width ~" + format_printf(0.5 * (c.upper(0, 1) - c.lower(0, 1)), "%.2g") + ")" +
               (c.blocks_look_independent() ? "" : ", block means correlated in time: interval too narrow") + "\n";
     }
   }

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "imu_lab/ros/config_paths.h"
 #include "ros_test_support.h"
@@ -25,15 +27,10 @@ using imu_lab::test_support::scratch_directory;
 constexpr double kGyroDensity = 1e-3;  // rad/s/sqrt(Hz)
 constexpr double kCorrelation[3][3] = {{1.0, 0.5, -0.2}, {0.5, 1.0, 0.1}, {-0.2, 0.1, 1.0}};
 
-struct CorrelatedBag {
-  std::string directory, bag;
-};
-
-const CorrelatedBag& correlated_bag() {
-  static const CorrelatedBag bag = [] {
-    CorrelatedBag b;
-    b.directory = scratch_directory();
-    b.bag = b.directory + "/static.bag";
+// Emulated once for the whole file.
+const std::string& correlated_bag() {
+  static const std::string bag = [] {
+    const std::string directory = scratch_directory();
     // The ideal profile with white noise only: the gyro's axes correlated, the accelerometer's not.
     YAML::Node root = YAML::LoadFile(imu_lab::ros_io::resolve_config("sensors", "ideal"));
     root["name"] = "correlated";
@@ -41,21 +38,20 @@ const CorrelatedBag& correlated_bag() {
         "{white_rate: {density_rad_s_per_sqrt_hz: 1.0e-3, "
         "axis_correlation: [[1, 0.5, -0.2], [0.5, 1, 0.1], [-0.2, 0.1, 1]]}}");
     root["accelerometer"]["noise"] = YAML::Load("{white_rate: {density_m_s2_per_sqrt_hz: 1.0e-3}}");
-    const std::string profile = b.directory + "/correlated.yaml";
+    const std::string profile = directory + "/correlated.yaml", path = directory + "/static.bag";
     std::ofstream(profile) << YAML::Dump(root) << "\n";
     const auto result = run_tool("emulate", "--profile " + profile + " --scenario static --duration-s 300 "
-                                            "--rate-hz 100 --seed 5 --no-truth --no-increments --out " + b.bag);
+                                            "--rate-hz 100 --seed 5 --no-truth --no-increments --out " + path);
     EXPECT_EQ(result.exit_code, 0) << result.output;
-    return b;
+    return path;
   }();
   return bag;
 }
 
 TEST(SpectrumTool, WritesEveryFileAndFindsTheProfilesCorrelation) {
-  const CorrelatedBag& b = correlated_bag();
-  const std::string out = b.directory + "/report";
+  const std::string out = scratch_directory() + "/report";
   // 99.9 %: each of the 18 intervals checked below misses the truth once in 1000 runs.
-  const auto result = run_tool("spectrum", b.bag + " --confidence 0.999 --out " + out);
+  const auto result = run_tool("spectrum", correlated_bag() + " --confidence 0.999 --out " + out);
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_NE(result.output.find("30000 samples, tau0 0.01 s; Welch: 13 segments of 4096"), std::string::npos)
       << result.output;
@@ -103,22 +99,26 @@ TEST(SpectrumTool, WritesEveryFileAndFindsTheProfilesCorrelation) {
 }
 
 TEST(SpectrumTool, BadOptionsExitTwoAndTooShortARecordExitsOneNamingIt) {
-  const CorrelatedBag& b = correlated_bag();
+  const std::string& bag = correlated_bag();
   const std::string out = scratch_directory();
-  const auto factor = run_tool("spectrum", b.bag + " --averaging-factors 0 --out " + out + "/r");
-  EXPECT_EQ(factor.exit_code, 2) << factor.output;
-  EXPECT_NE(factor.output.find("--averaging-factors"), std::string::npos) << factor.output;
-  const auto confidence = run_tool("spectrum", b.bag + " --confidence 1 --out " + out + "/r");
-  EXPECT_EQ(confidence.exit_code, 2) << confidence.output;
-  EXPECT_NE(confidence.output.find("--confidence"), std::string::npos) << confidence.output;
-  const auto blocks = run_tool("spectrum", b.bag + " --averaging-factors 1 5000 --no-plot --out " + out + "/r");
-  EXPECT_EQ(blocks.exit_code, 1) << blocks.output;
-  EXPECT_NE(blocks.output.find("averaging factor 5000 leaves 6 blocks"), std::string::npos) << blocks.output;
-  EXPECT_NE(blocks.output.find(b.bag), std::string::npos) << blocks.output;
-  const auto segment = run_tool("spectrum", b.bag + " --segment-length 65536 --no-plot --out " + out + "/r");
-  EXPECT_EQ(segment.exit_code, 1) << segment.output;
-  EXPECT_NE(segment.output.find("gyro_x: Welch PSD: 30000 samples, fewer than one segment of 65536"),
-            std::string::npos) << segment.output;
+  struct Case {
+    std::string arguments;
+    int exit_code;
+    std::vector<std::string> words;
+  };
+  const std::vector<Case> cases = {
+      {"--averaging-factors 0", 2, {"--averaging-factors"}},
+      {"--confidence 1", 2, {"--confidence"}},
+      {"--averaging-factors 1 5000 --no-plot", 1, {bag, "averaging factor 5000 leaves 6 blocks"}},
+      {"--segment-length 65536 --no-plot", 1, {bag, "gyro_x: Welch PSD: 30000 samples, fewer than one segment of 65536"}},
+  };
+  for (const Case& c : cases) {
+    const auto result = run_tool("spectrum", bag + " " + c.arguments + " --out " + out + "/r");
+    EXPECT_EQ(result.exit_code, c.exit_code) << c.arguments << "\n" << result.output;
+    for (const std::string& word : c.words) {
+      EXPECT_NE(result.output.find(word), std::string::npos) << c.arguments << ": no '" << word << "' in\n" << result.output;
+    }
+  }
   EXPECT_TRUE(list_directory(out).empty());
 }
 
