@@ -46,7 +46,8 @@ double uniform_sample_interval_s(const std::vector<double>& stamps_s, double tol
     if (std::abs(interval_s - tau0_s) > tolerance * tau0_s) {
       throw InputError("spectrum: the interval " + format_number(interval_s, 4) + " s at " +
                        format_number(stamps_s[k] - stamps_s.front(), 6) + " s after the first stamp is not tau0 " +
-                       format_number(tau0_s, 6) + " s (a gap or a repeated stamp); spectra need uniform "
+                       format_number(tau0_s, 6) +
+                       " s (a gap or a repeated stamp); spectra need uniform "
                        "sampling: choose a window without it (--start-s, --end-s)");
     }
   }
@@ -70,7 +71,8 @@ SpectrumAnalysis analyse_spectra(const std::vector<ImuSample>& samples, const Sp
       channel.name = std::string(triad.name) + "_" + kAxisNames[axis];
       channel.unit = triad.unit;
       std::vector<double> axis_values(values.size());
-      std::transform(values.begin(), values.end(), axis_values.begin(), [&](const Eigen::Vector3d& v) { return v[axis]; });
+      std::transform(values.begin(), values.end(), axis_values.begin(),
+                     [&](const Eigen::Vector3d& v) { return v[axis]; });
       try {
         channel.psd = welch_psd(axis_values, analysis.tau0_s, options.welch);
         channel.autocorrelation = autocorrelation(axis_values, max_lag);
@@ -118,7 +120,8 @@ std::string autocorrelation_csv(const SpectrumAnalysis& analysis) {
   text += "\n";
   const std::size_t lags = analysis.channels.front().autocorrelation.size();
   for (std::size_t k = 0; k < lags; ++k) {
-    text += format_number(static_cast<double>(k) * analysis.tau0_s) + "," + format_number(analysis.autocorrelation_band);
+    text +=
+        format_number(static_cast<double>(k) * analysis.tau0_s) + "," + format_number(analysis.autocorrelation_band);
     for (const ChannelSpectrum& c : analysis.channels) text += "," + format_number(c.autocorrelation[k]);
     text += "\n";
   }
@@ -174,16 +177,18 @@ std::string correlation_yaml(const SpectrumAnalysis& analysis, const std::string
 
 std::string spectrum_summary(const SpectrumAnalysis& analysis) {
   const PowerSpectrum& first = analysis.channels.front().psd;
-  std::string text = std::to_string(analysis.sample_count) + " samples, tau0 " + format_printf(analysis.tau0_s, "%.6g") +
-                     " s; Welch: " + std::to_string(first.segment_count) + " segments of " +
-                     std::to_string(first.segment_length) + ", resolution " + format_printf(first.resolution_hz, "%.4g") +
-                     " Hz, " + format_printf(first.degrees_of_freedom, "%.1f") + " degrees of freedom per bin\n";
+  std::string text = std::to_string(analysis.sample_count) + " samples, tau0 " +
+                     format_printf(analysis.tau0_s, "%.6g") + " s; Welch: " + std::to_string(first.segment_count) +
+                     " segments of " + std::to_string(first.segment_length) + ", resolution " +
+                     format_printf(first.resolution_hz, "%.4g") + " Hz, " +
+                     format_printf(first.degrees_of_freedom, "%.1f") + " degrees of freedom per bin\n";
   for (const TriadCorrelation& triad : analysis.triads) {
     for (const AxisCorrelation& c : triad.by_factor) {
       text += triad.triad + " axis correlation at " + format_printf(c.averaging_time_s, "%.4g") + " s: xy " +
-              format_printf(c.correlation(0, 1), "%+.3f") + " xz " + format_printf(c.correlation(0, 2), "%+.3f") + " yz " +
-              format_printf(c.correlation(1, 2), "%+.3f") + " (" + format_printf(100.0 * analysis.confidence, "%.3g") +
-              " % half-width ~" + format_printf(0.5 * (c.upper(0, 1) - c.lower(0, 1)), "%.2g") + ")" +
+              format_printf(c.correlation(0, 1), "%+.3f") + " xz " + format_printf(c.correlation(0, 2), "%+.3f") +
+              " yz " + format_printf(c.correlation(1, 2), "%+.3f") + " (" +
+              format_printf(100.0 * analysis.confidence, "%.3g") + " % half-width ~" +
+              format_printf(0.5 * (c.upper(0, 1) - c.lower(0, 1)), "%.2g") + ")" +
               (c.blocks_look_independent() ? "" : ", block means correlated in time: interval too narrow") + "\n";
     }
   }

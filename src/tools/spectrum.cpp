@@ -32,7 +32,9 @@ int main(int argc, char** argv) {
                  "Welch segment in samples (resolution 1 / (length tau0); a power of two is fastest)")
       ->capture_default_str()
       ->check(at_least(8));
-  app.add_option("--max-lag-s", options.max_lag_s, "longest autocorrelation lag")->capture_default_str()->check(positive());
+  app.add_option("--max-lag-s", options.max_lag_s, "longest autocorrelation lag")
+      ->capture_default_str()
+      ->check(positive());
   app.add_option("--averaging-factors", options.averaging_factors,
                  "block lengths m (samples) whose means the axis correlation is also computed of")
       ->capture_default_str()
@@ -58,7 +60,8 @@ int main(int argc, char** argv) {
     imu_lab::write_file_atomically(staging + "/spectrum_psd.csv", imu_lab::spectrum::psd_csv(analysis));
     imu_lab::write_file_atomically(staging + "/spectrum_autocorrelation.csv",
                                    imu_lab::spectrum::autocorrelation_csv(analysis));
-    imu_lab::write_file_atomically(staging + "/spectrum.yaml", imu_lab::spectrum::correlation_yaml(analysis, bag.name()));
+    imu_lab::write_file_atomically(staging + "/spectrum.yaml",
+                                   imu_lab::spectrum::correlation_yaml(analysis, bag.name()));
     std::string written = "spectrum_psd.csv, spectrum_autocorrelation.csv, spectrum.yaml";
     // An earlier run's plot is not of this run: without a new one it goes.
     outputs.remove_at_commit(out_directory + "/spectrum.png");
@@ -67,7 +70,8 @@ int main(int argc, char** argv) {
           "plot_spectrum.py",
           {staging + "/spectrum_psd.csv", staging + "/spectrum_autocorrelation.csv", staging + "/spectrum.png"});
       if (!problem.empty()) {
-        std::fprintf(stderr, "spectrum: warning: plotting failed (%s); the CSV files are the result\n", problem.c_str());
+        std::fprintf(stderr, "spectrum: warning: plotting failed (%s); the CSV files are the result\n",
+                     problem.c_str());
       } else {
         written += ", spectrum.png";
       }

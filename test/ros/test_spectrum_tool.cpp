@@ -40,8 +40,10 @@ const std::string& correlated_bag() {
     root["accelerometer"]["noise"] = YAML::Load("{white_rate: {density_m_s2_per_sqrt_hz: 1.0e-3}}");
     const std::string profile = directory + "/correlated.yaml", path = directory + "/static.bag";
     std::ofstream(profile) << YAML::Dump(root) << "\n";
-    const auto result = run_tool("emulate", "--profile " + profile + " --scenario static --duration-s 300 "
-                                            "--rate-hz 100 --seed 5 --no-truth --no-increments --out " + path);
+    const auto result = run_tool("emulate", "--profile " + profile +
+                                                " --scenario static --duration-s 300 "
+                                                "--rate-hz 100 --seed 5 --no-truth --no-increments --out " +
+                                                path);
     EXPECT_EQ(result.exit_code, 0) << result.output;
     return path;
   }();
@@ -110,13 +112,16 @@ TEST(SpectrumTool, BadOptionsExitTwoAndTooShortARecordExitsOneNamingIt) {
       {"--averaging-factors 0", 2, {"--averaging-factors"}},
       {"--confidence 1", 2, {"--confidence"}},
       {"--averaging-factors 1 5000 --no-plot", 1, {bag, "averaging factor 5000 leaves 6 blocks"}},
-      {"--segment-length 65536 --no-plot", 1, {bag, "gyro_x: Welch PSD: 30000 samples, fewer than one segment of 65536"}},
+      {"--segment-length 65536 --no-plot",
+       1,
+       {bag, "gyro_x: Welch PSD: 30000 samples, fewer than one segment of 65536"}},
   };
   for (const Case& c : cases) {
     const auto result = run_tool("spectrum", bag + " " + c.arguments + " --out " + out + "/r");
     EXPECT_EQ(result.exit_code, c.exit_code) << c.arguments << "\n" << result.output;
     for (const std::string& word : c.words) {
-      EXPECT_NE(result.output.find(word), std::string::npos) << c.arguments << ": no '" << word << "' in\n" << result.output;
+      EXPECT_NE(result.output.find(word), std::string::npos) << c.arguments << ": no '" << word << "' in\n"
+                                                             << result.output;
     }
   }
   EXPECT_TRUE(list_directory(out).empty());

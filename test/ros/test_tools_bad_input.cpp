@@ -1,7 +1,7 @@
 // The bad-input matrix across the bag-reading tools: every tool (allan, bag_summary, fit_thermal,
-// fit_calibration, navigate, correct, rate_table, spectrum) given an empty, truncated, garbage or missing bag, a bag with
-// several IMU topics, a wrong topic or a topic of the wrong type exits 1 with a message naming
-// the bag (and what to do), and writes nothing. Tools that cannot use NaN/Inf samples or
+// fit_calibration, navigate, correct, rate_table, spectrum) given an empty, truncated, garbage or
+// missing bag, a bag with several IMU topics, a wrong topic or a topic of the wrong type exits 1
+// with a message naming the bag (and what to do), and writes nothing. Tools that cannot use NaN/Inf samples or
 // unordered stamps refuse them the same way, naming the bag and the topic (allan and navigate
 // have their own policies: test_allan_tool_bad_input.cpp, test_navigate_tool.cpp).
 #include <gtest/gtest.h>
@@ -120,8 +120,9 @@ TEST_P(ToolsBadBag, TopicOfAnotherTypeIsNamed) {
 INSTANTIATE_TEST_SUITE_P(Matrix, ToolsBadBag, ::testing::ValuesIn(kTools),
                          [](const ::testing::TestParamInfo<Tool>& info) { return std::string(info.param.name); });
 
-// bag_summary, fit_thermal, fit_calibration, rate_table and spectrum average or fit every sample, and correct would pass a
-// NaN/Inf sample or an unordered stamp on into the corrected bag: they refuse the bag.
+// bag_summary, fit_thermal, fit_calibration, rate_table and spectrum average or fit every sample,
+// and correct would pass a NaN/Inf sample or an unordered stamp on into the corrected bag: they
+// refuse the bag.
 class StrictTools : public ToolsBadBag {};
 
 TEST_P(StrictTools, NanSamplesAreRefusedNamingTheTopic) {

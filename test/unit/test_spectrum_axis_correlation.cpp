@@ -33,7 +33,8 @@ std::vector<Eigen::Vector3d> correlated_white(std::size_t n, const Eigen::Matrix
   std::normal_distribution<double> normal(0.0, 1.0);
   const Eigen::Vector3d scale(1e-4, 3e-4, 2e-4);
   std::vector<Eigen::Vector3d> samples(n);
-  for (auto& s : samples) s = scale.cwiseProduct(factor * Eigen::Vector3d(normal(generator), normal(generator), normal(generator)));
+  for (auto& s : samples)
+    s = scale.cwiseProduct(factor * Eigen::Vector3d(normal(generator), normal(generator), normal(generator)));
   return samples;
 }
 
@@ -163,7 +164,8 @@ TEST(SpectrumAnalysis, RefusesAGapNamingItsTime) {
     analyse_spectra(samples, SpectrumOptions());
     ADD_FAILURE() << "a gap accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("interval 0.11 s at 15.1 s after the first stamp"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("interval 0.11 s at 15.1 s after the first stamp"), std::string::npos)
+        << e.what();
   }
   SpectrumOptions too_long;
   too_long.averaging_factors = {1, 5000};
@@ -171,7 +173,8 @@ TEST(SpectrumAnalysis, RefusesAGapNamingItsTime) {
     analyse_spectra(white_record(20000, 0.01), too_long);
     ADD_FAILURE() << "4 blocks accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("gyro: axis correlation: averaging factor 5000"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("gyro: axis correlation: averaging factor 5000"), std::string::npos)
+        << e.what();
   }
 }
 
