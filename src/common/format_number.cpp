@@ -10,4 +10,10 @@ std::string format_number(double value, int significant_digits) {
   return text;
 }
 
+std::string format_printf(double value, const char* format) {
+  char text[64];
+  std::snprintf(text, sizeof text, format, value);
+  return text;
+}
+
 }  // namespace imu_lab

@@ -33,12 +33,6 @@ void emit_fit(YAML::Emitter& out, const ScaleFactorFit& fit, bool polynomial) {
   out << YAML::EndMap;
 }
 
-std::string fixed(double value, const char* format) {
-  char text[64];
-  std::snprintf(text, sizeof text, format, value);
-  return text;
-}
-
 }  // namespace
 
 std::string scale_factor_yaml(const ScaleFactorTestResult& result, const std::string& recording_name) {
@@ -98,18 +92,18 @@ std::string plateau_csv(const ScaleFactorTestResult& result) {
 
 std::string scale_factor_summary(const ScaleFactorTestResult& result) {
   const auto line = [](const std::string& name, const Estimate& e, const char* unit) {
-    return "  " + name + fixed(e.value, "%.2f") + " +- " + fixed(e.sigma, "%.2f") + " " + unit + "\n";
+    return "  " + name + format_printf(e.value, "%.2f") + " +- " + format_printf(e.sigma, "%.2f") + " " + unit + "\n";
   };
   std::string text = "gyro " + std::string(kAxisNames[result.axis]) + " on the table axis, " +
                      std::to_string(result.plateaus.size()) + " plateaus, full scale " +
-                     fixed(result.full_scale_rad_s * kDegPerRad, "%.4g") + " deg/s\n";
+                     format_printf(result.full_scale_rad_s * kDegPerRad, "%.4g") + " deg/s\n";
   text += "straight lines:\n";
   text += line("bias                  ", {result.line.bias_rad_s.value * kDegPerRad * 3600.0,
                                           result.line.bias_rad_s.sigma * kDegPerRad * 3600.0}, "deg/h");
   text += line("scale-factor error    ", result.line.scale_factor_error_ppm, "ppm");
   text += line("asymmetry             ", result.line.asymmetry_ppm, "ppm");
   text += line("nonlinearity          ", result.nonlinearity_ppm_fs, "ppm of FS");
-  text += "  chi-squared " + fixed(result.line.chi_squared, "%.3g") + " on " +
+  text += "  chi-squared " + format_printf(result.line.chi_squared, "%.3g") + " on " +
           std::to_string(result.line.degrees_of_freedom) + " degrees of freedom\n";
   if (result.polynomial) {
     const ScaleFactorFit& p = *result.polynomial;
@@ -118,13 +112,13 @@ std::string scale_factor_summary(const ScaleFactorTestResult& result) {
     text += line("asymmetry             ", p.asymmetry_ppm, "ppm");
     text += line("quadratic             ", p.quadratic_ppm_fs, "ppm of FS");
     text += line("cubic                 ", p.cubic_ppm_fs, "ppm of FS");
-    text += "  chi-squared " + fixed(p.chi_squared, "%.3g") + " on " + std::to_string(p.degrees_of_freedom) +
+    text += "  chi-squared " + format_printf(p.chi_squared, "%.3g") + " on " + std::to_string(p.degrees_of_freedom) +
             " degrees of freedom\n";
   }
   if (result.dead_zone_found) {
-    text += "dead zone: above " + fixed(result.dead_zone_above_rad_s * kDegPerRad, "%.4g") + " deg/s" +
+    text += "dead zone: above " + format_printf(result.dead_zone_above_rad_s * kDegPerRad, "%.4g") + " deg/s" +
             (result.dead_zone_below_rad_s
-                 ? ", below " + fixed(*result.dead_zone_below_rad_s * kDegPerRad, "%.4g") + " deg/s"
+                 ? ", below " + format_printf(*result.dead_zone_below_rad_s * kDegPerRad, "%.4g") + " deg/s"
                  : std::string()) +
             "\n";
   } else {

@@ -9,13 +9,12 @@
 #include <string>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/allan/confidence.h"
 
 namespace imu_lab {
 namespace spectrum {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
-// Correlation of neighbouring Hann-windowed segments at 50 % overlap (Welch 1967, table 1).
-constexpr double kHannHalfOverlapCorrelation = 0.167;
 }  // namespace
 
 PowerSpectrum welch_psd(const std::vector<double>& values, double tau0_s, const WelchOptions& options) {
@@ -39,6 +38,7 @@ PowerSpectrum welch_psd(const std::vector<double>& values, double tau0_s, const 
   }
   const std::size_t bins = length / 2 + 1;
   PowerSpectrum spectrum;
+  spectrum.segment_length = length;
   spectrum.density.assign(bins, 0.0);
   Eigen::FFT<double> fft;
   std::vector<double> segment(length);
@@ -62,9 +62,31 @@ PowerSpectrum welch_psd(const std::vector<double>& values, double tau0_s, const 
     spectrum.density[bin] *= scale * (edge ? 1.0 : 2.0);
     spectrum.frequency_hz[bin] = static_cast<double>(bin) * spectrum.resolution_hz;
   }
-  spectrum.degrees_of_freedom = 2.0 * static_cast<double>(spectrum.segment_count) /
-                                (1.0 + 2.0 * kHannHalfOverlapCorrelation * kHannHalfOverlapCorrelation);
+  double overlap_sum = 0.0;
+  for (std::size_t k = 0; k + hop < length; ++k) overlap_sum += window[k] * window[k + hop];
+  const double neighbour_correlation = overlap_sum / window_power;
+  const double segments = static_cast<double>(spectrum.segment_count);
+  spectrum.degrees_of_freedom =
+      2.0 * segments / (1.0 + 2.0 * (1.0 - 1.0 / segments) * neighbour_correlation * neighbour_correlation);
   return spectrum;
+}
+
+double bin_degrees_of_freedom(const PowerSpectrum& spectrum, std::size_t bin) {
+  if (bin == 0) return 0.0;
+  return 2 * bin == spectrum.segment_length ? 0.5 * spectrum.degrees_of_freedom : spectrum.degrees_of_freedom;
+}
+
+DensityInterval interval_factors(double degrees_of_freedom, double confidence) {
+  // A density is a variance: the bounds of its square root (NIST SP 1065 eq. 45), squared.
+  const allan::DeviationBounds bounds = allan::chi_squared_bounds(1.0, degrees_of_freedom, confidence);
+  return {bounds.lower * bounds.lower, bounds.upper * bounds.upper};
+}
+
+DensityInterval density_interval(const PowerSpectrum& spectrum, std::size_t bin, double confidence) {
+  const double dof = bin_degrees_of_freedom(spectrum, bin);
+  if (!(dof > 0.0)) return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+  const DensityInterval factors = interval_factors(dof, confidence);
+  return {factors.lower * spectrum.density[bin], factors.upper * spectrum.density[bin]};
 }
 
 double median_density(const PowerSpectrum& spectrum, double low_hz, double high_hz) {

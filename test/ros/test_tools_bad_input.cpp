@@ -1,7 +1,7 @@
 // The bad-input matrix across the bag-reading tools: every tool (allan, bag_summary, fit_thermal,
-// fit_calibration, navigate, correct, rate_table) given an empty, truncated, garbage or missing bag, a bag with
-// several IMU topics, a wrong topic or a topic of the wrong type exits 1 with a message naming
-// the bag (and what to do), and writes nothing. Tools that cannot use NaN/Inf samples or
+// fit_calibration, navigate, correct, rate_table, spectrum) given an empty, truncated, garbage or
+// missing bag, a bag with several IMU topics, a wrong topic or a topic of the wrong type exits 1
+// with a message naming the bag (and what to do), and writes nothing. Tools that cannot use NaN/Inf samples or
 // unordered stamps refuse them the same way, naming the bag and the topic (allan and navigate
 // have their own policies: test_allan_tool_bad_input.cpp, test_navigate_tool.cpp).
 #include <gtest/gtest.h>
@@ -33,6 +33,7 @@ struct Tool {
       return bag + " --latitude-deg 50 --height-m 0 --out " + out_directory + "/calibration.yaml";
     }
     if (tool == "rate_table") return bag + " --scenario rate_table_scale_factor --out " + out_directory + "/report";
+    if (tool == "spectrum") return bag + " --segment-length 256 --no-plot --out " + out_directory + "/report";
     if (tool == "correct") {
       return bag + " --calibration " + std::string(IMU_LAB_TEST_DATA_DIR) + "/calibration_example.yaml --out " +
              out_directory + "/corrected.bag";
@@ -43,7 +44,7 @@ struct Tool {
 };
 
 const std::vector<Tool> kTools = {{"allan"},           {"bag_summary"}, {"fit_thermal"}, {"fit_calibration"},
-                                  {"navigate"},        {"correct"},     {"rate_table"}};
+                                  {"navigate"},        {"correct"},     {"rate_table"},      {"spectrum"}};
 
 // A scratch directory with inputs, and an empty one for the tools' output.
 struct Scratch {
@@ -119,8 +120,9 @@ TEST_P(ToolsBadBag, TopicOfAnotherTypeIsNamed) {
 INSTANTIATE_TEST_SUITE_P(Matrix, ToolsBadBag, ::testing::ValuesIn(kTools),
                          [](const ::testing::TestParamInfo<Tool>& info) { return std::string(info.param.name); });
 
-// bag_summary, fit_thermal, fit_calibration and rate_table average or fit every sample, and correct would pass a
-// NaN/Inf sample or an unordered stamp on into the corrected bag: they refuse the bag.
+// bag_summary, fit_thermal, fit_calibration, rate_table and spectrum average or fit every sample,
+// and correct would pass a NaN/Inf sample or an unordered stamp on into the corrected bag: they
+// refuse the bag.
 class StrictTools : public ToolsBadBag {};
 
 TEST_P(StrictTools, NanSamplesAreRefusedNamingTheTopic) {
@@ -143,7 +145,7 @@ TEST_P(StrictTools, UnorderedStampsAreRefusedNamingTheTopic) {
 
 INSTANTIATE_TEST_SUITE_P(Matrix, StrictTools,
                          ::testing::Values(Tool{"bag_summary"}, Tool{"fit_thermal"}, Tool{"fit_calibration"},
-                                           Tool{"correct"}, Tool{"rate_table"}),
+                                           Tool{"correct"}, Tool{"rate_table"}, Tool{"spectrum"}),
                          [](const ::testing::TestParamInfo<Tool>& info) { return std::string(info.param.name); });
 
 // Samples at 100 Hz, from `from` on at `interval_ns` (a rate change) or shifted by `shift_ns` (a gap).
@@ -184,6 +186,15 @@ TEST(AllanToolRateChange, ASlowerRateIsCountedAsGapsOrStopsTheRun) {
   EXPECT_EQ(stopped.exit_code, 1) << stopped.output;
   EXPECT_NE(stopped.output.find(bag), std::string::npos) << stopped.output;
   EXPECT_FALSE(file_exists(scratch.outputs + "/stopped"));
+}
+
+// A spectrum needs uniform sampling: spectrum refuses a gap, naming the bag, where it is and how
+// to leave it out, and writes nothing.
+TEST(SpectrumGap, AGapIsRefusedNamingWhereItIs) {
+  const Scratch scratch;
+  const std::string bag = irregular_bag(scratch, 2000, kInterval_ns, 500'000'000);
+  expect_refused(Tool{"spectrum"}, scratch, Tool{"spectrum"}.arguments(bag, scratch.outputs),
+                 {bag, "interval 0.51 s at 20.5 s after the first stamp", "--start-s"});
 }
 
 }  // namespace

@@ -69,7 +69,7 @@ ImuBagLayout with_temperature() {
 
 const std::vector<std::string> kTools = {"allan",       "bag_summary", "correct",   "emulate",       "export_csv",
                                          "fit_calibration", "fit_thermal", "import_csv", "navigate", "rate_table",
-                                         "repeatability", "lot_report"};
+                                         "repeatability", "lot_report", "spectrum"};
 
 // CLI11's own codes were 105-114 (navigate with no arguments: 106); the tools document 2.
 TEST(ToolOptionErrors, EveryToolExitsTwoNamingTheProblem) {

@@ -1,8 +1,10 @@
 // Welch's PSD against known spectra: white noise's flat one-sided density 2 s^2 tau0 (each bin
-// within its chi-squared spread), a sinusoid's power A^2 / 2 under its peak, and the refusals.
+// within its chi-squared spread), a sinusoid's power A^2 / 2 under its peak, the degrees of
+// freedom and the chi-squared interval's coverage, and the refusals.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "imu_lab/common/config_error.h"
@@ -27,7 +29,8 @@ TEST(SpectrumWelch, WhiteNoiseIsFlatAtTwiceItsVarianceTimesTau0) {
   ASSERT_EQ(spectrum.density.size(), 513u);
   EXPECT_EQ(spectrum.segment_count, 780u);
   EXPECT_NEAR(spectrum.resolution_hz, 1.0 / (1024 * kTau0S), 1e-12);
-  EXPECT_NEAR(spectrum.degrees_of_freedom, 780 * 2 / (1 + 2 * 0.167 * 0.167), 1e-9);
+  // Percival & Walden 1993 p. 294: Hann at 50 % overlap, nu = 36 K^2 / (19 K - 1).
+  EXPECT_NEAR(spectrum.degrees_of_freedom, 36.0 * 780 * 780 / (19.0 * 780 - 1), 1e-9);
   const double expected = 2.0 * sigma * sigma * kTau0S;
   double mean = 0.0;
   int bins = 0;
@@ -51,6 +54,38 @@ TEST(SpectrumWelch, SinusoidPowerLiesUnderItsPeak) {
   for (std::size_t bin = 126; bin <= 130; ++bin) power += spectrum.density[bin] * spectrum.resolution_hz;
   EXPECT_NEAR(power, amplitude * amplitude / 2.0, 1e-9);
   EXPECT_LT(spectrum.density[100], 1e-20);
+}
+
+// The 90 % interval of each bin holds white noise's true density in 90 % of the bins. 40 records
+// of 6 segments (nu = 10.8, a skewed chi-squared) give 40 x 127 bins; bins two apart are nearly
+// independent (their power correlation is 1/36), neighbours are not, so the count's sigma is
+// taken as that of 40 x 127 / 2 independent bins: sqrt(0.9 x 0.1 / 2540) = 0.006; 4 sigma bound.
+TEST(SpectrumWelch, ChiSquaredIntervalCoversTheTrueDensity) {
+  const double sigma = 0.5, confidence = 0.9;
+  const double truth = 2.0 * sigma * sigma * kTau0S;
+  std::mt19937_64 generator(11);
+  std::normal_distribution<double> normal(0.0, sigma);
+  int covered = 0, bins = 0, below = 0;
+  for (int record = 0; record < 40; ++record) {
+    std::vector<double> values(256 * 7 / 2);
+    for (double& v : values) v = normal(generator);
+    const PowerSpectrum spectrum = welch_psd(values, kTau0S, {256});
+    ASSERT_EQ(spectrum.segment_count, 6u);
+    EXPECT_TRUE(std::isnan(density_interval(spectrum, 0, confidence).lower));
+    EXPECT_NEAR(bin_degrees_of_freedom(spectrum, 128), 0.5 * spectrum.degrees_of_freedom, 1e-12);
+    for (std::size_t bin = 1; bin < 128; ++bin, ++bins) {
+      const DensityInterval interval = density_interval(spectrum, bin, confidence);
+      ASSERT_LT(interval.lower, spectrum.density[bin]);
+      ASSERT_GT(interval.upper, spectrum.density[bin]);
+      if (interval.lower <= truth && truth <= interval.upper) ++covered;
+      if (interval.upper < truth) ++below;
+    }
+  }
+  const double coverage = static_cast<double>(covered) / bins;
+  std::printf("[welch] coverage %.4f of %d bins (interval below the truth in %d)\n", coverage, bins, below);
+  EXPECT_NEAR(coverage, confidence, 4.0 * std::sqrt(confidence * (1 - confidence) / (bins / 2.0)));
+  // Equal tails: as many intervals wholly below the truth as above it, 5 % each.
+  EXPECT_NEAR(static_cast<double>(below) / bins, 0.5 * (1 - confidence), 4.0 * std::sqrt(0.05 * 0.95 / (bins / 2.0)));
 }
 
 TEST(SpectrumWelch, RefusesWhatHasNoSpectrum) {

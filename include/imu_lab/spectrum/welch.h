@@ -18,13 +18,32 @@ struct WelchOptions {
 struct PowerSpectrum {
   std::vector<double> frequency_hz;  // k / (segment_length tau0), k = 0 .. segment_length / 2
   std::vector<double> density;       // one-sided PSD [u^2/Hz]
+  std::size_t segment_length = 0;
   std::size_t segment_count = 0;
   double resolution_hz = 0.0;  // bin spacing 1 / (segment_length tau0)
-  // Equivalent degrees of freedom of each bin (away from 0 and Nyquist): 2 K / (1 + 2 c^2) for
-  // K segments, c = 0.167 the correlation of neighbouring Hann segments at 50 % overlap
-  // (Welch 1967): about 1.89 per segment.
+  // Equivalent degrees of freedom of each bin away from 0 and Nyquist, for a spectrum that is
+  // smooth over a few bins: 2 K / (1 + 2 (1 - 1/K) c^2) for K segments, c the correlation of
+  // neighbouring windowed segments (sum of w_k w_(k+L/2) over sum of w_k^2: 1/6 for Hann at 50 %
+  // overlap), Welch 1967, Percival & Walden 1993 eq. 292b: about 1.89 per segment.
   double degrees_of_freedom = 0.0;
 };
+
+// Degrees of freedom of one bin: degrees_of_freedom inside, half of it at Nyquist (a real
+// value per segment), 0 at DC (each segment's mean is removed, so no interval applies there).
+double bin_degrees_of_freedom(const PowerSpectrum& spectrum, std::size_t bin);
+
+// Two-sided chi-squared confidence interval of the true density at one bin: nu P / chi2(nu, (1 +
+// confidence) / 2) .. nu P / chi2(nu, (1 - confidence) / 2), nu = bin_degrees_of_freedom
+// (Bendat & Piersol 2010 ch. 8). Both NaN at DC. Throws std::invalid_argument unless
+// 0 < confidence < 1.
+struct DensityInterval {
+  double lower = 0.0;
+  double upper = 0.0;
+};
+// The interval of an estimate of 1 with nu degrees of freedom: the factors every estimate with
+// those degrees of freedom is multiplied by.
+DensityInterval interval_factors(double degrees_of_freedom, double confidence);
+DensityInterval density_interval(const PowerSpectrum& spectrum, std::size_t bin, double confidence);
 
 // Throws InputError (common/config_error.h) naming the problem if tau0 is not positive, the
 // segment length is below 8, or the record holds fewer samples than one segment. Values that
