@@ -239,8 +239,8 @@ std::vector<CoverageCase> coverage_cases() {
   }
   {
     // The front end with the one-parameter terms of rate (N behind a 30 Hz corner at 100 Hz, B's
-    // floor from 2 s to 30 s, K, a ramp above 300 s), cheap enough for every seed. No Q:
-    // the emulator's front end filters white angle noise too, which no model term describes.
+    // floor from 2 s to 30 s, K, a ramp above 300 s), cheap enough for every seed (Q is in cases
+    // 1 and 7).
     NoiseModel gyro, accelerometer;
     gyro.terms = {{TermKind::kWhiteRate, 3e-4, 30.0},
                   {TermKind::kBiasInstability, 3e-4, 50.0},
@@ -290,6 +290,8 @@ struct ParameterOutcome {
   // n: reported absent with no bound (shaped terms) or not fitted.
   char judged_by = 'n';
   double z = NAN;  // |ln(truth / value)| / log_sigma when judged by the interval
+  // Outside the 95 % interval: -1 the truth lies below it, +1 above it (or above the bound).
+  int miss_side_95 = 0;
 };
 
 struct RecordOutcome {
@@ -305,9 +307,11 @@ ParameterOutcome judge(CoverageKind kind, const ParameterEstimate& estimate, Ter
     outcome.z = std::abs(std::log(truth / estimate.value)) / estimate.log_sigma;
     outcome.inside_68 = truth >= estimate.interval_low(1.0) && truth <= estimate.interval_high(1.0);
     outcome.inside_95 = truth >= estimate.interval_low(1.959964) && truth <= estimate.interval_high(1.959964);
+    if (!outcome.inside_95) outcome.miss_side_95 = truth < estimate.value ? -1 : 1;
   } else if (std::isfinite(estimate.upper_bound)) {
     outcome.judged_by = 'b';
     outcome.inside_68 = outcome.inside_95 = truth <= estimate.upper_bound;
+    if (!outcome.inside_95) outcome.miss_side_95 = 1;
   }
   return outcome;
 }
@@ -363,8 +367,11 @@ void judge_axis(const NoiseModel& truth, const FitResult& fit, RecordOutcome* re
 
 struct Tally {
   int truths = 0, inside_68 = 0, inside_95 = 0, by_interval = 0, by_bound = 0, unjudged = 0, spurious = 0;
+  int below_95 = 0, above_95 = 0;
   void add(const ParameterOutcome& outcome) {
     ++truths;
+    below_95 += outcome.miss_side_95 < 0;
+    above_95 += outcome.miss_side_95 > 0;
     inside_68 += outcome.inside_68;
     inside_95 += outcome.inside_95;
     by_interval += outcome.judged_by == 'p';
@@ -375,15 +382,16 @@ struct Tally {
 
 void print_tallies(const std::array<Tally, static_cast<int>(CoverageKind::kCount)>& tallies, bool with_targets) {
   std::printf("  %-10s %6s %9s %9s   %s%s\n", "kind", "truths", "in 68.3%", "in 95%",
-              "judged by: interval / upper bound / nothing reported; spurious present terms",
+              "judged by: interval / upper bound / nothing reported; spurious present terms; truths "
+              "below / above the 95 % interval",
               with_targets ? "   target 60-76 % / >= 90 %" : "");
   for (int k = 0; k < static_cast<int>(CoverageKind::kCount); ++k) {
     const Tally& tally = tallies[k];
     if (tally.truths == 0 && tally.spurious == 0) continue;
     const double in68 = 100.0 * tally.inside_68 / std::max(1, tally.truths);
     const double in95 = 100.0 * tally.inside_95 / std::max(1, tally.truths);
-    std::printf("  %-10s %6d %8.1f%% %8.1f%%   %d / %d / %d; %d", kCoverageKindNames[k], tally.truths, in68, in95,
-                tally.by_interval, tally.by_bound, tally.unjudged, tally.spurious);
+    std::printf("  %-10s %6d %8.1f%% %8.1f%%   %d / %d / %d; %d; %d / %d", kCoverageKindNames[k], tally.truths, in68,
+                in95, tally.by_interval, tally.by_bound, tally.unjudged, tally.spurious, tally.below_95, tally.above_95);
     if (with_targets && tally.truths > 0) {
       std::printf("   %s", in68 >= 60.0 && in68 <= 76.0 && in95 >= 90.0 ? "met" : "MISSED");
       if (tally.truths < 240) std::printf(" (fewer than 240 truths)");
