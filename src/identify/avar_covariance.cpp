@@ -245,6 +245,63 @@ double ramp_difference_per_factor(const NoiseModel& model, double tau0_s) {
   return slope * tau0_s / std::sqrt(2.0);
 }
 
+// The sampled rate noise's one-sided density at a line's frequency f, as the line sees it: a
+// sinusoid's OAVAR (eq. 5.8) is its integral's, so both are compared before the sample average,
+// whose sinc^2 is divided out. Stationary terms from their samples' autocovariance (second
+// differences of D, aliases included); flicker, random walk and Markov terms slower than the
+// longest lag sum from their continuous PSDs (two-sided B^2 / (2 pi f), K^2 / (2 pi f)^2,
+// a^2 / (1 + (2 pi f T)^2); their aliases are negligible).
+double line_noise_density(const NoiseModel& model, double frequency_hz, double tau0_s) {
+  constexpr long long kMaxLags = 20000;
+  constexpr double kTailDecayTimes = 30.0;
+  const double angular = 2.0 * kPi * frequency_hz;
+  double continuous = 0.0;  // two-sided
+  std::vector<Term> stationary;
+  if (model.output_quantization_density > 0.0) {
+    stationary.push_back({TermKind::kWhiteRate, model.output_quantization_density, 0.0, 0.0});
+  }
+  for (const Term& term : model.terms) {
+    const double a2 = term.amplitude * term.amplitude;
+    switch (term.kind) {
+      case TermKind::kBiasInstability:
+        continuous += a2 / angular;
+        break;
+      case TermKind::kRandomWalk:
+        continuous += a2 / (angular * angular);
+        break;
+      case TermKind::kRateRamp:
+      case TermKind::kSinusoid:
+        break;
+      case TermKind::kMarkov:
+        if (kTailDecayTimes * term.shape / tau0_s > kMaxLags) {
+          continuous += a2 / (1.0 + std::pow(angular * term.shape, 2));
+          break;
+        }
+        stationary.push_back(term);
+        break;
+      default:
+        stationary.push_back(term);
+    }
+  }
+  double sampled = 0.0;  // two-sided density of the samples: tau0 sum_j r(j) cos(2 pi f j tau0)
+  if (!stationary.empty()) {
+    const auto structure = [&](long long lag) {
+      double total = 0.0;
+      for (const Term& term : stationary) total += term_structure_function(term, lag * tau0_s, tau0_s);
+      return total;
+    };
+    const long long lags = std::min<long long>(kMaxLags, static_cast<long long>(lag_reach(stationary, tau0_s).tail_lags) + 2);
+    for (long long j = 0; j <= lags; ++j) {
+      const double autocovariance = (structure(j + 1) - 2.0 * structure(j) + structure(std::abs(j - 1))) / (2.0 * tau0_s * tau0_s);
+      sampled += (j == 0 ? 1.0 : 2.0) * autocovariance * std::cos(angular * j * tau0_s);
+    }
+    sampled *= tau0_s;
+  }
+  const double x = 0.5 * angular * tau0_s;
+  const double sample_average = x > 0.0 ? std::pow(std::sin(x) / x, 2) : 1.0;
+  return 2.0 * (sampled / sample_average + continuous);
+}
+
 bool close_shape(double a, double b) {
   constexpr double kTolerance = 0.1;
   if (a == b) return true;
@@ -631,6 +688,34 @@ struct OavarCovariance::Cache {
     }
   }
 
+  // A sinusoid's differences are A_m cos(w (k + m) tau0 + phi), so nu_m gains 2 mean(d^s d^m):
+  // on a record of many periods, 2 |H_m(f)|^2 = 4 sigma_s^2(tau_m) / Omega0^2 times one random
+  // variable, the noise's Fourier component at f in the line's phase, whatever the factor. Its
+  // variance, S(f) Omega0^2 / (4 T) with S the noise's one-sided density there and T the record
+  // spanned by the longer average, gives cov += 4 sigma_s^2(tau_m) sigma_s^2(tau_n) S(f) /
+  // (Omega0^2 max(M_m, M_n) tau0): nearly rank one, and independent of the phase. Lines of
+  // different frequencies see independent components.
+  template <class Result>
+  void add_sinusoid_cross_terms(const NoiseModel& model, bool diagonal_only, Result* result) {
+    const int count = static_cast<int>(factors.size());
+    for (const Term& line : model.terms) {
+      if (line.kind != TermKind::kSinusoid || !(line.amplitude > 0.0)) continue;
+      const double scale = 4.0 * line_noise_density(model, line.shape, tau0_s) / (line.amplitude * line.amplitude * tau0_s);
+      std::vector<double> line_avar(count);
+      std::vector<double> terms(count);
+      for (int i = 0; i < count; ++i) {
+        line_avar[i] = term_avar(line, factors[i] * tau0_s);
+        terms[i] = static_cast<double>(sample_count + 1 - 2LL * factors[i]);
+      }
+      for (int i = 0; i < count; ++i) {
+        for (int j = diagonal_only ? i : 0; j < (diagonal_only ? i + 1 : count); ++j) {
+          // A diagonal result is a vector: its (i, 0).
+          result->coeffRef(i, diagonal_only ? 0 : j) += scale * line_avar[i] * line_avar[j] / std::max(terms[i], terms[j]);
+        }
+      }
+    }
+  }
+
   // sum over unit pairs of weight_i weight_j (2 for i != j) times their kernel.
   template <class Kernel, class Result>
   void assemble(const NoiseModel& model, bool diagonal_only, Result* result) {
@@ -650,6 +735,7 @@ struct OavarCovariance::Cache {
         }
       }
     }
+    add_sinusoid_cross_terms(model, diagonal_only, result);
     if (ramp_difference == 0.0) return;
     // A ramp's differences c_m = ramp_difference m are the same at every k, so
     // nu_m = c_m^2 + 2 c_m mean(d^m) + (noise alone): cov(nu_m, nu_n) gains 4 c_m c_n
@@ -769,6 +855,15 @@ double oavar_covariance_by_direct_sum(const NoiseModel& model, int m, int n, dou
   check_factor(m, sample_count);
   check_factor(n, sample_count);
   const PairGeometry pair(m, n, tau0_s, sample_count);
+  // A sinusoid's differences at factor m are A_m cos(w (k + m) tau0 + phi) with
+  // A_m = 4 Omega0 sin^2(w m tau0 / 2) / (sqrt 2 w m tau0); averaged over the phase, its cross
+  // term adds 2 A_m A_n / (M_m M_n) sum_h count(h) cos(w (h + n - m) tau0) C_mn(h), summed here
+  // exactly (the covariance's rank-one form holds for many periods).
+  std::vector<Term> lines;
+  for (const Term& term : model.terms) {
+    if (term.kind == TermKind::kSinusoid) lines.push_back(term);
+  }
+  std::vector<double> line_sums(lines.size(), 0.0);
   double sum = 0.0, linear_sum = 0.0;
   for (long long h = pair.lowest_lag(); h <= pair.highest_lag(); ++h) {
     double c = 0.0;
@@ -776,11 +871,24 @@ double oavar_covariance_by_direct_sum(const NoiseModel& model, int m, int n, dou
       c += pair.weights[k] * model_structure_function(model, (h + pair.offsets[k]) * tau0_s, tau0_s);
     }
     c *= pair.scale;
-    sum += pair.count(static_cast<double>(h)) * c * c;
-    linear_sum += pair.count(static_cast<double>(h)) * c;
+    const double counted = pair.count(static_cast<double>(h));
+    sum += counted * c * c;
+    linear_sum += counted * c;
+    for (size_t s = 0; s < lines.size(); ++s) {
+      line_sums[s] += counted * c * std::cos(2.0 * kPi * lines[s].shape * (h + n - m) * tau0_s);
+    }
+  }
+  double line_part = 0.0;
+  for (size_t s = 0; s < lines.size(); ++s) {
+    const double angular = 2.0 * kPi * lines[s].shape;
+    const auto difference_amplitude = [&](int factor) {
+      const double t = angular * factor * tau0_s;
+      return 4.0 * lines[s].amplitude * std::pow(std::sin(0.5 * t), 2) / (std::sqrt(2.0) * t);
+    };
+    line_part += difference_amplitude(m) * difference_amplitude(n) * line_sums[s];
   }
   const double ramp_difference = ramp_difference_per_factor(model, tau0_s);
-  return (sum + 2.0 * ramp_difference * m * ramp_difference * n * linear_sum) * pair.normaliser();
+  return (sum + 2.0 * ramp_difference * m * ramp_difference * n * linear_sum + line_part) * pair.normaliser();
 }
 
 }  // namespace identify

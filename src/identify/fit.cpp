@@ -119,17 +119,48 @@ void describe_model_terms(const SelectedModel& selected, const DataSpan& span, F
   }
 }
 
-// Candidate one-parameter terms the selection left out: absent, with a profile upper bound and
-// the fall of the distance their free addition would bring.
+// Four of the selection's start shapes spread over its range (first, last and two between).
+std::vector<Term> spread_start_shapes(const TermSlot& slot, const std::vector<FitPoint>& points, const DataSpan& span) {
+  constexpr size_t kStarts = 4;
+  const std::vector<Term> all = start_shapes(slot, points, span);
+  if (all.size() <= kStarts) return all;
+  std::vector<Term> spread;
+  for (size_t i = 0; i < kStarts; ++i) spread.push_back(all[i * (all.size() - 1) / (kStarts - 1)]);
+  return spread;
+}
+
+// A Markov term, sinusoid or resonance the selection left out: absent, with the largest
+// amplitude any shape could carry (shaped_profile_upper_bound); its shape stays unreported.
+void describe_absent_shaped_term(const SelectedModel& selected, const DataSpan& span, const TermSlot& slot,
+                                 FitResult* fit) {
+  TermEstimate estimate;
+  estimate.name = term_kind_name(slot.kind);
+  estimate.kind = slot.kind;
+  estimate.status = TermStatus::kAbsent;
+  estimate.amplitude.upper_bound =
+      shaped_profile_upper_bound(fit->points, fit->structure, fit->log_parameters, selected.cost,
+                                 spread_start_shapes(slot, fit->points, span), span, selected.weights,
+                                 fit->options.upper_bound_confidence);
+  fit->terms.push_back(estimate);
+}
+
+// Candidate terms the selection left out: absent, with a profile upper bound and, for
+// one-parameter terms, the fall of the distance their free addition would bring.
 void describe_absent_terms(const SelectedModel& selected, const DataSpan& span, FitResult* fit) {
+  std::vector<TermKind> described;
   for (TermSlot slot : candidate_slots(fit->options, span)) {
-    if (shape_count(slot.kind) > 0 && slot.kind != TermKind::kBiasInstability &&
-        slot.kind != TermKind::kWhiteRate) {
-      continue;  // terms with a searched shape: no single amplitude to bound
-    }
     bool in_model = false;
     for (const Term& term : fit->model.terms) in_model = in_model || term.kind == slot.kind;
-    if (in_model) continue;
+    if (in_model || std::find(described.begin(), described.end(), slot.kind) != described.end()) continue;
+    described.push_back(slot.kind);
+    if (slot.kind == TermKind::kMarkov || slot.kind == TermKind::kSinusoid || slot.kind == TermKind::kResonance) {
+      describe_absent_shaped_term(selected, span, slot, fit);
+      continue;
+    }
+    if (shape_count(slot.kind) > 0 && slot.kind != TermKind::kBiasInstability &&
+        slot.kind != TermKind::kWhiteRate) {
+      continue;  // the zero-DC family (an option): its shape is not bounded
+    }
     if (slot.shape_free) {  // bound a fitted-cutoff bias instability at the Nyquist cutoff
       slot.shape_free = false;
       slot.fixed_shape = 1.0 / (2.0 * fit->tau0_s);

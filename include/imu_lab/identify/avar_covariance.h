@@ -10,10 +10,13 @@
 // a parametric bootstrap would find, without simulating (Percival and Walden, "Wavelet Methods
 // for Time Series Analysis", 2000, ch. 8, give the asymptotic form; Guerrier et al., JASA 2013,
 // weight the generalized method of wavelet moments with it).
-// Deterministic terms (rate ramp, sinusoid) carry no variance of their own. A ramp's differences
-// are the same constant c_m at every k, so it adds 4 c_m c_n cov(mean d^m, mean d^n), a linear
-// lag sum of C_mn (the cross term of nu = c^2 + 2 c mean d + ...); a sinusoid's cross term, which
-// depends on its phase, is left out.
+// Deterministic terms (rate ramp, sinusoid) carry no variance of their own, but they multiply
+// the noise in the cross term of nu = (d^s + d)^2 averaged. A ramp's differences are the same
+// constant c_m at every k, so it adds 4 c_m c_n cov(mean d^m, mean d^n), a linear lag sum of
+// C_mn. A sinusoid's cross term is, on a record of many periods, the noise's Fourier component
+// at the line times 4 sigma_s^2(tau_m) / Omega0^2 at every factor: it adds the nearly rank-one
+// 4 sigma_s^2(tau_m) sigma_s^2(tau_n) S(f) / (Omega0^2 max(M_m, M_n) tau0), S the noise's
+// one-sided rate density at the line (phase-averaged; checked against simulated records).
 #pragma once
 
 #include <Eigen/Core>
@@ -71,7 +74,8 @@ Eigen::MatrixXd oavar_covariance(const NoiseModel& model, const std::vector<int>
 std::vector<double> oavar_variance(const NoiseModel& model, const std::vector<int>& averaging_factors,
                                    double tau0_s, long long sample_count);
 
-// Brute-force sum over every lag (for tests; O(sample_count) per pair).
+// Brute-force sum over every lag (for tests; O(sample_count) per pair); a sinusoid's cross term
+// summed exactly, averaged over its phase.
 double oavar_covariance_by_direct_sum(const NoiseModel& model, int m, int n, double tau0_s,
                                       long long sample_count);
 

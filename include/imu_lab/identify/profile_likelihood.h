@@ -14,9 +14,20 @@ namespace identify {
 
 // slot_index's amplitude bound for the fitted (structure, log_parameters, best_cost). For an
 // absent term, first append its slot with a negligible amplitude (append_negligible_slot).
+// `bisections` halve the bracket (one doubling of the amplitude) that many times.
 double profile_upper_bound(const std::vector<FitPoint>& points, const ModelStructure& structure,
                            const std::vector<double>& log_parameters, double best_cost, int slot_index,
-                           const DataSpan& span, const MomentWeights& weights, double confidence);
+                           const DataSpan& span, const MomentWeights& weights, double confidence,
+                           int bisections = 25);
+
+// Bound of an absent term whose shape the data would have to choose (Markov, sinusoid,
+// resonance): its slot is appended with a free shape at each start (unit-amplitude terms), at
+// 1 % of its envelope there, and profiled with the shape free, so the amplitude climbs wherever
+// the shape lets it fit best; the largest bound over the starts (to 1 % in amplitude).
+double shaped_profile_upper_bound(const std::vector<FitPoint>& points, const ModelStructure& structure,
+                                  const std::vector<double>& log_parameters, double best_cost,
+                                  const std::vector<Term>& start_shapes, const DataSpan& span,
+                                  const MomentWeights& weights, double confidence);
 
 // Appends `slot` (its shape fixed) with an amplitude far below its envelope, so the fit is
 // unchanged. Throws std::invalid_argument for a slot with a free shape.
