@@ -13,10 +13,10 @@
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
 #include "imu_lab/spectrum/spectrum_report.h"
-#include "imu_lab/ros/config_paths.h"
-#include "imu_lab/ros/imu_bag_reader.h"
-#include "imu_lab/ros/recording_arguments.h"
-#include "imu_lab/ros/strict_imu_reading.h"
+#include "imu_lab/ros_io/node/config_paths.h"
+#include "imu_lab/ros_io/bag/imu_bag_reader.h"
+#include "imu_lab/ros_io/bag/recording_arguments.h"
+#include "imu_lab/ros_io/bag/strict_imu_reading.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Power spectral densities, autocorrelations and cross-axis correlation of a static recording."};

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "imu_lab/ros/config_paths.h"
+#include "imu_lab/ros_io/node/config_paths.h"
 #include "ros_test_support.h"
 
 namespace {
