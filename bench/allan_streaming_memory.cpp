@@ -104,7 +104,8 @@ int main(int argc, char** argv) {
     }
     if ((k + 1) % per_hour == 0) {
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::printf("hour %lld: state %zu bytes, %.1f s elapsed\n", (k + 1) / per_hour, engine.state_size_bytes(), elapsed);
+      std::printf("hour %lld: state %zu bytes, %.1f s elapsed\n", (k + 1) / per_hour, engine.state_size_bytes(),
+                  elapsed);
       std::fflush(stdout);
     }
   }
@@ -119,14 +120,16 @@ int main(int argc, char** argv) {
               engine.state_size_bytes(), usage.ru_maxrss, 1e6 * push_seconds / samples, snapshot_seconds);
   const auto& curve = snapshot.curve(imu_lab::allan::Statistic::kOverlappingAllan, 5);
   if (!curve.empty()) {
-    std::printf("accel z OADEV: %zu points, tau %.3g .. %.3g s\n", curve.size(), curve.front().tau_s, curve.back().tau_s);
+    std::printf("accel z OADEV: %zu points, tau %.3g .. %.3g s\n", curve.size(), curve.front().tau_s,
+                curve.back().tau_s);
   }
   for (const auto& point : curve) {
     for (std::size_t i = 0; i < kCheckedFactors.size(); ++i) {
       if (point.averaging_factor != kCheckedFactors[i]) continue;
       const double expected = reference.deviation(i);
-      std::printf("accel z OADEV m=%d after %lld samples: streamed %.17g, long double %.17g, relative difference %.2e\n",
-                  kCheckedFactors[i], samples, point.deviation, expected, std::abs(point.deviation - expected) / expected);
+      std::printf(
+          "accel z OADEV m=%d after %lld samples: streamed %.17g, long double %.17g, relative difference %.2e\n",
+          kCheckedFactors[i], samples, point.deviation, expected, std::abs(point.deviation - expected) / expected);
     }
   }
   return 0;

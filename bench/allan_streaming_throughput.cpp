@@ -86,18 +86,20 @@ int main(int argc, char** argv) {
               options.exact_max_averaging_factor, options.max_tau_s);
 
   imu_lab::allan::StreamingAllan per_sample(options);
-  if (time_per_sample) time_engine("push (one sample a call)", sample_count, [&] {
-    for (std::size_t k = 0; k < sample_count; ++k) {
-      per_sample.push(recording.stamps_ns[k], &recording.values[k * kChannels], kChannels);
-    }
-  });
+  if (time_per_sample)
+    time_engine("push (one sample a call)", sample_count, [&] {
+      for (std::size_t k = 0; k < sample_count; ++k) {
+        per_sample.push(recording.stamps_ns[k], &recording.values[k * kChannels], kChannels);
+      }
+    });
   imu_lab::allan::StreamingAllan blocked(options);
-  if (time_blocked) time_engine("push_block (4096 a call)", sample_count, [&] {
-    for (std::size_t first = 0; first < sample_count; first += kToolBatchSamples) {
-      const std::size_t count = std::min(kToolBatchSamples, sample_count - first);
-      blocked.push_block(&recording.stamps_ns[first], &recording.values[first * kChannels], count);
-    }
-  });
+  if (time_blocked)
+    time_engine("push_block (4096 a call)", sample_count, [&] {
+      for (std::size_t first = 0; first < sample_count; first += kToolBatchSamples) {
+        const std::size_t count = std::min(kToolBatchSamples, sample_count - first);
+        blocked.push_block(&recording.stamps_ns[first], &recording.values[first * kChannels], count);
+      }
+    });
   if (!time_per_sample || !time_blocked) return 0;
   // Both paths must give the same curves, bit for bit (the engine's blocks do not depend on how
   // samples are handed over): a cheap guard against a broken block path.

@@ -138,7 +138,7 @@ int main(int argc, char** argv) {
   if (fits.triads.size() != 2) throw std::runtime_error("identification failed: " + fits.problems.front());
   watch = Stopwatch();
   imu_lab::pipeline::write_allan_noise_report(kReportDirectory, run, result.snapshot,
-                                            imu_lab::pipeline::AllanIdentifyOptions());
+                                              imu_lab::pipeline::AllanIdentifyOptions());
   const Cost identification = watch.elapsed();
 
   const std::string tool_command = allan_tool_path() + " " + bag + " --topic /imu/raw --exact-m " +

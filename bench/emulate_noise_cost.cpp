@@ -79,7 +79,9 @@ int main(int argc, char** argv) {
   std::printf("one hour at 400 Hz (1.44 M samples, 4 topics each) written to a bag:\n");
   std::printf("  %-24s %9s %9s %12s\n", "", "wall [s]", "cpu [s]", "x real time");
   std::printf("  %-24s %9.2f %9.2f %12.0f\n", "no noise", quiet.wall_s, quiet.cpu_s, 3600.0 / quiet.wall_s);
-  std::printf("  %-24s %9.2f %9.2f %12.0f\n", "every noise process on", noisy.wall_s, noisy.cpu_s, 3600.0 / noisy.wall_s);
-  std::printf("  ratio noisy / quiet: %.2f (wall), %.2f (cpu)\n", noisy.wall_s / quiet.wall_s, noisy.cpu_s / quiet.cpu_s);
+  std::printf("  %-24s %9.2f %9.2f %12.0f\n", "every noise process on", noisy.wall_s, noisy.cpu_s,
+              3600.0 / noisy.wall_s);
+  std::printf("  ratio noisy / quiet: %.2f (wall), %.2f (cpu)\n", noisy.wall_s / quiet.wall_s,
+              noisy.cpu_s / quiet.cpu_s);
   return 0;
 }

@@ -100,8 +100,8 @@ std::vector<allan::StabilityPoint> oavar_curve(const std::vector<double>& rates,
 
 FitResult fit_rates(const std::vector<double>& rates, double rate_hz) {
   const double duration_s = rates.size() / rate_hz;
-  const auto curve = allan::evaluate_frequency(allan::Statistic::kOverlappingAllan, rates,
-                                               1.0 / rate_hz, octave_averaging_factors(rates.size()));
+  const auto curve = allan::evaluate_frequency(allan::Statistic::kOverlappingAllan, rates, 1.0 / rate_hz,
+                                               octave_averaging_factors(rates.size()));
   return fit_noise_model(curve, 1.0 / rate_hz, duration_s);
 }
 
@@ -164,29 +164,41 @@ std::vector<CoverageCase> coverage_cases() {
                   {TermKind::kWhiteRate, 4.4e-5},
                   {TermKind::kBiasInstability, 1.49e-5, 5.0},
                   {TermKind::kRandomWalk, 3.2e-5}};
-    cases.push_back({"1 MEMS mixture (Q N B K), 10 Hz, 24 h", 10.0, 24.0 * 3600.0,
-                     {same_on_all_axes(mems), same_on_all_axes(scaled(mems, 30.0))}, {0.0, 0.0}});
+    cases.push_back({"1 MEMS mixture (Q N B K), 10 Hz, 24 h",
+                     10.0,
+                     24.0 * 3600.0,
+                     {same_on_all_axes(mems), same_on_all_axes(scaled(mems, 30.0))},
+                     {0.0, 0.0}});
   }
   {
     NoiseModel fog;  // case 2: FOG, a Markov hump over the white noise, B under it
     fog.terms = {{TermKind::kWhiteRate, 2.9e-7},
                  {TermKind::kBiasInstability, 1.5e-8, 100.0},
                  {TermKind::kMarkov, 1.16e-5, 0.01}};
-    cases.push_back({"2 FOG hump (N B Markov), 2 kHz, 600 s", 2000.0, 600.0,
-                     {same_on_all_axes(fog), same_on_all_axes(scaled(fog, 1e4))}, {0.0, 0.0}});
+    cases.push_back({"2 FOG hump (N B Markov), 2 kHz, 600 s",
+                     2000.0,
+                     600.0,
+                     {same_on_all_axes(fog), same_on_all_axes(scaled(fog, 1e4))},
+                     {0.0, 0.0}});
   }
   {
     NoiseModel white;  // case 3: white rate noise only
     white.terms = {{TermKind::kWhiteRate, 1.75e-4}};
-    cases.push_back({"3 white noise (N), 100 Hz, 1 h", 100.0, 3600.0,
-                     {same_on_all_axes(white), same_on_all_axes(scaled(white, 10.0))}, {0.0, 0.0}});
+    cases.push_back({"3 white noise (N), 100 Hz, 1 h",
+                     100.0,
+                     3600.0,
+                     {same_on_all_axes(white), same_on_all_axes(scaled(white, 10.0))},
+                     {0.0, 0.0}});
   }
   {
     NoiseModel gyro, accelerometer;  // issue 14's reproduction: N and K
     gyro.terms = {{TermKind::kWhiteRate, 8e-5}, {TermKind::kRandomWalk, 2.2e-6}};
     accelerometer.terms = {{TermKind::kWhiteRate, 1.4e-3}, {TermKind::kRandomWalk, 8.6e-5}};
-    cases.push_back({"4 N and K (issue 14), 400 Hz, 1 h", 400.0, 3600.0,
-                     {same_on_all_axes(gyro), same_on_all_axes(accelerometer)}, {0.0, 0.0}});
+    cases.push_back({"4 N and K (issue 14), 400 Hz, 1 h",
+                     400.0,
+                     3600.0,
+                     {same_on_all_axes(gyro), same_on_all_axes(accelerometer)},
+                     {0.0, 0.0}});
   }
   // New cases: the front end, lines, resonances, Markov terms, ramps, output LSB.
   {
@@ -203,8 +215,11 @@ std::vector<CoverageCase> coverage_cases() {
                            {TermKind::kRandomWalk, 1e-4},
                            {TermKind::kSinusoid, 6e-3, 0.55},
                            {TermKind::kResonance, 1e-2, 20.0, 6.0}};
-    cases.push_back({"5 MEMS front end (N+low-pass B K line mode, LSB), 100 Hz, 2 h", 100.0, 7200.0,
-                     {varied_axes(gyro), varied_axes(accelerometer)}, {2e-3, 1e-2}});
+    cases.push_back({"5 MEMS front end (N+low-pass B K line mode, LSB), 100 Hz, 2 h",
+                     100.0,
+                     7200.0,
+                     {varied_axes(gyro), varied_axes(accelerometer)},
+                     {2e-3, 1e-2}});
   }
   {
     // A faster sensor: a 80 Hz front end at 200 Hz, a Markov hump (T_c 2 s), a 3 Hz line, a mode
@@ -220,8 +235,11 @@ std::vector<CoverageCase> coverage_cases() {
                            {TermKind::kMarkov, 4e-3, 5.0},
                            {TermKind::kSinusoid, 2e-3, 1.7},
                            {TermKind::kResonance, 8e-3, 30.0, 8.0}};
-    cases.push_back({"6 front end, Markov, line, mode, ramp, 200 Hz, 1 h", 200.0, 3600.0,
-                     {varied_axes(gyro), varied_axes(accelerometer)}, {0.0, 0.0}});
+    cases.push_back({"6 front end, Markov, line, mode, ramp, 200 Hz, 1 h",
+                     200.0,
+                     3600.0,
+                     {varied_axes(gyro), varied_axes(accelerometer)},
+                     {0.0, 0.0}});
   }
   {
     // Angle white noise (an increment-quantised output), white rate, a slow Markov and a ramp.
@@ -234,8 +252,11 @@ std::vector<CoverageCase> coverage_cases() {
                            {TermKind::kWhiteRate, 8e-4},
                            {TermKind::kRateRamp, 2e-7},
                            {TermKind::kMarkov, 2e-3, 20.0}};
-    cases.push_back({"7 angle noise, Markov, ramp (Q N Markov R), 20 Hz, 4 h", 20.0, 4.0 * 3600.0,
-                     {varied_axes(gyro), varied_axes(accelerometer)}, {0.0, 0.0}});
+    cases.push_back({"7 angle noise, Markov, ramp (Q N Markov R), 20 Hz, 4 h",
+                     20.0,
+                     4.0 * 3600.0,
+                     {varied_axes(gyro), varied_axes(accelerometer)},
+                     {0.0, 0.0}});
   }
   {
     // The front end with the one-parameter terms of rate (N behind a 30 Hz corner at 100 Hz, B's
@@ -250,8 +271,11 @@ std::vector<CoverageCase> coverage_cases() {
                            {TermKind::kBiasInstability, 3e-3, 50.0},
                            {TermKind::kRandomWalk, 6e-4},
                            {TermKind::kRateRamp, 3e-5}};
-    cases.push_back({"8 N+low-pass B K R, 100 Hz, 1 h", 100.0, 3600.0,
-                     {varied_axes(gyro), varied_axes(accelerometer)}, {0.0, 0.0}});
+    cases.push_back({"8 N+low-pass B K R, 100 Hz, 1 h",
+                     100.0,
+                     3600.0,
+                     {varied_axes(gyro), varied_axes(accelerometer)},
+                     {0.0, 0.0}});
   }
   return cases;
 }
@@ -328,7 +352,8 @@ void judge_axis(const NoiseModel& truth, const FitResult& fit, RecordOutcome* re
       if (reported.kind != term.kind) continue;
       if (match == nullptr || (reported.status != TermStatus::kAbsent && match->status == TermStatus::kAbsent) ||
           (reported.status != TermStatus::kAbsent && has_shape(term.kind) && term.shape > 0.0 &&
-           std::abs(std::log(reported.shape.value / term.shape)) < std::abs(std::log(match->shape.value / term.shape)))) {
+           std::abs(std::log(reported.shape.value / term.shape)) <
+               std::abs(std::log(match->shape.value / term.shape)))) {
         match = &reported;
       }
     }
@@ -361,7 +386,8 @@ void judge_axis(const NoiseModel& truth, const FitResult& fit, RecordOutcome* re
       ++record->spurious[static_cast<int>(CoverageKind::kLowPass)];
     }
     if (reported.kind == TermKind::kZeroDcFamily) continue;
-    if (!in_truth[static_cast<int>(coverage_kind(reported.kind))]) ++record->spurious[static_cast<int>(coverage_kind(reported.kind))];
+    if (!in_truth[static_cast<int>(coverage_kind(reported.kind))])
+      ++record->spurious[static_cast<int>(coverage_kind(reported.kind))];
   }
 }
 
@@ -391,7 +417,8 @@ void print_tallies(const std::array<Tally, static_cast<int>(CoverageKind::kCount
     const double in68 = 100.0 * tally.inside_68 / std::max(1, tally.truths);
     const double in95 = 100.0 * tally.inside_95 / std::max(1, tally.truths);
     std::printf("  %-10s %6d %8.1f%% %8.1f%%   %d / %d / %d; %d; %d / %d", kCoverageKindNames[k], tally.truths, in68,
-                in95, tally.by_interval, tally.by_bound, tally.unjudged, tally.spurious, tally.below_95, tally.above_95);
+                in95, tally.by_interval, tally.by_bound, tally.unjudged, tally.spurious, tally.below_95,
+                tally.above_95);
     if (with_targets && tally.truths > 0) {
       std::printf("   %s", in68 >= 60.0 && in68 <= 76.0 && in95 >= 90.0 ? "met" : "MISSED");
       if (tally.truths < 240) std::printf(" (fewer than 240 truths)");
@@ -513,8 +540,7 @@ int run_rlg(double hours, double rate_hz, int replicas, const std::string& profi
     }
   }
   if (gyro.pulse_weight > 0.0) {
-    gyro.noise_per_axis[0].push_back(
-        noise::WhiteAngleParameters{gyro.pulse_weight / std::sqrt(12.0), 0.0});
+    gyro.noise_per_axis[0].push_back(noise::WhiteAngleParameters{gyro.pulse_weight / std::sqrt(12.0), 0.0});
     gyro.pulse_weight = 0.0;
   }
   const auto start = std::chrono::steady_clock::now();
@@ -526,22 +552,21 @@ int run_rlg(double hours, double rate_hz, int replicas, const std::string& profi
   const auto report = [&](const char* label) {
     std::printf("%s\n", label);
     for (const TermEstimate& term : fit.terms) {
-      std::printf("  %-18s %-13s value %.4g sigma %.3g (%.1f %%, %s) bound %.3g shape %.3g\n",
-                  term.name.c_str(), term_status_name(term.status).c_str(), term.amplitude.value,
-                  term.amplitude.sigma, 100.0 * term.amplitude.sigma / term.amplitude.value,
-                  sigma_source_name(term.sigma_source).c_str(), term.amplitude.upper_bound,
-                  term.shape.value);
+      std::printf("  %-18s %-13s value %.4g sigma %.3g (%.1f %%, %s) bound %.3g shape %.3g\n", term.name.c_str(),
+                  term_status_name(term.status).c_str(), term.amplitude.value, term.amplitude.sigma,
+                  100.0 * term.amplitude.sigma / term.amplitude.value, sigma_source_name(term.sigma_source).c_str(),
+                  term.amplitude.upper_bound, term.shape.value);
     }
     const TermEstimate* bias = fit.find("bias_instability");
     if (bias != nullptr && bias->status != TermStatus::kAbsent) {
-      std::printf("  B: truth %.3g rad/s, estimate %.3g +- %.2g; record needed for 15 %%: %.1f h\n",
-                  true_b, bias->amplitude.value, bias->amplitude.sigma,
+      std::printf("  B: truth %.3g rad/s, estimate %.3g +- %.2g; record needed for 15 %%: %.1f h\n", true_b,
+                  bias->amplitude.value, bias->amplitude.sigma,
                   required_record_length_s(fit, "bias_instability", 0.15) / 3600.0);
     }
   };
   std::printf("truth: Q %.3g rad, N %.3g rad/s/sqrt(Hz), B %.3g rad/s\n", true_q, true_n, true_b);
-  std::printf("graphical: N slope reading at 1 s %.3g, B flat tangent %.3g\n",
-              fit.graphical.white_rate_at_1s, fit.graphical.bias_instability_from_minimum);
+  std::printf("graphical: N slope reading at 1 s %.3g, B flat tangent %.3g\n", fit.graphical.white_rate_at_1s,
+              fit.graphical.bias_instability_from_minimum);
   report("moment covariance:");
   if (replicas > 1) {
     apply_bootstrap(bootstrap_uncertainty(fit, {replicas, 5}), &fit);
@@ -561,9 +586,10 @@ int main(int argc, char** argv) {
   }
   if (mode == "rlg") {
     return run_rlg(argc > 2 ? std::atof(argv[2]) : 150.0, argc > 3 ? std::atof(argv[3]) : 10.0,
-                   argc > 4 ? std::atoi(argv[4]) : 0,
-                   argc > 5 ? argv[5] : "config/sensors/rlg_navigation.yaml");
+                   argc > 4 ? std::atoi(argv[4]) : 0, argc > 5 ? argv[5] : "config/sensors/rlg_navigation.yaml");
   }
-  std::fprintf(stderr, "usage: identify_coverage coverage [seeds] [threads] [replicas] [cases] | rlg [hours] [rate_hz] [replicas] [profile]\n");
+  std::fprintf(stderr,
+               "usage: identify_coverage coverage [seeds] [threads] [replicas] [cases] | rlg [hours] [rate_hz] "
+               "[replicas] [profile]\n");
   return 2;
 }

@@ -43,7 +43,8 @@ int main(int argc, char** argv) {
   config.vertical.fixed_reference_height_m = scenario.height_m;  // a free vertical channel diverges
   nav::Navigator navigator(config);
   nav::NavState initial;
-  initial.q_body_to_enu = emulator::attitude_from_roll_pitch_yaw(scenario.roll_rad, scenario.pitch_rad, scenario.yaw_rad);
+  initial.q_body_to_enu =
+      emulator::attitude_from_roll_pitch_yaw(scenario.roll_rad, scenario.pitch_rad, scenario.yaw_rad);
   initial.latitude_rad = scenario.latitude_rad;
   initial.longitude_rad = scenario.longitude_rad;
   initial.height_m = scenario.height_m;
@@ -54,8 +55,8 @@ int main(int argc, char** argv) {
 
   const double generation_rate = samples / generation_s;
   const double navigation_rate = samples / navigation_s;
-  std::printf("navigator_throughput: %ld samples (%.0f s of %s at %.0f Hz)\n", samples,
-              samples / settings.rate_hz, profile.name.c_str(), settings.rate_hz);
+  std::printf("navigator_throughput: %ld samples (%.0f s of %s at %.0f Hz)\n", samples, samples / settings.rate_hz,
+              profile.name.c_str(), settings.rate_hz);
   std::printf("  emulator generation: %12.0f samples/s\n", generation_rate);
   std::printf("  navigator update:    %12.0f samples/s (%.0fx real time at %.0f Hz)\n", navigation_rate,
               navigation_rate / settings.rate_hz, settings.rate_hz);

@@ -13,9 +13,9 @@ namespace {
 
 struct DifferenceEstimator {
   Statistic statistic;
-  int order;               // d
-  bool overlapping;        // stride tau0 instead of tau
-  bool remove_mean;        // Krobka: subtract <D>^2
+  int order;         // d
+  bool overlapping;  // stride tau0 instead of tau
+  bool remove_mean;  // Krobka: subtract <D>^2
 };
 
 // Moments of D_k = sum_j (-1)^(d-j) C(d,j) x[k + j m] over k = 0, stride, ..., k + d m <= N-1.
@@ -42,8 +42,7 @@ long double block_sum(long long count, Term term) {
 }
 
 template <int kOrder>
-DifferenceMoments difference_moments(const std::vector<double>& x, std::size_t m,
-                                     std::size_t stride, long long terms) {
+DifferenceMoments difference_moments(const std::vector<double>& x, std::size_t m, std::size_t stride, long long terms) {
   const double* p = x.data();
   auto difference_at = [p, m, stride](long long i) {
     const double* q = p + i * stride;
@@ -61,19 +60,17 @@ DifferenceMoments difference_moments(const std::vector<double>& x, std::size_t m
   return moments;
 }
 
-double difference_variance(const DifferenceEstimator& estimator, const std::vector<double>& phase,
-                           double tau0_s, int m) {
+double difference_variance(const DifferenceEstimator& estimator, const std::vector<double>& phase, double tau0_s,
+                           int m) {
   const long long terms = detail::require_computable(estimator.statistic, phase, tau0_s, m);
   const std::size_t stride = estimator.overlapping ? 1 : static_cast<std::size_t>(m);
   const std::size_t lag = static_cast<std::size_t>(m);
-  const DifferenceMoments moments = estimator.order == 2
-                                        ? difference_moments<2>(phase, lag, stride, terms)
-                                        : difference_moments<3>(phase, lag, stride, terms);
+  const DifferenceMoments moments = estimator.order == 2 ? difference_moments<2>(phase, lag, stride, terms)
+                                                         : difference_moments<3>(phase, lag, stride, terms);
   // Normalised so that white FM gives the same level for Allan (1/2) and Hadamard (1/6).
   const double normalisation = estimator.order == 2 ? 2.0 : 6.0;
   const double tau_s = m * tau0_s;
-  const double mean_square =
-      estimator.remove_mean ? moments.central_mean_square : moments.mean_square();
+  const double mean_square = estimator.remove_mean ? moments.central_mean_square : moments.mean_square();
   return mean_square / (normalisation * tau_s * tau_s);
 }
 
@@ -92,8 +89,7 @@ double hadamard_variance(const std::vector<double>& phase, double tau0_s, int m)
 }
 
 double overlapping_hadamard_variance(const std::vector<double>& phase, double tau0_s, int m) {
-  return difference_variance({Statistic::kOverlappingHadamard, 3, true, false}, phase, tau0_s,
-                             m);
+  return difference_variance({Statistic::kOverlappingHadamard, 3, true, false}, phase, tau0_s, m);
 }
 
 double allan_krobka_variance(const std::vector<double>& phase, double tau0_s, int m) {

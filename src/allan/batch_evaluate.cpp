@@ -14,10 +14,9 @@ namespace imu_lab {
 namespace allan {
 namespace {
 
-std::vector<StabilityPoint> evaluate_points(Statistic statistic, const std::vector<double>& phase,
-                                            double tau0_s,
-                                            const std::vector<int>& averaging_factors,
-                                            double confidence, SampleKind kind) {
+std::vector<StabilityPoint> evaluate_points(Statistic statistic, const std::vector<double>& phase, double tau0_s,
+                                            const std::vector<int>& averaging_factors, double confidence,
+                                            SampleKind kind) {
   const std::string caller = "evaluate(" + statistic_name(statistic) + ")";
   detail::require_positive_tau0(tau0_s, caller);
   detail::require_finite_samples(phase, caller);
@@ -35,8 +34,7 @@ std::vector<StabilityPoint> evaluate_points(Statistic statistic, const std::vect
     point.tau_s = m * tau0_s;
     point.deviation = std::sqrt(variance(statistic, phase, tau0_s, m));
     point.alpha = estimate_noise_alpha(statistic, phase, tau0_s, m, kind);
-    point.edf = equivalent_degrees_of_freedom(statistic, point.alpha, m,
-                                              static_cast<long long>(phase.size()));
+    point.edf = equivalent_degrees_of_freedom(statistic, point.alpha, m, static_cast<long long>(phase.size()));
     if (point.edf > 0.0) {
       const DeviationBounds bounds = chi_squared_bounds(point.deviation, point.edf, confidence);
       point.deviation_lower = bounds.lower;
@@ -61,22 +59,16 @@ double variance(Statistic statistic, const std::vector<double>& phase, double ta
     case Statistic::kAllanKrobka: return allan_krobka_variance(phase, tau0_s, m);
     case Statistic::kHadamardKrobka: return hadamard_krobka_variance(phase, tau0_s, m);
   }
-  throw std::invalid_argument("variance: unknown statistic " +
-                              std::to_string(static_cast<int>(statistic)));
+  throw std::invalid_argument("variance: unknown statistic " + std::to_string(static_cast<int>(statistic)));
 }
 
-std::vector<StabilityPoint> evaluate(Statistic statistic, const std::vector<double>& phase,
-                                     double tau0_s, const std::vector<int>& averaging_factors,
-                                     double confidence) {
-  return evaluate_points(statistic, phase, tau0_s, averaging_factors, confidence,
-                         SampleKind::kPhase);
+std::vector<StabilityPoint> evaluate(Statistic statistic, const std::vector<double>& phase, double tau0_s,
+                                     const std::vector<int>& averaging_factors, double confidence) {
+  return evaluate_points(statistic, phase, tau0_s, averaging_factors, confidence, SampleKind::kPhase);
 }
 
-std::vector<StabilityPoint> evaluate_frequency(Statistic statistic,
-                                               const std::vector<double>& frequency,
-                                               double tau0_s,
-                                               const std::vector<int>& averaging_factors,
-                                               double confidence) {
+std::vector<StabilityPoint> evaluate_frequency(Statistic statistic, const std::vector<double>& frequency, double tau0_s,
+                                               const std::vector<int>& averaging_factors, double confidence) {
   detail::require_finite_samples(frequency, "evaluate_frequency(" + statistic_name(statistic) + ")");
   // Every statistic here is blind to a frequency offset; removing the mean keeps the
   // integrated phase small, so its differences keep full double precision.
@@ -85,8 +77,8 @@ std::vector<StabilityPoint> evaluate_frequency(Statistic statistic,
   const double mean = frequency.empty() ? 0.0 : static_cast<double>(sum / frequency.size());
   std::vector<double> centred(frequency.size());
   for (std::size_t k = 0; k < frequency.size(); ++k) centred[k] = frequency[k] - mean;
-  return evaluate_points(statistic, phase_from_frequency(centred, tau0_s), tau0_s,
-                         averaging_factors, confidence, SampleKind::kFrequency);
+  return evaluate_points(statistic, phase_from_frequency(centred, tau0_s), tau0_s, averaging_factors, confidence,
+                         SampleKind::kFrequency);
 }
 
 }  // namespace allan

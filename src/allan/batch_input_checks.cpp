@@ -32,16 +32,15 @@ void require_finite_samples(const std::vector<double>& samples, const std::strin
   }
 }
 
-long long require_computable(Statistic statistic, const std::vector<double>& phase,
-                             double tau0_s, int m) {
+long long require_computable(Statistic statistic, const std::vector<double>& phase, double tau0_s, int m) {
   const std::string caller = statistic_name(statistic) + " variance";
   require_positive_tau0(tau0_s, caller);
   require_positive_averaging_factor(m, caller);
   const long long terms = term_count(statistic, phase.size(), m);
   if (terms <= 0) {
     throw std::invalid_argument(caller + ": " + std::to_string(phase.size()) +
-                                " phase samples are too few for averaging factor m = " +
-                                std::to_string(m) + "; use a smaller m or a longer record");
+                                " phase samples are too few for averaging factor m = " + std::to_string(m) +
+                                "; use a smaller m or a longer record");
   }
   require_finite_samples(phase, caller);
   return terms;

@@ -16,8 +16,7 @@ void require_positive_averaging_factor(int m, const std::string& caller);
 void require_finite_samples(const std::vector<double>& samples, const std::string& caller);
 
 // All of the above plus enough samples for `statistic` at m; returns the term count.
-long long require_computable(Statistic statistic, const std::vector<double>& phase,
-                             double tau0_s, int m);
+long long require_computable(Statistic statistic, const std::vector<double>& phase, double tau0_s, int m);
 
 }  // namespace detail
 }  // namespace allan

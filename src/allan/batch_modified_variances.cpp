@@ -13,9 +13,7 @@ namespace allan {
 double modified_allan_variance(const std::vector<double>& phase, double tau0_s, int m) {
   const long long terms = detail::require_computable(Statistic::kModifiedAllan, phase, tau0_s, m);
   const std::size_t lag = static_cast<std::size_t>(m);
-  auto second_difference = [&](std::size_t i) {
-    return phase[i + 2 * lag] - 2.0 * phase[i + lag] + phase[i];
-  };
+  auto second_difference = [&](std::size_t i) { return phase[i + 2 * lag] - 2.0 * phase[i + lag] + phase[i]; };
   long double window = 0.0L;
   for (std::size_t i = 0; i < lag; ++i) window += second_difference(i);
   long double sum_of_squares = 0.0L;
@@ -27,8 +25,7 @@ double modified_allan_variance(const std::vector<double>& phase, double tau0_s, 
     }
   }
   const double tau_s = m * tau0_s;
-  return static_cast<double>(sum_of_squares / terms) /
-         (2.0 * static_cast<double>(m) * m * tau_s * tau_s);
+  return static_cast<double>(sum_of_squares / terms) / (2.0 * static_cast<double>(m) * m * tau_s * tau_s);
 }
 
 // TVAR = tau^2 / 3 * MVAR (NIST SP 1065, 5.2.6).

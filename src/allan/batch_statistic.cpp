@@ -19,21 +19,18 @@ std::string statistic_name(Statistic statistic) {
     case Statistic::kAllanKrobka: return "akdev";
     case Statistic::kHadamardKrobka: return "hkdev";
   }
-  throw std::invalid_argument("statistic_name: unknown Statistic value " +
-                              std::to_string(static_cast<int>(statistic)));
+  throw std::invalid_argument("statistic_name: unknown Statistic value " + std::to_string(static_cast<int>(statistic)));
 }
 
 int difference_order(Statistic statistic) {
-  const bool hadamard = statistic == Statistic::kHadamard ||
-                        statistic == Statistic::kOverlappingHadamard ||
+  const bool hadamard = statistic == Statistic::kHadamard || statistic == Statistic::kOverlappingHadamard ||
                         statistic == Statistic::kHadamardKrobka;
   return hadamard ? 3 : 2;
 }
 
 long long term_count(Statistic statistic, std::size_t phase_count, int m) {
   if (m < 1) {
-    throw std::invalid_argument("term_count: averaging factor m = " + std::to_string(m) +
-                                " must be at least 1");
+    throw std::invalid_argument("term_count: averaging factor m = " + std::to_string(m) + " must be at least 1");
   }
   const long long n = static_cast<long long>(phase_count);
   const long long lag = m;

@@ -55,12 +55,14 @@ std::string read_checkpoint_file(const std::string& path) {
   const std::uint64_t version = read_u64(file, sizeof kMagic);
   if (version != kStreamingCheckpointVersion) {
     throw InputError(refused + "format version " + std::to_string(version) + ", this build reads only version " +
-                     std::to_string(kStreamingCheckpointVersion) + "; resume it with the build that wrote it or start again");
+                     std::to_string(kStreamingCheckpointVersion) +
+                     "; resume it with the build that wrote it or start again");
   }
   const std::uint64_t payload_size = read_u64(file, sizeof kMagic + sizeof(std::uint64_t));
   if (file.size() - kHeaderBytes - sizeof(std::uint64_t) != payload_size) {
-    throw InputError(refused + "truncated or padded: " + std::to_string(file.size()) + " bytes where the header promises a " +
-                     std::to_string(payload_size) + "-byte payload; start the run again");
+    throw InputError(refused + "truncated or padded: " + std::to_string(file.size()) +
+                     " bytes where the header promises a " + std::to_string(payload_size) +
+                     "-byte payload; start the run again");
   }
   std::string payload = file.substr(kHeaderBytes, payload_size);
   if (checkpoint_checksum(payload) != read_u64(file, kHeaderBytes + payload_size)) {

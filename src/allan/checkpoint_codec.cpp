@@ -9,9 +9,7 @@
 namespace imu_lab {
 namespace allan {
 
-void BinaryWriter::put_raw(const void* data, std::size_t size) {
-  bytes_.append(static_cast<const char*>(data), size);
-}
+void BinaryWriter::put_raw(const void* data, std::size_t size) { bytes_.append(static_cast<const char*>(data), size); }
 void BinaryWriter::put_u64(std::uint64_t value) { put_raw(&value, sizeof value); }
 void BinaryWriter::put_i64(std::int64_t value) { put_raw(&value, sizeof value); }
 void BinaryWriter::put_f64(double value) { put_raw(&value, sizeof value); }
@@ -24,8 +22,7 @@ void BinaryWriter::put_i64s(const std::vector<std::int64_t>& values) {
   put_raw(values.data(), values.size() * sizeof(std::int64_t));
 }
 
-BinaryReader::BinaryReader(const std::string& bytes, std::string source)
-    : bytes_(bytes), source_(std::move(source)) {}
+BinaryReader::BinaryReader(const std::string& bytes, std::string source) : bytes_(bytes), source_(std::move(source)) {}
 
 void BinaryReader::fail(const std::string& problem) const {
   throw InputError(source_ + ": " + problem + " (at byte " + std::to_string(position_) +

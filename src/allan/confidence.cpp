@@ -31,12 +31,10 @@ double chi_squared_quantile(double probability, double edf) {
 
 DeviationBounds chi_squared_bounds(double deviation, double edf, double confidence) {
   if (!(edf > 0.0) || !std::isfinite(edf)) {
-    throw std::invalid_argument("chi_squared_bounds: edf = " + std::to_string(edf) +
-                                " must be positive and finite");
+    throw std::invalid_argument("chi_squared_bounds: edf = " + std::to_string(edf) + " must be positive and finite");
   }
   if (!(confidence > 0.0 && confidence < 1.0)) {
-    throw std::invalid_argument("chi_squared_bounds: confidence = " +
-                                std::to_string(confidence) +
+    throw std::invalid_argument("chi_squared_bounds: confidence = " + std::to_string(confidence) +
                                 " must lie strictly between 0 and 1 (e.g. 0.683)");
   }
   if (!(deviation >= 0.0)) {

@@ -8,7 +8,8 @@ namespace imu_lab {
 namespace allan {
 
 std::vector<double> average_rate_blocks(const std::vector<double>& frequency, int level) {
-  if (level < 0 || level > 40) throw std::invalid_argument("average_rate_blocks: level " + std::to_string(level) + " is outside 0 .. 40");
+  if (level < 0 || level > 40)
+    throw std::invalid_argument("average_rate_blocks: level " + std::to_string(level) + " is outside 0 .. 40");
   const std::size_t block = std::size_t{1} << level;
   std::vector<double> averages(frequency.size() / block);
   for (std::size_t k = 0; k < averages.size(); ++k) {

@@ -40,8 +40,9 @@ std::int64_t to_ns(double seconds) { return static_cast<std::int64_t>(std::llrou
 
 void ImpulseScreenOptions::validate() const {
   require(channel_count >= 1, "channel_count", "must be at least 1");
-  require(std::isfinite(threshold_sigma) && threshold_sigma > kScaleClipSigma, "threshold_sigma",
-          "must be a number above " + std::to_string(kScaleClipSigma) + " (scales of the deviation; 12 is the default)");
+  require(
+      std::isfinite(threshold_sigma) && threshold_sigma > kScaleClipSigma, "threshold_sigma",
+      "must be a number above " + std::to_string(kScaleClipSigma) + " (scales of the deviation; 12 is the default)");
   require(std::isfinite(guard_before_s) && guard_before_s >= 0.0 && guard_before_s <= 60.0, "guard_before_s",
           "must lie between 0 and 60 s");
   require(std::isfinite(guard_after_s) && guard_after_s >= 0.0 && guard_after_s <= 3600.0, "guard_after_s",

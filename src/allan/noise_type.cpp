@@ -26,8 +26,7 @@ double lag1_autocorrelation(const std::vector<double>& z) {
 }
 
 // The series at tau = m tau0: every m-th phase sample, or the block means of frequency.
-std::vector<double> series_at_tau(const std::vector<double>& phase, double tau0_s, int m,
-                                  SampleKind kind) {
+std::vector<double> series_at_tau(const std::vector<double>& phase, double tau0_s, int m, SampleKind kind) {
   const std::size_t lag = static_cast<std::size_t>(m);
   std::vector<double> series;
   series.reserve(phase.size() / lag + 1);
@@ -47,8 +46,7 @@ int mu_from_alpha(int alpha) { return alpha >= 1 ? -2 : -alpha - 1; }
 // B1 with boundaries at the geometric means of neighbouring expectations; returns mu.
 int b1_ratio_mu(double measured_ratio, long long b1_count, int lowest_alpha) {
   for (int mu = mu_from_alpha(lowest_alpha); mu > -2; --mu) {
-    const double boundary =
-        std::sqrt(expected_b1_ratio(b1_count, mu) * expected_b1_ratio(b1_count, mu - 1));
+    const double boundary = std::sqrt(expected_b1_ratio(b1_count, mu) * expected_b1_ratio(b1_count, mu - 1));
     if (measured_ratio > boundary) return mu;
   }
   return -2;
@@ -60,8 +58,8 @@ int b1_ratio_mu(double measured_ratio, long long b1_count, int lowest_alpha) {
 // averages could not otherwise reproduce.
 int b1_averaging_factor(Statistic statistic, std::size_t phase_count, int m) {
   const long long frequency_count = static_cast<long long>(phase_count) - 1;
-  while (m > 1 && (frequency_count / m < kMinimumB1Points ||
-                   term_count(statistic, phase_count, m) < kMinimumB1Points)) {
+  while (m > 1 &&
+         (frequency_count / m < kMinimumB1Points || term_count(statistic, phase_count, m) < kMinimumB1Points)) {
     --m;
   }
   return m;
@@ -70,8 +68,7 @@ int b1_averaging_factor(Statistic statistic, std::size_t phase_count, int m) {
 // B1 (expected value taken at the statistic's own term count, as Stable32 does), refined by
 // R(n) = MVAR/AVAR where B1 only says "phase noise": R(n) falls as 1/m for WPM, slowly for
 // FPM and tends to 1/2 for WFM, so it separates all three.
-int b1_fallback_alpha(Statistic statistic, const std::vector<double>& phase, double tau0_s,
-                      int m, int lowest_alpha) {
+int b1_fallback_alpha(Statistic statistic, const std::vector<double>& phase, double tau0_s, int m, int lowest_alpha) {
   m = b1_averaging_factor(statistic, phase.size(), m);
   const std::vector<double> averages = series_at_tau(phase, tau0_s, m, SampleKind::kFrequency);
   const long long n = static_cast<long long>(averages.size());
@@ -92,8 +89,7 @@ int b1_fallback_alpha(Statistic statistic, const std::vector<double>& phase, dou
   const int mu = b1_ratio_mu(sample_variance / two_sample_variance, b1_count, lowest_alpha);
   if (mu > -2) return -mu - 1;
   if (term_count(Statistic::kModifiedAllan, phase.size(), m) <= 0) return 1;
-  const double ratio = modified_allan_variance(phase, tau0_s, m) /
-                       overlapping_allan_variance(phase, tau0_s, m);
+  const double ratio = modified_allan_variance(phase, tau0_s, m) / overlapping_allan_variance(phase, tau0_s, m);
   const double white_fm_ratio = 0.5;
   if (ratio > std::sqrt(expected_modified_ratio(1, m) * white_fm_ratio)) return 0;
   return ratio > std::sqrt(expected_modified_ratio(1, m) * expected_modified_ratio(2, m)) ? 1 : 2;
@@ -101,12 +97,10 @@ int b1_fallback_alpha(Statistic statistic, const std::vector<double>& phase, dou
 
 }  // namespace
 
-int lag1_autocorrelation_alpha(std::vector<double> series, int max_differences,
-                               SampleKind kind) {
+int lag1_autocorrelation_alpha(std::vector<double> series, int max_differences, SampleKind kind) {
   if (series.size() < 3) {
     throw std::invalid_argument("lag1_autocorrelation_alpha: " + std::to_string(series.size()) +
-                                " points are too few; the method needs at least " +
-                                std::to_string(kMinimumLag1Points));
+                                " points are too few; the method needs at least " + std::to_string(kMinimumLag1Points));
   }
   for (int d = 0;; ++d) {
     const double r1 = lag1_autocorrelation(series);
@@ -129,12 +123,10 @@ double expected_b1_ratio(long long frequency_count, int mu) {
 double expected_modified_ratio(int alpha, int m) {
   if (alpha == 2) return 1.0 / m;
   if (alpha == 1) return 3.37 / (1.04 + 3.0 * std::log(M_PI * m));
-  throw std::invalid_argument("expected_modified_ratio: defined for alpha = 1 or 2, not " +
-                              std::to_string(alpha));
+  throw std::invalid_argument("expected_modified_ratio: defined for alpha = 1 or 2, not " + std::to_string(alpha));
 }
 
-int estimate_noise_alpha(Statistic statistic, const std::vector<double>& phase, double tau0_s,
-                         int m, SampleKind kind) {
+int estimate_noise_alpha(Statistic statistic, const std::vector<double>& phase, double tau0_s, int m, SampleKind kind) {
   const int order = difference_order(statistic);
   const int lowest_alpha = 2 - 2 * order;  // reddest noise it converges for: alpha + 2d > 1
   const std::vector<double> series = series_at_tau(phase, tau0_s, m, kind);

@@ -57,8 +57,7 @@ StreamingOptions load_options(BinaryReader& in) {
 
 }  // namespace
 
-StreamingAllan::StreamingAllan(const StreamingOptions& options)
-    : options_(options), warm_up_(options.channel_count) {
+StreamingAllan::StreamingAllan(const StreamingOptions& options) : options_(options), warm_up_(options.channel_count) {
   options_.validate();
   channel_reports_.resize(options_.channel_count);
 }
@@ -185,7 +184,8 @@ StreamingSnapshot StreamingAllan::snapshot() const {
   result.curves.resize(kStreamingStatistics.size());
   for (const Statistic statistic : kStreamingStatistics) {
     auto& per_channel = result.curves[static_cast<std::size_t>(statistic)];
-    for (const ChannelAccumulator& channel : channels_) per_channel.push_back(streaming_points(statistic, channel, units));
+    for (const ChannelAccumulator& channel : channels_)
+      per_channel.push_back(streaming_points(statistic, channel, units));
   }
   for (std::size_t c = 0; c < channels_.size(); ++c) {
     std::int64_t segments = 0;
@@ -197,7 +197,8 @@ StreamingSnapshot StreamingAllan::snapshot() const {
 
 std::size_t StreamingAllan::state_size_bytes() const {
   std::size_t bytes = sizeof(*this) + warm_up_.heap_bytes() + channels_.capacity() * sizeof(ChannelAccumulator) +
-                      channel_reports_.capacity() * sizeof(ChannelReport) + kMaxRecordedStampEvents * sizeof(StampEvent);
+                      channel_reports_.capacity() * sizeof(ChannelReport) +
+                      kMaxRecordedStampEvents * sizeof(StampEvent);
   for (const ChannelAccumulator& channel : channels_) bytes += channel.heap_bytes();
   return bytes;
 }

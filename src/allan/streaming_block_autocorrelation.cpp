@@ -105,7 +105,8 @@ void BlockMeanAutocorrelation::update(const PhaseRing& ring) {
     const std::int64_t block_count = (newest - block_end) / m + 1;
     // Few block means (push() of one sample), or a segment's first ones: term by term.
     if (block_count < BlockSums::kLanes || chain[kMaxBlockDifferences].count == 0) {
-      for (; block_end <= newest; block_end += m) add_block_mean((ring.at(block_end) - ring.at(block_end - m)) / m, chain);
+      for (; block_end <= newest; block_end += m)
+        add_block_mean((ring.at(block_end) - ring.at(block_end - m)) / m, chain);
       continue;
     }
     add_steady_block_means(ring.point(block_end), block_count, m, chain);

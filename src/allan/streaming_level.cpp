@@ -88,8 +88,7 @@ std::size_t ResolutionLevel::heap_bytes() const {
   // A map node holds the pair plus about four pointers of bookkeeping.
   const std::size_t map_node_bytes = 2 * sizeof(std::int64_t) + 4 * sizeof(void*);
   return averaging_factors_.capacity() * sizeof(int) + ring_.heap_bytes() + head_.capacity() * sizeof(double) +
-         allan_.heap_bytes() + hadamard_.heap_bytes() + modified_.heap_bytes() +
-         block_autocorrelation_.heap_bytes() +
+         allan_.heap_bytes() + hadamard_.heap_bytes() + modified_.heap_bytes() + block_autocorrelation_.heap_bytes() +
          closed_total_end_terms_.capacity() * sizeof(CompensatedSum) +
          closed_segment_phase_counts_.size() * map_node_bytes;
 }
@@ -155,4 +154,3 @@ void ResolutionLevel::load(BinaryReader& in) {
 
 }  // namespace allan
 }  // namespace imu_lab
-

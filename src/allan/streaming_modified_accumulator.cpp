@@ -75,7 +75,6 @@ double slide_window(const double* x, std::int64_t count, std::ptrdiff_t m, doubl
   return window;
 }
 
-
 }  // namespace
 
 void ModifiedAccumulator::update(const PhaseRing& ring, std::int64_t first_index) {

@@ -37,16 +37,15 @@ const std::vector<double>& LevelHistoryPhase::phase() {
   return phase_;
 }
 
-int streaming_noise_alpha(Statistic statistic, const BlockSeriesSummary& block_means,
-                          LevelHistoryPhase& history_phase, int m, double tau0_s) {
+int streaming_noise_alpha(Statistic statistic, const BlockSeriesSummary& block_means, LevelHistoryPhase& history_phase,
+                          int m, double tau0_s) {
   const bool hadamard = is_hadamard_family(statistic);
   if (block_means.count[0] >= kMinimumLag1Points) {
     return std::clamp(lag1_alpha(block_means, hadamard ? 3 : 2), hadamard ? -4 : -2, 2);
   }
   const std::vector<double>& phase = history_phase.phase();
   if (phase.size() < 2) return 0;  // white FM, the batch rule's neutral answer
-  return estimate_noise_alpha(statistic, phase, std::ldexp(tau0_s, history_phase.level()), m,
-                              SampleKind::kFrequency);
+  return estimate_noise_alpha(statistic, phase, std::ldexp(tau0_s, history_phase.level()), m, SampleKind::kFrequency);
 }
 
 }  // namespace allan

@@ -6,9 +6,7 @@
 namespace imu_lab {
 namespace allan {
 
-PhaseHistory::PhaseHistory(std::size_t capacity) : capacity_(capacity) {
-  open_.phase.reserve(capacity_ + 1);
-}
+PhaseHistory::PhaseHistory(std::size_t capacity) : capacity_(capacity) { open_.phase.reserve(capacity_ + 1); }
 
 void PhaseHistory::append(Segment& segment, double level0_phase) const {
   const std::int64_t block_mask = (std::int64_t{1} << segment.level) - 1;

@@ -91,7 +91,8 @@ SegmentPooling pool_segments(Statistic statistic, const ResolutionLevel& level, 
     }
   }
   const long long contiguous = term_count(statistic, phase_points, m);
-  if (contiguous > 0) pooled.term_fraction = std::min(1.0, static_cast<double>(terms) / static_cast<double>(contiguous));
+  if (contiguous > 0)
+    pooled.term_fraction = std::min(1.0, static_cast<double>(terms) / static_cast<double>(contiguous));
   return pooled;
 }
 

@@ -113,7 +113,8 @@ void StampTracker::save(BinaryWriter& out) const {
 void StampTracker::load(BinaryReader& in) {
   tau0_ns_ = in.get_i64();
   gap_threshold_ns_ = in.get_finite_f64();
-  if (tau0_ns_ <= 0 || !(gap_threshold_ns_ > static_cast<double>(tau0_ns_))) in.fail("stamp tracker's tau0 or gap threshold");
+  if (tau0_ns_ <= 0 || !(gap_threshold_ns_ > static_cast<double>(tau0_ns_)))
+    in.fail("stamp tracker's tau0 or gap threshold");
   policy_ = in.get_enum(StampPolicy::kStop, "stamp policy");
   has_last_ = in.get_i64() != 0;
   last_stamp_ns_ = in.get_i64();

@@ -62,21 +62,22 @@ void require_enough_rests(std::size_t fitted, std::size_t held_out, bool known_o
   const std::size_t minimum = known_orientations ? kMinimumKnownRests : kMinimumUnknownRests;
   if (fitted == 0 && held_out == 0) {
     std::ostringstream message;
-    message << "no static intervals found (window " << detection.window_s << " s, threshold "
-            << detection.threshold_rad_s << " rad/s = " << detection.threshold_rad_s * kDegPerRad
-            << " deg/s over the resting level, from a window noise of " << detection.window_noise_rad_s
-            << " rad/s; resting level " << detection.resting_level_rad_s.norm() << " rad/s, at most "
-            << detection_options.max_resting_rate_rad_s
-            << " rad/s for a rest): the IMU must rest still in each orientation for at least the minimum rest duration; "
-               "raise the threshold or lower the minimum duration if it did";
+    message
+        << "no static intervals found (window " << detection.window_s << " s, threshold " << detection.threshold_rad_s
+        << " rad/s = " << detection.threshold_rad_s * kDegPerRad
+        << " deg/s over the resting level, from a window noise of " << detection.window_noise_rad_s
+        << " rad/s; resting level " << detection.resting_level_rad_s.norm() << " rad/s, at most "
+        << detection_options.max_resting_rate_rad_s
+        << " rad/s for a rest): the IMU must rest still in each orientation for at least the minimum rest duration; "
+           "raise the threshold or lower the minimum duration if it did";
     throw InputError(message.str());
   }
   if (fitted < minimum) {
     std::ostringstream message;
     message << "too few rests to fit: " << fitted << " static positions used for fitting (" << held_out
             << " held out); calibrating with " << (known_orientations ? "known" : "unknown")
-            << " orientations needs at least " << minimum << ": record " << (minimum - fitted)
-            << " more position" << (minimum - fitted == 1 ? "" : "s");
+            << " orientations needs at least " << minimum << ": record " << (minimum - fitted) << " more position"
+            << (minimum - fitted == 1 ? "" : "s");
     throw InputError(message.str());
   }
 }
@@ -142,14 +143,13 @@ CalibrationResult calibrate(const std::vector<ImuSample>& samples, const Calibra
   std::vector<bool> held_out(rest_count, false);
   for (std::size_t index : options.held_out_positions) {
     if (index >= rest_count) {
-      throw InputError("held-out position " + std::to_string(index + 1) + " does not exist: " +
-                       std::to_string(rest_count) + " static intervals were found");
+      throw InputError("held-out position " + std::to_string(index + 1) +
+                       " does not exist: " + std::to_string(rest_count) + " static intervals were found");
     }
     held_out[index] = true;
   }
   const std::size_t held_out_count = std::count(held_out.begin(), held_out.end(), true);
-  require_enough_rests(rest_count - held_out_count, held_out_count, known, result.detection,
-                       options.static_detection);
+  require_enough_rests(rest_count - held_out_count, held_out_count, known, result.detection, options.static_detection);
   if (known && options.schedule->attitudes_body_to_enu.size() != rest_count) {
     std::ostringstream message;
     message << "found " << rest_count << " static intervals but the schedule " << options.schedule->source << " has "
@@ -181,9 +181,13 @@ CalibrationResult calibrate(const std::vector<ImuSample>& samples, const Calibra
   for (std::size_t r = 0; r < rest_count; ++r) {
     if (held_out[r]) continue;
     fitted.push_back(r);
-    auto* residual = new residuals::RestResidual{nominal[r], rests[r].mean_force_m_s2, rests[r].mean_rate_rad_s,
-                                                 rests[r].force_sigma_of_mean_m_s2, rests[r].rate_sigma_of_mean_rad_s,
-                                                 gravity, earth_rate};
+    auto* residual = new residuals::RestResidual{nominal[r],
+                                                 rests[r].mean_force_m_s2,
+                                                 rests[r].mean_rate_rad_s,
+                                                 rests[r].force_sigma_of_mean_m_s2,
+                                                 rests[r].rate_sigma_of_mean_rad_s,
+                                                 gravity,
+                                                 earth_rate};
     problem.AddResidualBlock(new ceres::AutoDiffCostFunction<residuals::RestResidual, 6, 3, 9, 3, 9, 9, 3>(residual),
                              nullptr, blocks.accelerometer_bias, blocks.accelerometer_k, blocks.gyro_bias,
                              blocks.gyro_k, blocks.gyro_g_sensitivity, blocks.rest_deltas[r].data());
@@ -205,10 +209,11 @@ CalibrationResult calibrate(const std::vector<ImuSample>& samples, const Calibra
     move.angle_sigma_rad = result.noise.rate_density_rad_s_per_sqrt_hz * std::sqrt(duration_s);
     move.g_sensitivity = options.estimate_g_sensitivity;
     move_residuals.push_back(move);
-    problem.AddResidualBlock(
-        new ceres::AutoDiffCostFunction<residuals::MoveResidual, 3, 3, 9, 3, 9, 9, 3, 3>(new residuals::MoveResidual(move)),
-        nullptr, blocks.accelerometer_bias, blocks.accelerometer_k, blocks.gyro_bias, blocks.gyro_k,
-        blocks.gyro_g_sensitivity, blocks.rest_deltas[fitted[m - 1]].data(), blocks.rest_deltas[fitted[m]].data());
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<residuals::MoveResidual, 3, 3, 9, 3, 9, 9, 3, 3>(
+                                 new residuals::MoveResidual(move)),
+                             nullptr, blocks.accelerometer_bias, blocks.accelerometer_k, blocks.gyro_bias,
+                             blocks.gyro_k, blocks.gyro_g_sensitivity, blocks.rest_deltas[fitted[m - 1]].data(),
+                             blocks.rest_deltas[fitted[m]].data());
   }
   if (!known) {
     auto* prior = new residuals::HeadingPrior{nominal[fitted[0]].conjugate() * Eigen::Vector3d::UnitZ(),
@@ -295,8 +300,13 @@ CalibrationResult calibrate(const std::vector<ImuSample>& samples, const Calibra
     if (held_out[r]) {
       held_out_rests.push_back(rests[r]);
     } else {
-      const residuals::RestResidual unweighted{nominal[r], rests[r].mean_force_m_s2, rests[r].mean_rate_rad_s,
-                                               Eigen::Vector3d::Ones(), Eigen::Vector3d::Ones(), gravity, earth_rate};
+      const residuals::RestResidual unweighted{nominal[r],
+                                               rests[r].mean_force_m_s2,
+                                               rests[r].mean_rate_rad_s,
+                                               Eigen::Vector3d::Ones(),
+                                               Eigen::Vector3d::Ones(),
+                                               gravity,
+                                               earth_rate};
       double residual[6];
       unweighted(blocks.accelerometer_bias, blocks.accelerometer_k, blocks.gyro_bias, blocks.gyro_k,
                  blocks.gyro_g_sensitivity, blocks.rest_deltas[r].data(), residual);
@@ -312,11 +322,11 @@ CalibrationResult calibrate(const std::vector<ImuSample>& samples, const Calibra
     report.from = fitted[m];
     report.to = fitted[m + 1];
     report.duration_s = samples[unweighted.last - 1].stamp_s - samples[unweighted.first - 1].stamp_s;
-    report.angle_rad = result.rests[report.from].attitude_body_to_enu.angularDistance(
-        result.rests[report.to].attitude_body_to_enu);
+    report.angle_rad =
+        result.rests[report.from].attitude_body_to_enu.angularDistance(result.rests[report.to].attitude_body_to_enu);
     unweighted(blocks.accelerometer_bias, blocks.accelerometer_k, blocks.gyro_bias, blocks.gyro_k,
-               blocks.gyro_g_sensitivity, blocks.rest_deltas[report.from].data(),
-               blocks.rest_deltas[report.to].data(), report.angle_residual_rad.data());
+               blocks.gyro_g_sensitivity, blocks.rest_deltas[report.from].data(), blocks.rest_deltas[report.to].data(),
+               report.angle_residual_rad.data());
     result.moves.push_back(report);
   }
   result.held_out = held_out_check(held_out_rests, result.calibration, result.covariance, site);

@@ -74,8 +74,8 @@ std::string calibration_yaml(const CalibrationResult& result) {
   triad("accelerometer", result.calibration.accelerometer, kAccelerometerBias, kAccelerometerK, "m_s2");
   out << "noise:  # white-noise densities from block means inside the rests (continuous time)\n";
   out << "  gyro_white_density_rad_s_per_sqrt_hz: " << vector_text(result.noise.rate_density_rad_s_per_sqrt_hz) << "\n";
-  out << "  accelerometer_white_density_m_s2_per_sqrt_hz: "
-      << vector_text(result.noise.force_density_m_s2_per_sqrt_hz) << "\n";
+  out << "  accelerometer_white_density_m_s2_per_sqrt_hz: " << vector_text(result.noise.force_density_m_s2_per_sqrt_hz)
+      << "\n";
   std::size_t held_out = 0;
   for (const auto& rest : result.rests) held_out += rest.held_out ? 1 : 0;
   out << "fit:\n";
@@ -102,7 +102,8 @@ std::string calibration_yaml(const CalibrationResult& result) {
 ImuCalibration load_calibration(const std::string& path) {
   const YAML::Node root = load_yaml_file(path);
   // A scalar or a list at the top (a truncated or wrong file) has no keys to look up.
-  if (!root.IsMap()) throw ConfigError(path, "(file)", "must be a YAML map of keys (write the file with fit_calibration)");
+  if (!root.IsMap())
+    throw ConfigError(path, "(file)", "must be a YAML map of keys (write the file with fit_calibration)");
   const YamlFields file(root, "", path);
   if (!file.has("format") || file.text("format") != kFormat) {
     file.fail("format", std::string("must be ") + kFormat + " (write the file with fit_calibration)");

@@ -54,7 +54,8 @@ std::string triad_section(const CalibrationResult& result, bool gyro) {
 
 std::string calibration_report(const CalibrationResult& result) {
   std::string text = "imu_lab bench calibration\n";
-  text += std::string("mode: ") + (result.known_orientations ? "known orientations (table schedule)" : "unknown orientations") + "\n";
+  text += std::string("mode: ") +
+          (result.known_orientations ? "known orientations (table schedule)" : "unknown orientations") + "\n";
   text += "frame: " + result.frame_convention + "\n";
   text += format("rests: %.0f (window %.3f s, threshold %.3e rad/s); moves used: %.0f\n",
                  static_cast<double>(result.rests.size()), result.detection.window_s, result.detection.threshold_rad_s,
@@ -72,8 +73,9 @@ std::string calibration_report(const CalibrationResult& result) {
     for (int i = 0; i < 3; ++i) text += format("    %+10.4f %+10.4f %+10.4f\n", g(i, 0), g(i, 1), g(i, 2));
   }
   text += "\n" + triad_section(result, false);
-  text += format("\nnoise (white density from the rests): gyro %.3e rad/s/sqrt(Hz), accelerometer %.3e m/s^2/sqrt(Hz)\n",
-                 result.noise.rate_density_rad_s_per_sqrt_hz.mean(), result.noise.force_density_m_s2_per_sqrt_hz.mean());
+  text +=
+      format("\nnoise (white density from the rests): gyro %.3e rad/s/sqrt(Hz), accelerometer %.3e m/s^2/sqrt(Hz)\n",
+             result.noise.rate_density_rad_s_per_sqrt_hz.mean(), result.noise.force_density_m_s2_per_sqrt_hz.mean());
 
   text += "\nrests: measured - model (fitted rests); held-out rests are only checked\n";
   text += "   #    start_s  duration_s  held_out  force_residual_m_s2 (x y z)           rate_residual_deg_h (x y z)\n";
@@ -96,15 +98,17 @@ std::string calibration_report(const CalibrationResult& result) {
   }
   const InvariantSpread& g = result.held_out.gravity_m_s2;
   const InvariantSpread& w = result.held_out.earth_rate_rad_s;
-  text += format("\nheld-out check over %.0f rests not used for fitting (Golovach 2017 sec. 5.4-5.5; thesis: 3e-4 m/s^2, "
-                 "0.001 deg/h measured, 0.015 deg/h allowed)\n",
-                 static_cast<double>(g.rests));
+  text += format(
+      "\nheld-out check over %.0f rests not used for fitting (Golovach 2017 sec. 5.4-5.5; thesis: 3e-4 m/s^2, "
+      "0.001 deg/h measured, 0.015 deg/h allowed)\n",
+      static_cast<double>(g.rests));
   if (g.rests < 2) {
     text += "  (fewer than 2 held-out rests: hold some out with --held-out-last N to check)\n";
   } else {
-    text += format("  |g|:          spread raw %.3e, corrected %.3e, expected %.3e m/s^2; mean error %+.3e m/s^2 "
-                   "(reference %.6f)\n",
-                   g.raw_spread, g.corrected_spread, g.expected_spread, g.corrected_mean_error, g.reference);
+    text += format(
+        "  |g|:          spread raw %.3e, corrected %.3e, expected %.3e m/s^2; mean error %+.3e m/s^2 "
+        "(reference %.6f)\n",
+        g.raw_spread, g.corrected_spread, g.expected_spread, g.corrected_mean_error, g.reference);
     text += format("  |Earth rate|: spread raw %.5f, corrected %.5f, expected %.5f deg/h; mean error %+.5f deg/h\n",
                    w.raw_spread * kDegPerHour, w.corrected_spread * kDegPerHour, w.expected_spread * kDegPerHour,
                    w.corrected_mean_error * kDegPerHour);

@@ -159,8 +159,9 @@ struct HeadingPrior {
 
   template <typename T>
   bool operator()(const T* delta, T* residual) const {
-    residual[0] = (T(vertical_in_body.x()) * delta[0] + T(vertical_in_body.y()) * delta[1] +
-                   T(vertical_in_body.z()) * delta[2]) / sigma_rad;
+    residual[0] =
+        (T(vertical_in_body.x()) * delta[0] + T(vertical_in_body.y()) * delta[1] + T(vertical_in_body.z()) * delta[2]) /
+        sigma_rad;
     return true;
   }
 };

@@ -5,7 +5,8 @@
 namespace imu_lab {
 namespace calib {
 
-Eigen::Vector3d TriadCalibration::correct(const Eigen::Vector3d& output, const Eigen::Vector3d& specific_force_m_s2) const {
+Eigen::Vector3d TriadCalibration::correct(const Eigen::Vector3d& output,
+                                          const Eigen::Vector3d& specific_force_m_s2) const {
   return scale_misalignment.partialPivLu().solve(output - bias - g_sensitivity * specific_force_m_s2);
 }
 

@@ -44,8 +44,8 @@ Observability analyse_observability(const Eigen::MatrixXd& weighted_jacobian,
     result.unobservable.push_back(names);
   }
   const double smallest = singular.minCoeff();
-  result.condition_number = smallest > relative_tolerance * largest ? largest / smallest
-                                                                    : std::numeric_limits<double>::infinity();
+  result.condition_number =
+      smallest > relative_tolerance * largest ? largest / smallest : std::numeric_limits<double>::infinity();
   const Eigen::VectorXd unscale = column_norms.cwiseInverse();
   result.covariance = unscale.asDiagonal() * inverse_information * unscale.asDiagonal();
   return result;

@@ -61,8 +61,8 @@ void add_drift_at_the_rest_scale(const std::vector<ImuSample>& samples, RestStat
 
 }  // namespace
 
-RestStatistics rest_statistics(const std::vector<ImuSample>& samples,
-                               const std::vector<StaticInterval>& intervals, double block_s) {
+RestStatistics rest_statistics(const std::vector<ImuSample>& samples, const std::vector<StaticInterval>& intervals,
+                               double block_s) {
   if (samples.size() < 2 || intervals.empty()) throw InputError("calibration recording: no static intervals");
   const double sample_interval_s = (samples.back().stamp_s - samples.front().stamp_s) / (samples.size() - 1);
   const std::size_t block = std::max<std::size_t>(1, std::lround(block_s / sample_interval_s));
@@ -104,12 +104,10 @@ RestStatistics rest_statistics(const std::vector<ImuSample>& samples,
     rest.rate_sigma_of_mean_rad_s = rate_block_sigma * shrink;
     rest.force_sigma_of_mean_m_s2 = force_block_sigma * shrink;
   }
-  add_drift_at_the_rest_scale(samples, statistics, rate, [](RestMeans& rest) -> Eigen::Vector3d& {
-    return rest.rate_sigma_of_mean_rad_s;
-  });
-  add_drift_at_the_rest_scale(samples, statistics, force, [](RestMeans& rest) -> Eigen::Vector3d& {
-    return rest.force_sigma_of_mean_m_s2;
-  });
+  add_drift_at_the_rest_scale(samples, statistics, rate,
+                              [](RestMeans& rest) -> Eigen::Vector3d& { return rest.rate_sigma_of_mean_rad_s; });
+  add_drift_at_the_rest_scale(samples, statistics, force,
+                              [](RestMeans& rest) -> Eigen::Vector3d& { return rest.force_sigma_of_mean_m_s2; });
   return statistics;
 }
 

@@ -10,8 +10,7 @@
 
 namespace imu_lab {
 namespace calib {
-StaticDetection detect_static_intervals(const std::vector<ImuSample>& samples,
-                                        const StaticDetectionOptions& options) {
+StaticDetection detect_static_intervals(const std::vector<ImuSample>& samples, const StaticDetectionOptions& options) {
   if (samples.size() < 2) throw InputError("calibration recording: fewer than 2 samples");
   for (std::size_t k = 1; k < samples.size(); ++k) {
     if (!(samples[k].stamp_s > samples[k - 1].stamp_s)) {
@@ -46,10 +45,9 @@ StaticDetection detect_static_intervals(const std::vector<ImuSample>& samples,
   StaticDetection detection;
   detection.window_s = window * sample_interval_s;
   detection.window_noise_rad_s = sigma_from_absolute_differences(differences);
-  detection.threshold_rad_s = options.threshold_rad_s > 0.0
-                                  ? options.threshold_rad_s
-                                  : options.threshold_sigmas * detection.window_noise_rad_s +
-                                        2.0 * wgs84::kEarthRate_rad_s;
+  detection.threshold_rad_s = options.threshold_rad_s > 0.0 ? options.threshold_rad_s
+                                                            : options.threshold_sigmas * detection.window_noise_rad_s +
+                                                                  2.0 * wgs84::kEarthRate_rad_s;
 
   detection.resting_level_rad_s = resting_level;
   if (resting_level.norm() > options.max_resting_rate_rad_s) return detection;
@@ -57,8 +55,7 @@ StaticDetection detect_static_intervals(const std::vector<ImuSample>& samples,
   const std::size_t min_windows = std::max<std::size_t>(3, std::ceil(options.min_duration_s / detection.window_s) + 2);
   std::size_t run_start = 0;
   for (std::size_t w = 0; w <= window_count; ++w) {
-    const bool at_rest =
-        w < window_count && (window_means[w] - resting_level).norm() < detection.threshold_rad_s;
+    const bool at_rest = w < window_count && (window_means[w] - resting_level).norm() < detection.threshold_rad_s;
     if (at_rest) continue;
     if (w - run_start >= min_windows) {
       // Trim one window at each end: it may hold the tail of a move.

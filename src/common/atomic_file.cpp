@@ -129,7 +129,8 @@ void OutputSet::remove_at_commit(const std::string& target) { removals_.push_bac
 
 void OutputSet::commit() {
   for (const auto& [staging, directory] : staging_directories_) {
-    for (const std::string& name : regular_files_in(staging)) members_.push_back({staging + "/" + name, directory + "/" + name});
+    for (const std::string& name : regular_files_in(staging))
+      members_.push_back({staging + "/" + name, directory + "/" + name});
   }
   std::set<std::string> produced;
   for (const Member& member : members_) produced.insert(member.target);

@@ -7,9 +7,7 @@
 
 namespace imu_lab {
 
-std::string ToolInput::describe() const {
-  return kind + " " + path + (topic.empty() ? "" : ", topic " + topic);
-}
+std::string ToolInput::describe() const { return kind + " " + path + (topic.empty() ? "" : ", topic " + topic); }
 
 std::string ToolInput::name_in(const std::string& message) const {
   if (path.empty() || message.find(path) != std::string::npos) return message;

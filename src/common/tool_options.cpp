@@ -77,22 +77,24 @@ std::optional<int> parse_tool_options(const char* tool_name, CLI::App& app, int 
 namespace option_range {
 
 CLI::Validator positive() {
-  return range_validator("> 0", [](double value, double, double) { return value > 0.0; }, 0.0, 0.0);
+  return range_validator(
+      "> 0", [](double value, double, double) { return value > 0.0; }, 0.0, 0.0);
 }
 
 CLI::Validator non_negative() {
-  return range_validator(">= 0", [](double value, double, double) { return value >= 0.0; }, 0.0, 0.0);
+  return range_validator(
+      ">= 0", [](double value, double, double) { return value >= 0.0; }, 0.0, 0.0);
 }
 
 CLI::Validator at_least(double minimum) {
-  return range_validator(">= " + format_number(minimum, 6),
-                         [](double value, double low, double) { return value >= low; }, minimum, 0.0);
+  return range_validator(
+      ">= " + format_number(minimum, 6), [](double value, double low, double) { return value >= low; }, minimum, 0.0);
 }
 
 CLI::Validator between(double minimum, double maximum) {
-  return range_validator("in [" + format_number(minimum, 6) + ", " + format_number(maximum, 6) + "]",
-                         [](double value, double low, double high) { return value >= low && value <= high; }, minimum,
-                         maximum);
+  return range_validator(
+      "in [" + format_number(minimum, 6) + ", " + format_number(maximum, 6) + "]",
+      [](double value, double low, double high) { return value >= low && value <= high; }, minimum, maximum);
 }
 
 CLI::Validator latitude_deg() { return between(-90.0, 90.0); }

@@ -15,9 +15,7 @@ YamlFields::YamlFields(const YAML::Node& node, std::string path, std::string sou
   }
 }
 
-std::string YamlFields::key_path(const std::string& key) const {
-  return path_.empty() ? key : path_ + "." + key;
-}
+std::string YamlFields::key_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
 
 void YamlFields::fail(const std::string& key, const std::string& problem) const {
   throw ConfigError(source_, key_path(key), problem);
@@ -87,8 +85,7 @@ Eigen::Vector3d YamlFields::per_axis(const std::string& key, bool non_negative_o
   return per_axis_at(raw(key), key, non_negative_only);
 }
 
-Eigen::Vector3d YamlFields::per_axis_at(const YAML::Node& value, const std::string& key,
-                                        bool non_negative_only) const {
+Eigen::Vector3d YamlFields::per_axis_at(const YAML::Node& value, const std::string& key, bool non_negative_only) const {
   Eigen::Vector3d result;
   if (value.IsScalar()) {
     result.setConstant(number_at(value, key));

@@ -36,8 +36,7 @@ TruthState ConingMotion::truth_at(double time_s) const {
   motion.longitude_rad = scenario_.longitude_rad;
   motion.height_m = scenario_.height_m;
   motion.attitude_body_to_enu =
-      coning_.mount_body_to_enu *
-      coning_attitude_body_to_mount(coning_.half_angle_rad, coning_.frequency_hz, time_s);
+      coning_.mount_body_to_enu * coning_attitude_body_to_mount(coning_.half_angle_rad, coning_.frequency_hz, time_s);
   motion.rate_body_wrt_enu_rad_s =
       coning_rate_body_wrt_mount_rad_s(coning_.half_angle_rad, coning_.frequency_hz, time_s);
   return truth_from_local_level(motion, scenario_.earth_model, time_s, scenario_.temperature_c);

@@ -21,8 +21,7 @@ double normal_gravity_m_s2(EarthShape model, double latitude_rad, double height_
 
 Eigen::Vector3d earth_rate_enu_rad_s(EarthShape model, double latitude_rad) {
   if (model == EarthShape::kSphereNonRotating) return Eigen::Vector3d::Zero();
-  return wgs84::kEarthRate_rad_s *
-         Eigen::Vector3d(0.0, std::cos(latitude_rad), std::sin(latitude_rad));
+  return wgs84::kEarthRate_rad_s * Eigen::Vector3d(0.0, std::cos(latitude_rad), std::sin(latitude_rad));
 }
 
 }  // namespace emulator

@@ -18,21 +18,20 @@ ImuEmulator::ImuEmulator(const SensorProfile& profile, std::unique_ptr<MotionSou
       interval_s_(1.0 / settings.rate_hz),
       motion_(std::move(motion)),
       gyro_(std::make_unique<TriadChannel>(profile.gyro, "gyro", settings.seed)),
-      accelerometer_(
-          std::make_unique<TriadChannel>(profile.accelerometer, "accelerometer", settings.seed)) {
+      accelerometer_(std::make_unique<TriadChannel>(profile.accelerometer, "accelerometer", settings.seed)) {
   // Stamps are whole nanoseconds: a faster rate would repeat them.
   if (!(settings.rate_hz > 0.0 && settings.rate_hz <= 1e9)) {
-    throw ConfigError("emulator settings", "rate_hz", "must be in (0, 1e9] Hz, got " + std::to_string(settings.rate_hz));
+    throw ConfigError("emulator settings", "rate_hz",
+                      "must be in (0, 1e9] Hz, got " + std::to_string(settings.rate_hz));
   }
   if (!(settings.start_time_s >= 0.0 && std::isfinite(settings.start_time_s))) {
-    throw ConfigError("emulator settings", "start_time_s", "must be a finite time >= 0 s, got " +
-                                                                std::to_string(settings.start_time_s));
+    throw ConfigError("emulator settings", "start_time_s",
+                      "must be a finite time >= 0 s, got " + std::to_string(settings.start_time_s));
   }
   if (!motion_) throw std::invalid_argument("ImuEmulator: no motion source");
 }
 
-ImuEmulator::ImuEmulator(const SensorProfile& profile, const ScenarioConfig& scenario,
-                         const EmulatorSettings& settings)
+ImuEmulator::ImuEmulator(const SensorProfile& profile, const ScenarioConfig& scenario, const EmulatorSettings& settings)
     : ImuEmulator(profile, make_motion_source(scenario), settings) {}
 
 ImuEmulator::~ImuEmulator() = default;
@@ -50,12 +49,10 @@ EmulatedSample ImuEmulator::next() {
 
   EmulatedSample sample;
   sample.stamp_s = settings_.start_time_s + static_cast<double>(sample_index_) * interval_s_;
-  const SensorTemperature temperature{truth_increment.mean_temperature_c,
-                                      truth_increment.mean_temperature_rate_c_s};
-  sample.angular_rate_rad_s =
-      gyro_->measure(true_rate, true_force, elapsed_start_s, interval_s_, temperature);
-  sample.specific_force_m_s2 = accelerometer_->measure(true_force, Eigen::Vector3d::Zero(),
-                                                       elapsed_start_s, interval_s_, temperature);
+  const SensorTemperature temperature{truth_increment.mean_temperature_c, truth_increment.mean_temperature_rate_c_s};
+  sample.angular_rate_rad_s = gyro_->measure(true_rate, true_force, elapsed_start_s, interval_s_, temperature);
+  sample.specific_force_m_s2 =
+      accelerometer_->measure(true_force, Eigen::Vector3d::Zero(), elapsed_start_s, interval_s_, temperature);
   sample.delta_angle_rad = sample.angular_rate_rad_s * interval_s_;
   sample.delta_velocity_m_s = sample.specific_force_m_s2 * interval_s_;
   sample.temperature_c = truth_increment.mean_temperature_c;
@@ -67,8 +64,7 @@ EmulatedSample ImuEmulator::next() {
   sample.angular_rate_variance_rad2_s2 = gyro_variance_;
   sample.specific_force_variance_m2_s4 = accelerometer_variance_;
 
-  const TruthState truth =
-      motion_->truth_at(static_cast<double>(sample_index_) * interval_s_);
+  const TruthState truth = motion_->truth_at(static_cast<double>(sample_index_) * interval_s_);
   sample.truth.stamp_s = sample.stamp_s;
   sample.truth.attitude_body_to_enu = truth.attitude_body_to_enu;
   // What the sample should read without errors: the interval averages the sensor measured.

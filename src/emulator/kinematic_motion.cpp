@@ -24,8 +24,7 @@ TruthIncrement KinematicMotion::increment(double start_s, double interval_s) {
   const IntegrandValue integral = integrate_smooth_pieces(
       [this](double t) {
         const TruthState truth = truth_at(t);
-        return IntegrandValue{truth.angular_rate_body_rad_s, truth.specific_force_body_m_s2,
-                              truth.temperature_c};
+        return IntegrandValue{truth.angular_rate_body_rad_s, truth.specific_force_body_m_s2, truth.temperature_c};
       },
       start_s, interval_s, breakpoints_s(), longest_smooth_piece_s(), IntegrandValue{});
   TruthIncrement result;

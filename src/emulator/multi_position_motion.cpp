@@ -13,11 +13,9 @@ std::unique_ptr<MotionSource> make_multi_position_motion(const ScenarioConfig& s
   for (std::size_t i = 0; i < positions.size(); ++i) {
     phases.dwell(positions[i].attitude_body_to_enu, positions[i].dwell_s);
     if (i + 1 == positions.size()) break;
-    const Eigen::AngleAxisd turn(positions[i + 1].attitude_body_to_enu *
-                                 positions[i].attitude_body_to_enu.conjugate());
+    const Eigen::AngleAxisd turn(positions[i + 1].attitude_body_to_enu * positions[i].attitude_body_to_enu.conjugate());
     if (turn.angle() == 0.0) continue;
-    phases.trapezoidal_turn(turn.axis(), turn.angle(), config.move_rate_rad_s,
-                            config.move_acceleration_rad_s2);
+    phases.trapezoidal_turn(turn.axis(), turn.angle(), config.move_rate_rad_s, config.move_acceleration_rad_s2);
   }
   return std::make_unique<TableMotion>(scenario, phases.finish());
 }

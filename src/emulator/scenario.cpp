@@ -30,7 +30,8 @@ void read_type_block(const YamlFields& f, ScenarioConfig& scenario) {
     return;
   }
   for (const char* key : {"roll_deg", "pitch_deg", "yaw_deg"}) {
-    if (f.has(key)) f.fail(key, "only static scenarios take it here; put the orientation in the '" + scenario.type + "' block");
+    if (f.has(key))
+      f.fail(key, "only static scenarios take it here; put the orientation in the '" + scenario.type + "' block");
   }
   const YamlFields block = f.child(scenario.type);
   if (scenario.type == "multi_position") scenario.multi_position = read_multi_position(block);
@@ -43,9 +44,9 @@ void read_type_block(const YamlFields& f, ScenarioConfig& scenario) {
 
 ScenarioConfig scenario_from_yaml(const YAML::Node& root, const std::string& source_name) {
   const YamlFields f(root, "", source_name);
-  f.allow_only({"type", "description", "latitude_deg", "longitude_deg", "height_m", "roll_deg",
-                "pitch_deg", "yaw_deg", "temperature_c", "earth_model", "duration_s",
-                "multi_position", "rate_table", "coning", "sculling", "trajectory", "thermal"});
+  f.allow_only({"type", "description", "latitude_deg", "longitude_deg", "height_m", "roll_deg", "pitch_deg", "yaw_deg",
+                "temperature_c", "earth_model", "duration_s", "multi_position", "rate_table", "coning", "sculling",
+                "trajectory", "thermal"});
   ScenarioConfig scenario;
   scenario.source = source_name;
   scenario.type = f.text("type");
@@ -86,9 +87,7 @@ ScenarioConfig scenario_from_yaml(const YAML::Node& root, const std::string& sou
   return scenario;
 }
 
-ScenarioConfig load_scenario(const std::string& path) {
-  return scenario_from_yaml(load_yaml_file(path), path);
-}
+ScenarioConfig load_scenario(const std::string& path) { return scenario_from_yaml(load_yaml_file(path), path); }
 
 std::unique_ptr<MotionSource> make_motion_source(const ScenarioConfig& scenario) {
   // The type's block must be filled (load_scenario does; hand-built configs must too).

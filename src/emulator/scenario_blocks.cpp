@@ -68,8 +68,8 @@ ConingConfig read_coning(const YamlFields& f) {
 }
 
 ScullingConfig read_sculling(const YamlFields& f) {
-  f.allow_only({"roll_deg", "pitch_deg", "yaw_deg", "rotation_axis", "vibration_axis",
-                "angular_amplitude_deg", "displacement_amplitude_m", "frequency_hz", "phase_deg"});
+  f.allow_only({"roll_deg", "pitch_deg", "yaw_deg", "rotation_axis", "vibration_axis", "angular_amplitude_deg",
+                "displacement_amplitude_m", "frequency_hz", "phase_deg"});
   ScullingConfig config;
   config.mount_body_to_enu = read_orientation(f);
   config.rotation_axis = read_body_axis(f, "rotation_axis");
@@ -102,8 +102,8 @@ TrajectoryConfig read_trajectory(const YamlFields& f) {
 }
 
 ThermalConfig read_thermal(const YamlFields& f) {
-  f.allow_only({"initial_chamber_temperature_c", "sensor_time_constant_s",
-                "second_sensor_time_constant_s", "self_heating", "segments"});
+  f.allow_only({"initial_chamber_temperature_c", "sensor_time_constant_s", "second_sensor_time_constant_s",
+                "self_heating", "segments"});
   ThermalConfig config;
   config.initial_chamber_temperature_c = f.number("initial_chamber_temperature_c");
   config.sensor_time_constant_s = f.positive("sensor_time_constant_s");
@@ -136,7 +136,8 @@ ThermalConfig read_thermal(const YamlFields& f) {
     const double target_c = segment.number("ramp_to_c");
     const double rate_c_s = segment.positive("rate_c_per_min") / 60.0;
     if (target_c == chamber_c) segment.fail("ramp_to_c", "equals the previous set point (use soak_s)");
-    config.segments.push_back({std::abs(target_c - chamber_c) / rate_c_s, std::copysign(rate_c_s, target_c - chamber_c)});
+    config.segments.push_back(
+        {std::abs(target_c - chamber_c) / rate_c_s, std::copysign(rate_c_s, target_c - chamber_c)});
     chamber_c = target_c;
   }
   return config;

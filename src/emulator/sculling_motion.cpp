@@ -31,8 +31,8 @@ TruthState ScullingMotion::truth_at(double time_s) const {
   LocalLevelMotion motion;
   motion.latitude_rad = scenario_.latitude_rad + displacement_enu.y() / (radii.meridian_m + scenario_.height_m);
   motion.longitude_rad =
-      scenario_.longitude_rad + displacement_enu.x() / ((radii.prime_vertical_m + scenario_.height_m) *
-                                                        std::cos(scenario_.latitude_rad));
+      scenario_.longitude_rad +
+      displacement_enu.x() / ((radii.prime_vertical_m + scenario_.height_m) * std::cos(scenario_.latitude_rad));
   motion.height_m = scenario_.height_m + displacement_enu.z();
   motion.velocity_enu_m_s = d * w * std::cos(vibration_phase) * vibration_enu_;
   motion.acceleration_enu_m_s2 = -w * w * displacement_enu;

@@ -16,12 +16,10 @@ namespace {
 const char* const kAxisNames[3] = {"x", "y", "z"};
 }
 
-TriadChannel::TriadChannel(const TriadErrorModel& model, const std::string& triad_name,
-                           std::uint64_t seed)
+TriadChannel::TriadChannel(const TriadErrorModel& model, const std::string& triad_name, std::uint64_t seed)
     : model_(model),
       scale_misalignment_(model.scale_misalignment_matrix()),
-      quantizers_{noise::PulseQuantizer(model.pulse_weight),
-                  noise::PulseQuantizer(model.pulse_weight),
+      quantizers_{noise::PulseQuantizer(model.pulse_weight), noise::PulseQuantizer(model.pulse_weight),
                   noise::PulseQuantizer(model.pulse_weight)} {
   noise::NormalStream turn_on(noise::stream_seed(seed, triad_name + ".turn_on_bias"));
   for (int axis = 0; axis < 3; ++axis) {
@@ -31,14 +29,14 @@ TriadChannel::TriadChannel(const TriadErrorModel& model, const std::string& tria
     std::map<std::string, int> kind_count;
     for (const auto& parameters : model.noise_per_axis[axis]) {
       const std::string kind = noise::process_kind(parameters);
-      const std::string stream = triad_name + "." + kAxisNames[axis] + "." + kind + "#" +
-                                 std::to_string(kind_count[kind]++);
+      const std::string stream =
+          triad_name + "." + kAxisNames[axis] + "." + kind + "#" + std::to_string(kind_count[kind]++);
       if (white_index_[axis] < 0 && std::holds_alternative<noise::WhiteRateParameters>(parameters)) {
         white_index_[axis] = static_cast<int>(processes_[axis].size());
         white_density_[axis] = std::get<noise::WhiteRateParameters>(parameters).density_per_sqrt_hz;
       }
-      processes_[axis].push_back(noise::make_noise_process(
-          parameters, noise::stream_seed(seed, stream), model.bandwidth_hz));
+      processes_[axis].push_back(
+          noise::make_noise_process(parameters, noise::stream_seed(seed, stream), model.bandwidth_hz));
     }
   }
   if (model.white_rate_correlation != Eigen::Matrix3d::Identity()) {
@@ -64,22 +62,20 @@ Eigen::Vector3d TriadChannel::response(const Eigen::Vector3d& w, const Eigen::Ve
 }
 
 Eigen::Vector3d TriadChannel::measure(const Eigen::Vector3d& true_average,
-                                      const Eigen::Vector3d& specific_force_average,
-                                      double elapsed_start_s, double interval_s) {
+                                      const Eigen::Vector3d& specific_force_average, double elapsed_start_s,
+                                      double interval_s) {
   return measure(true_average, specific_force_average, elapsed_start_s, interval_s,
                  {model_.thermal.reference_temperature_c, 0.0});
 }
 
 Eigen::Vector3d TriadChannel::measure(const Eigen::Vector3d& true_average,
-                                      const Eigen::Vector3d& specific_force_average,
-                                      double elapsed_start_s, double interval_s,
-                                      const SensorTemperature& temperature) {
+                                      const Eigen::Vector3d& specific_force_average, double elapsed_start_s,
+                                      double interval_s, const SensorTemperature& temperature) {
   const ThermalSensitivity& thermal = model_.thermal;
   const Eigen::Vector3d thermal_scale =
       1e-6 * thermal.scale_factor_ppm(temperature.temperature_c, temperature.rate_c_s);
   Eigen::Vector3d output = total_bias() + thermal.bias(temperature.temperature_c, temperature.rate_c_s) +
-                           response(true_average, thermal_scale) +
-                           model_.g_sensitivity * specific_force_average;
+                           response(true_average, thermal_scale) + model_.g_sensitivity * specific_force_average;
   Eigen::Vector3d white = Eigen::Vector3d::Zero();
   for (int axis = 0; axis < 3; ++axis) {
     for (std::size_t p = 0; p < processes_[axis].size(); ++p) {

@@ -41,9 +41,8 @@ void add_nonzero_axes(TriadErrorModel& model, const Eigen::Vector3d& amplitude, 
 
 // A block holding one per-axis field, e.g. white_rate: {density_rad_s_per_sqrt_hz: 1e-4}.
 template <typename Make>
-void read_one_field_block(const YamlFields& noise_fields, const std::string& name,
-                          const std::string& key, bool non_negative_only, TriadErrorModel& model,
-                          Make make) {
+void read_one_field_block(const YamlFields& noise_fields, const std::string& name, const std::string& key,
+                          bool non_negative_only, TriadErrorModel& model, Make make) {
   if (!noise_fields.has(name)) return;
   const YamlFields f = noise_fields.child(name);
   f.allow_only({key.c_str()});
@@ -91,18 +90,17 @@ void read_white_rate(const YamlFields& f, const TriadUnits& u, TriadErrorModel& 
 }
 
 void read_noise(const YamlFields& fields, const TriadUnits& u, TriadErrorModel& model) {
-  const std::string flicker = "bias_instability", markov = "markov", sinusoid = "sinusoid",
-                    zero_dc = "zero_dc_family";
-  fields.allow_only({"white_rate", "bias_instability", "random_walk", "rate_ramp", "markov",
-                     "sinusoid", "white_angle", "zero_dc_family", "zero_dc_gaussian",
-                     "high_pass_white", "resonance"});
+  const std::string flicker = "bias_instability", markov = "markov", sinusoid = "sinusoid", zero_dc = "zero_dc_family";
+  fields.allow_only({"white_rate", "bias_instability", "random_walk", "rate_ramp", "markov", "sinusoid", "white_angle",
+                     "zero_dc_family", "zero_dc_gaussian", "high_pass_white", "resonance"});
   if (fields.has("white_rate")) read_white_rate(fields.child("white_rate"), u, model);
   read_one_field_block(fields, "random_walk", "density_" + u.rate + "_per_sqrt_s", true, model,
                        [](double k) { return noise::RandomWalkParameters{k}; });
   read_one_field_block(fields, "rate_ramp", "slope_" + u.rate + "_per_s", false, model,
                        [](double r) { return noise::RateRampParameters{r}; });
-  read_one_field_block(fields, "white_angle", "density_" + u.integral + "_per_sqrt_hz", true,
-                       model, [](double d) { return noise::WhiteAngleParameters{0.0, d}; });
+  read_one_field_block(fields, "white_angle", "density_" + u.integral + "_per_sqrt_hz", true, model, [](double d) {
+    return noise::WhiteAngleParameters{0.0, d};
+  });
   if (fields.has(flicker)) {
     const YamlFields f = fields.child(flicker);
     const std::string key = "coefficient_" + u.rate;
@@ -202,8 +200,9 @@ void read_noise(const YamlFields& fields, const TriadUnits& u, TriadErrorModel& 
       const double natural = f.positive("natural_frequency_hz");
       const double width = f.positive("width_hz");
       if (!(width < 2.0 * natural)) {
-        f.fail("width_hz", "must be below 2 natural_frequency_hz (the -3 dB width 2 zeta f_n of an "
-                           "underdamped mode)");
+        f.fail("width_hz",
+               "must be below 2 natural_frequency_hz (the -3 dB width 2 zeta f_n of an "
+               "underdamped mode)");
       }
       add_nonzero_axes(model, rms, [&](int a) -> ProcessParameters {
         return noise::ResonanceParameters{rms[a], natural, width};
@@ -235,8 +234,8 @@ ThermalSensitivity read_thermal_sensitivity(const YamlFields& f, const TriadUnit
   const std::string bias_rate_key = "bias_per_temperature_rate_" + u.rate + "_per_c_s";
   const std::string scale_key = "scale_factor_polynomial_ppm";
   const std::string scale_rate_key = "scale_factor_ppm_per_temperature_rate_per_c_s";
-  f.allow_only({"reference_temperature_c", bias_key.c_str(), scale_key.c_str(), bias_rate_key.c_str(),
-                scale_rate_key.c_str()});
+  f.allow_only(
+      {"reference_temperature_c", bias_key.c_str(), scale_key.c_str(), bias_rate_key.c_str(), scale_rate_key.c_str()});
   auto rows = [&](const std::string& key) {
     std::vector<Eigen::Vector3d> result;
     if (!f.has(key)) return result;
@@ -258,9 +257,8 @@ ThermalSensitivity read_thermal_sensitivity(const YamlFields& f, const TriadUnit
 
 // scale_factor_nonlinearity: {full_scale_<u>, quadratic_ppm_fs, cubic_ppm_fs}: the error at full
 // scale, in ppm of full scale, of a term in (input / full scale)^2 and ^3.
-void read_scale_factor_nonlinearity(const YamlFields& f, const TriadUnits& u,
-                                    const std::string& direct_quadratic_key, bool direct_given,
-                                    TriadErrorModel& model) {
+void read_scale_factor_nonlinearity(const YamlFields& f, const TriadUnits& u, const std::string& direct_quadratic_key,
+                                    bool direct_given, TriadErrorModel& model) {
   const std::string full_scale_key = "full_scale_" + u.rate;
   f.allow_only({full_scale_key.c_str(), "quadratic_ppm_fs", "cubic_ppm_fs"});
   const Eigen::Vector3d full_scale = f.per_axis(full_scale_key, true);
@@ -269,27 +267,23 @@ void read_scale_factor_nonlinearity(const YamlFields& f, const TriadUnits& u,
     if (direct_given) {
       f.fail("quadratic_ppm_fs", "the same term as " + direct_quadratic_key + "; give one of the two");
     }
-    model.quadratic_nonlinearity_per_unit =
-        1e-6 * f.per_axis("quadratic_ppm_fs", false).cwiseQuotient(full_scale);
+    model.quadratic_nonlinearity_per_unit = 1e-6 * f.per_axis("quadratic_ppm_fs", false).cwiseQuotient(full_scale);
   }
-  model.cubic_nonlinearity_per_unit2 =
-      1e-6 * f.per_axis_or_zero("cubic_ppm_fs").cwiseQuotient(full_scale.cwiseAbs2());
+  model.cubic_nonlinearity_per_unit2 = 1e-6 * f.per_axis_or_zero("cubic_ppm_fs").cwiseQuotient(full_scale.cwiseAbs2());
 }
 
 TriadErrorModel read_triad(const YamlFields& f, const TriadUnits& u, bool is_gyro) {
   const std::string bias = "bias_fixed_" + u.rate, turn_on = "bias_turn_on_sigma_" + u.rate,
-                    quadratic = "quadratic_nonlinearity_per_" + u.rate,
-                    g_sensitivity = "g_sensitivity_rad_s_per_m_s2",
+                    quadratic = "quadratic_nonlinearity_per_" + u.rate, g_sensitivity = "g_sensitivity_rad_s_per_m_s2",
                     dead_zone = "dead_zone_" + u.rate, lsb = "output_lsb_" + u.rate;
   if (is_gyro) {
-    f.allow_only({bias.c_str(), turn_on.c_str(), "scale_factor_error_ppm", "misalignment_rad",
-                  quadratic.c_str(), "scale_factor_nonlinearity", "scale_factor_asymmetry_ppm",
-                  dead_zone.c_str(), g_sensitivity.c_str(), "bandwidth_hz", "quantization",
-                  lsb.c_str(), "noise", "thermal"});
+    f.allow_only({bias.c_str(), turn_on.c_str(), "scale_factor_error_ppm", "misalignment_rad", quadratic.c_str(),
+                  "scale_factor_nonlinearity", "scale_factor_asymmetry_ppm", dead_zone.c_str(), g_sensitivity.c_str(),
+                  "bandwidth_hz", "quantization", lsb.c_str(), "noise", "thermal"});
   } else {
-    f.allow_only({bias.c_str(), turn_on.c_str(), "scale_factor_error_ppm", "misalignment_rad",
-                  quadratic.c_str(), "scale_factor_nonlinearity", "scale_factor_asymmetry_ppm",
-                  dead_zone.c_str(), "bandwidth_hz", "quantization", lsb.c_str(), "noise", "thermal"});
+    f.allow_only({bias.c_str(), turn_on.c_str(), "scale_factor_error_ppm", "misalignment_rad", quadratic.c_str(),
+                  "scale_factor_nonlinearity", "scale_factor_asymmetry_ppm", dead_zone.c_str(), "bandwidth_hz",
+                  "quantization", lsb.c_str(), "noise", "thermal"});
   }
   TriadErrorModel model;
   model.bias_fixed = f.per_axis(bias, false);
@@ -302,8 +296,7 @@ TriadErrorModel read_triad(const YamlFields& f, const TriadUnits& u, bool is_gyr
   }
   model.quadratic_nonlinearity_per_unit = f.per_axis_or_zero(quadratic);
   if (f.has("scale_factor_nonlinearity")) {
-    read_scale_factor_nonlinearity(f.child("scale_factor_nonlinearity"), u, quadratic,
-                                   f.has(quadratic), model);
+    read_scale_factor_nonlinearity(f.child("scale_factor_nonlinearity"), u, quadratic, f.has(quadratic), model);
   }
   model.scale_factor_asymmetry_ppm = f.per_axis_or_zero("scale_factor_asymmetry_ppm");
   if (f.has(dead_zone)) model.dead_zone = f.per_axis(dead_zone, true);
@@ -313,8 +306,9 @@ TriadErrorModel read_triad(const YamlFields& f, const TriadUnits& u, bool is_gyr
   if (f.has(lsb)) {
     model.output_lsb = f.per_axis(lsb, true);
     if (model.pulse_weight > 0.0 && model.output_lsb.maxCoeff() > 0.0) {
-      f.fail(lsb, "a pulse-counting output (quantization.model: pulses) has no rate register; "
-                  "give one of the two");
+      f.fail(lsb,
+             "a pulse-counting output (quantization.model: pulses) has no rate register; "
+             "give one of the two");
     }
   }
   read_noise(f.child("noise"), u, model);
@@ -337,8 +331,7 @@ SensorProfile sensor_profile_from_yaml(const YAML::Node& root, const std::string
   profile.source = source_name;
   profile.name = fields.text("name");
   profile.gyro = read_triad(fields.child("gyro"), {"rad_s", "rad", "rad2_s2"}, true);
-  profile.accelerometer =
-      read_triad(fields.child("accelerometer"), {"m_s2", "m_s", "m2_s4"}, false);
+  profile.accelerometer = read_triad(fields.child("accelerometer"), {"m_s2", "m_s", "m2_s4"}, false);
   return profile;
 }
 

@@ -12,15 +12,12 @@ Eigen::Quaterniond attitude_from_roll_pitch_yaw(double roll, double pitch, doubl
 }
 
 StaticMotionSource::StaticMotionSource(const ScenarioConfig& scenario) {
-  state_.attitude_body_to_enu =
-      attitude_from_roll_pitch_yaw(scenario.roll_rad, scenario.pitch_rad, scenario.yaw_rad);
+  state_.attitude_body_to_enu = attitude_from_roll_pitch_yaw(scenario.roll_rad, scenario.pitch_rad, scenario.yaw_rad);
   const Eigen::Matrix3d enu_to_body = state_.attitude_body_to_enu.toRotationMatrix().transpose();
-  const double gravity =
-      normal_gravity_m_s2(scenario.earth_model, scenario.latitude_rad, scenario.height_m);
+  const double gravity = normal_gravity_m_s2(scenario.earth_model, scenario.latitude_rad, scenario.height_m);
   // At rest the accelerometers feel the support force, +g along Up.
   state_.specific_force_body_m_s2 = enu_to_body * Eigen::Vector3d(0.0, 0.0, gravity);
-  state_.angular_rate_body_rad_s =
-      enu_to_body * earth_rate_enu_rad_s(scenario.earth_model, scenario.latitude_rad);
+  state_.angular_rate_body_rad_s = enu_to_body * earth_rate_enu_rad_s(scenario.earth_model, scenario.latitude_rad);
   state_.latitude_rad = scenario.latitude_rad;
   state_.longitude_rad = scenario.longitude_rad;
   state_.height_m = scenario.height_m;

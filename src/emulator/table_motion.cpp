@@ -14,20 +14,16 @@ double RotationPhase::angle_rad(double elapsed_s) const {
   return elapsed_s * (start_rate_rad_s + 0.5 * acceleration_rad_s2 * elapsed_s);
 }
 
-double RotationPhase::rate_rad_s(double elapsed_s) const {
-  return start_rate_rad_s + acceleration_rad_s2 * elapsed_s;
-}
+double RotationPhase::rate_rad_s(double elapsed_s) const { return start_rate_rad_s + acceleration_rad_s2 * elapsed_s; }
 
 Eigen::Quaterniond RotationPhase::attitude_body_to_enu(double elapsed_s) const {
-  return Eigen::Quaterniond(Eigen::AngleAxisd(angle_rad(elapsed_s), axis_enu)) *
-         start_attitude_body_to_enu;
+  return Eigen::Quaterniond(Eigen::AngleAxisd(angle_rad(elapsed_s), axis_enu)) * start_attitude_body_to_enu;
 }
 
 RotationPhaseBuilder::RotationPhaseBuilder(const Eigen::Quaterniond& initial_attitude_body_to_enu)
     : attitude_(initial_attitude_body_to_enu) {}
 
-void RotationPhaseBuilder::append(const Eigen::Vector3d& axis_enu, double duration_s,
-                                  double acceleration_rad_s2) {
+void RotationPhaseBuilder::append(const Eigen::Vector3d& axis_enu, double duration_s, double acceleration_rad_s2) {
   if (!(duration_s > 0.0)) return;
   RotationPhase phase;
   phase.start_s = time_s_;
@@ -49,8 +45,8 @@ void RotationPhaseBuilder::dwell(const Eigen::Quaterniond& attitude_body_to_enu,
   append(axis_enu_, duration_s, 0.0);
 }
 
-void RotationPhaseBuilder::trapezoidal_turn(const Eigen::Vector3d& axis_enu, double angle_rad,
-                                            double max_rate_rad_s, double acceleration_rad_s2) {
+void RotationPhaseBuilder::trapezoidal_turn(const Eigen::Vector3d& axis_enu, double angle_rad, double max_rate_rad_s,
+                                            double acceleration_rad_s2) {
   // Reaching max_rate and stopping again takes max_rate^2 / acceleration of angle.
   const double peak_rate = std::min(max_rate_rad_s, std::sqrt(angle_rad * acceleration_rad_s2));
   const double ramp_s = peak_rate / acceleration_rad_s2;
@@ -91,8 +87,8 @@ TableMotion::TableMotion(const ScenarioConfig& site, std::vector<RotationPhase> 
   double fastest_rad_s = 0.0;
   for (const RotationPhase& phase : phases_) {
     breakpoints_s_.push_back(phase.start_s);
-    fastest_rad_s = std::max({fastest_rad_s, std::abs(phase.start_rate_rad_s),
-                              std::abs(phase.rate_rad_s(std::min(phase.duration_s, 1e9)))});
+    fastest_rad_s = std::max(
+        {fastest_rad_s, std::abs(phase.start_rate_rad_s), std::abs(phase.rate_rad_s(std::min(phase.duration_s, 1e9)))});
   }
   // The Earth rate turns in body axes at the table rate: keep that under 1 rad per piece.
   longest_piece_s_ = std::min(1.0, 1.0 / std::max(fastest_rad_s, 1e-9));
@@ -109,8 +105,8 @@ TruthState TableMotion::truth_at(double time_s) const {
   motion.longitude_rad = site_.longitude_rad;
   motion.height_m = site_.height_m;
   motion.attitude_body_to_enu = phase.attitude_body_to_enu(elapsed_s);
-  motion.rate_body_wrt_enu_rad_s = phase.rate_rad_s(elapsed_s) *
-                                   (phase.start_attitude_body_to_enu.conjugate() * phase.axis_enu);
+  motion.rate_body_wrt_enu_rad_s =
+      phase.rate_rad_s(elapsed_s) * (phase.start_attitude_body_to_enu.conjugate() * phase.axis_enu);
   return truth_from_local_level(motion, site_.earth_model, time_s, site_.temperature_c);
 }
 

@@ -24,15 +24,15 @@ TruthIncrement ThermalMotion::increment(double start_s, double interval_s) {
   TruthIncrement result = motion_->increment(start_s, interval_s);
   const double end_s = start_s + interval_s;
   auto mean_of = [&](auto temperature_at) {
-    return integrate_smooth_pieces(temperature_at, start_s, interval_s, profile_.breakpoints_s(),
-                                   longest_piece_s_, 0.0) / interval_s;
+    return integrate_smooth_pieces(temperature_at, start_s, interval_s, profile_.breakpoints_s(), longest_piece_s_,
+                                   0.0) /
+           interval_s;
   };
   result.mean_temperature_c = mean_of([this](double t) { return profile_.sensor_temperature_c(t); });
   result.mean_temperature_rate_c_s =
       (profile_.sensor_temperature_c(end_s) - profile_.sensor_temperature_c(start_s)) / interval_s;
   if (profile_.has_second_sensor()) {
-    result.mean_second_temperature_c =
-        mean_of([this](double t) { return profile_.second_sensor_temperature_c(t); });
+    result.mean_second_temperature_c = mean_of([this](double t) { return profile_.second_sensor_temperature_c(t); });
   }
   return result;
 }

@@ -73,15 +73,16 @@ double ThermalProfile::second_lag_of_chamber_c(const Segment& segment, double el
 }
 
 double ThermalProfile::self_heating_c(double time_s) const {
-  return config_.p1_c * std::exp(config_.p2_per_s * time_s) +
-         config_.p3_c * std::exp(config_.p4_per_s * time_s) + config_.p5_c;
+  return config_.p1_c * std::exp(config_.p2_per_s * time_s) + config_.p3_c * std::exp(config_.p4_per_s * time_s) +
+         config_.p5_c;
 }
 
 double ThermalProfile::second_lag_of_self_heating_c(double time_s) const {
   // Started in equilibrium: each term's lag begins at the term's own value.
   const double tau2 = *config_.second_sensor_time_constant_s;
   double total = config_.p5_c;
-  for (const auto& [c, lambda] : {std::pair{config_.p1_c, config_.p2_per_s}, std::pair{config_.p3_c, config_.p4_per_s}}) {
+  for (const auto& [c, lambda] :
+       {std::pair{config_.p1_c, config_.p2_per_s}, std::pair{config_.p3_c, config_.p4_per_s}}) {
     total += lambda == 0.0 ? c : second_lag_of_growth(c, lambda, tau2, c, time_s);
   }
   return total;
@@ -98,9 +99,8 @@ double ThermalProfile::sensor_temperature_c(double time_s) const {
 }
 
 double ThermalProfile::sensor_temperature_rate_c_s(double time_s) const {
-  const double lag_rate =
-      (chamber_temperature_c(time_s) - (sensor_temperature_c(time_s) - self_heating_c(time_s))) /
-      config_.sensor_time_constant_s;
+  const double lag_rate = (chamber_temperature_c(time_s) - (sensor_temperature_c(time_s) - self_heating_c(time_s))) /
+                          config_.sensor_time_constant_s;
   return lag_rate + config_.p1_c * config_.p2_per_s * std::exp(config_.p2_per_s * time_s) +
          config_.p3_c * config_.p4_per_s * std::exp(config_.p4_per_s * time_s);
 }

@@ -44,7 +44,8 @@ void visit_graded_integral(double a, double b, const Visit& visit) {
   constexpr double kGrowth = 4.0;
   std::vector<double> edges = {a};
   const double middle = 0.5 * (a + b);
-  for (double width = kFirstWidth; edges.back() + width < middle; width *= kGrowth) edges.push_back(edges.back() + width);
+  for (double width = kFirstWidth; edges.back() + width < middle; width *= kGrowth)
+    edges.push_back(edges.back() + width);
   const size_t left_count = edges.size();
   edges.push_back(middle);
   for (size_t i = left_count; i-- > 1;) edges.push_back(b - (edges[i] - a));
@@ -141,14 +142,10 @@ struct LagReach {
 double decay_time_s(const Term& term) {
   switch (term.kind) {
     case TermKind::kMarkov:
-    case TermKind::kZeroDcFamily:
-      return term.shape;
-    case TermKind::kWhiteRate:
-      return term.shape > 0.0 ? 1.0 / (2.0 * kPi * term.shape) : 0.0;
-    case TermKind::kResonance:
-      return 1.0 / (kPi * term.width);
-    default:
-      return 0.0;
+    case TermKind::kZeroDcFamily: return term.shape;
+    case TermKind::kWhiteRate: return term.shape > 0.0 ? 1.0 / (2.0 * kPi * term.shape) : 0.0;
+    case TermKind::kResonance: return 1.0 / (kPi * term.width);
+    default: return 0.0;
   }
 }
 
@@ -263,15 +260,10 @@ double line_noise_density(const NoiseModel& model, double frequency_hz, double t
   for (const Term& term : model.terms) {
     const double a2 = term.amplitude * term.amplitude;
     switch (term.kind) {
-      case TermKind::kBiasInstability:
-        continuous += a2 / angular;
-        break;
-      case TermKind::kRandomWalk:
-        continuous += a2 / (angular * angular);
-        break;
+      case TermKind::kBiasInstability: continuous += a2 / angular; break;
+      case TermKind::kRandomWalk: continuous += a2 / (angular * angular); break;
       case TermKind::kRateRamp:
-      case TermKind::kSinusoid:
-        break;
+      case TermKind::kSinusoid: break;
       case TermKind::kMarkov:
         if (kTailDecayTimes * term.shape / tau0_s > kMaxLags) {
           continuous += a2 / (1.0 + std::pow(angular * term.shape, 2));
@@ -279,8 +271,7 @@ double line_noise_density(const NoiseModel& model, double frequency_hz, double t
         }
         stationary.push_back(term);
         break;
-      default:
-        stationary.push_back(term);
+      default: stationary.push_back(term);
     }
   }
   double sampled = 0.0;  // two-sided density of the samples: tau0 sum_j r(j) cos(2 pi f j tau0)
@@ -290,9 +281,11 @@ double line_noise_density(const NoiseModel& model, double frequency_hz, double t
       for (const Term& term : stationary) total += term_structure_function(term, lag * tau0_s, tau0_s);
       return total;
     };
-    const long long lags = std::min<long long>(kMaxLags, static_cast<long long>(lag_reach(stationary, tau0_s).tail_lags) + 2);
+    const long long lags =
+        std::min<long long>(kMaxLags, static_cast<long long>(lag_reach(stationary, tau0_s).tail_lags) + 2);
     for (long long j = 0; j <= lags; ++j) {
-      const double autocovariance = (structure(j + 1) - 2.0 * structure(j) + structure(std::abs(j - 1))) / (2.0 * tau0_s * tau0_s);
+      const double autocovariance =
+          (structure(j + 1) - 2.0 * structure(j) + structure(std::abs(j - 1))) / (2.0 * tau0_s * tau0_s);
       sampled += (j == 0 ? 1.0 : 2.0) * autocovariance * std::cos(angular * j * tau0_s);
     }
     sampled *= tau0_s;
@@ -307,7 +300,6 @@ bool close_shape(double a, double b) {
   if (a == b) return true;
   return a > 0.0 && b > 0.0 && std::abs(std::log(a / b)) < kTolerance;
 }
-
 
 // The kernels depend only on the record's geometry (factors, tau0, sample count), the exact
 // shapes of their unit pair, the lag reach they were summed with and whether only the diagonal
@@ -626,7 +618,9 @@ struct OavarCovariance::Cache {
         const bool oscillating = std::min(m, n) < reach.oscillation_factor_limit;
         lags.clear();
         visit_lags(lo, hi, pair.nodes(), oscillating ? reach.exact_half_width : kDefaultHalfWidth,
-                   [&](double h, double weight) { lags.push_back({h, weight}); });
+                   [&](double h, double weight) {
+                     lags.push_back({h, weight});
+                   });
         for (int index : involved) {
           if (fresh[index] && (*fresh[index])[i * count + j].empty()) {
             std::vector<double>& values = (*fresh[index])[i * count + j];
@@ -683,8 +677,8 @@ struct OavarCovariance::Cache {
                    diagonal_only ? &diagonal.at(key) : nullptr);
     }
     for (int index : linear_missing) {
-      shared.store(geometry, kernel_key(index, index, true, reach),
-                   diagonal_only ? nullptr : &linear_full.at(index), diagonal_only ? &linear_diagonal.at(index) : nullptr);
+      shared.store(geometry, kernel_key(index, index, true, reach), diagonal_only ? nullptr : &linear_full.at(index),
+                   diagonal_only ? &linear_diagonal.at(index) : nullptr);
     }
   }
 
@@ -700,7 +694,8 @@ struct OavarCovariance::Cache {
     const int count = static_cast<int>(factors.size());
     for (const Term& line : model.terms) {
       if (line.kind != TermKind::kSinusoid || !(line.amplitude > 0.0)) continue;
-      const double scale = 4.0 * line_noise_density(model, line.shape, tau0_s) / (line.amplitude * line.amplitude * tau0_s);
+      const double scale =
+          4.0 * line_noise_density(model, line.shape, tau0_s) / (line.amplitude * line.amplitude * tau0_s);
       std::vector<double> line_avar(count);
       std::vector<double> terms(count);
       for (int i = 0; i < count; ++i) {
@@ -710,7 +705,8 @@ struct OavarCovariance::Cache {
       for (int i = 0; i < count; ++i) {
         for (int j = diagonal_only ? i : 0; j < (diagonal_only ? i + 1 : count); ++j) {
           // A diagonal result is a vector: its (i, 0).
-          result->coeffRef(i, diagonal_only ? 0 : j) += scale * line_avar[i] * line_avar[j] / std::max(terms[i], terms[j]);
+          result->coeffRef(i, diagonal_only ? 0 : j) +=
+              scale * line_avar[i] * line_avar[j] / std::max(terms[i], terms[j]);
         }
       }
     }
@@ -785,8 +781,7 @@ Eigen::MatrixXd OavarCovariance::covariance(const NoiseModel& model) {
   const int count = static_cast<int>(cache_->factors.size());
   Eigen::MatrixXd result = Eigen::MatrixXd::Zero(count, count);
   cache_->assemble<Eigen::MatrixXd>(model, false, &result);
-  const Eigen::VectorXd scale =
-      Eigen::Map<const Eigen::VectorXd>(cache_->variance_inflation.data(), count).cwiseSqrt();
+  const Eigen::VectorXd scale = Eigen::Map<const Eigen::VectorXd>(cache_->variance_inflation.data(), count).cwiseSqrt();
   return scale.asDiagonal() * result * scale.asDiagonal();
 }
 
@@ -802,8 +797,7 @@ double term_structure_function(const Term& term, double lag_s, double tau0_s) {
   const double u = std::abs(lag_s);
   const double a2 = term.amplitude * term.amplitude;
   switch (term.kind) {
-    case TermKind::kWhiteAngle:
-      return u < 0.5 * tau0_s ? 0.0 : 2.0 * a2;
+    case TermKind::kWhiteAngle: return u < 0.5 * tau0_s ? 0.0 : 2.0 * a2;
     case TermKind::kWhiteRate:
       if (term.shape > 0.0) return a2 * markov_excess(u, 1.0 / (2.0 * kPi * term.shape));
       return a2 * u;
@@ -811,10 +805,8 @@ double term_structure_function(const Term& term, double lag_s, double tau0_s) {
       // Flicker rate: generalised covariance u^2 ln u (its AVAR tends to 2 ln 2 B^2 / pi); the
       // cutoff only shapes taus near 1 / f0.
       return u > 0.0 ? -a2 / kPi * u * u * std::log(u) : 0.0;
-    case TermKind::kRandomWalk:
-      return -a2 * u * u * u / 6.0;
-    case TermKind::kMarkov:
-      return a2 * markov_excess(u, term.shape);
+    case TermKind::kRandomWalk: return -a2 * u * u * u / 6.0;
+    case TermKind::kMarkov: return a2 * markov_excess(u, term.shape);
     case TermKind::kZeroDcFamily: {
       // PSD alpha f^2 e^{-beta f}: D(u) = alpha / pi^2 Re[1 / beta - 1 / (beta - 2 pi i u)].
       const std::complex<double> z(term.shape, -2.0 * kPi * u);
@@ -822,12 +814,10 @@ double term_structure_function(const Term& term, double lag_s, double tau0_s) {
     }
     case TermKind::kResonance: {
       const double angle_sigma = term.amplitude / (2.0 * kPi * term.shape);
-      return 2.0 * angle_sigma * angle_sigma *
-             (1.0 - noise::resonance_angle_correlation(term.shape, term.width, u));
+      return 2.0 * angle_sigma * angle_sigma * (1.0 - noise::resonance_angle_correlation(term.shape, term.width, u));
     }
     case TermKind::kRateRamp:
-    case TermKind::kSinusoid:
-      return 0.0;
+    case TermKind::kSinusoid: return 0.0;
   }
   return 0.0;
 }

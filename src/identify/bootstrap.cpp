@@ -37,7 +37,8 @@ BootstrapSummary bootstrap_uncertainty(const FitResult& fit, const BootstrapOpti
         simulate_rates(fit.model, fit.tau0_s, fit.span.sample_count, options.seed + 7919ULL * replica);
     const auto curve = allan::evaluate_frequency(allan::Statistic::kOverlappingAllan, rates, fit.tau0_s, factors);
     std::vector<FitPoint> points;
-    for (const auto& point : curve) points.push_back({point.tau_s, point.averaging_factor, point.deviation * point.deviation});
+    for (const auto& point : curve)
+      points.push_back({point.tau_s, point.averaging_factor, point.deviation * point.deviation});
     const SolveOutcome outcome = refit_structure(points, fit.structure, fit.log_parameters, fit.span, fit.weights);
     if (!outcome.usable) continue;
     const NoiseModel refitted = model_from_log_parameters(fit.structure, outcome.log_parameters);
@@ -64,7 +65,8 @@ void apply_bootstrap(const BootstrapSummary& summary, FitResult* fit) {
       term.shape.log_sigma = summary.shape_log_sigma[i];
       term.shape.sigma = term.shape.value * term.shape.log_sigma;
     }
-    if (term.status == TermStatus::kPresent && !(term.amplitude.log_sigma <= fit->options.unconstrained_relative_sigma)) {
+    if (term.status == TermStatus::kPresent &&
+        !(term.amplitude.log_sigma <= fit->options.unconstrained_relative_sigma)) {
       term.status = TermStatus::kUnconstrained;
       term.amplitude.upper_bound =
           profile_upper_bound(fit->points, fit->structure, fit->log_parameters,

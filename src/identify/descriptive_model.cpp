@@ -78,7 +78,8 @@ NoiseModel descriptive_model(const std::vector<FitPoint>& points, const DataSpan
   for (int k = 0; k < rows; ++k) {
     const double quantization = model_avar(NoiseModel{{}, output_quantization_density}, points[k].tau_s);
     target(k) = std::max(0.0, points[k].avar - quantization) / points[k].avar;
-    for (size_t j = 0; j < candidates.size(); ++j) design(k, j) = term_avar(candidates[j], points[k].tau_s) / points[k].avar;
+    for (size_t j = 0; j < candidates.size(); ++j)
+      design(k, j) = term_avar(candidates[j], points[k].tau_s) / points[k].avar;
   }
   // Columns scaled to unit norm so the solver's tolerances are scale-free.
   Eigen::VectorXd norms = design.colwise().norm().transpose();

@@ -32,8 +32,8 @@ double distance_at(const std::vector<FitPoint>& points, const Eigen::MatrixXd& m
     for (size_t j = 0; j < points.size(); ++j) {
       covariance(k, j) = model_covariance(k, j) / (model_values(k) * model_values(j));
     }
-    residual(k) = std::log(points[k].avar) - mean_log_scaled_chi_squared(2.0 / covariance(k, k)) -
-                  std::log(model_values(k));
+    residual(k) =
+        std::log(points[k].avar) - mean_log_scaled_chi_squared(2.0 / covariance(k, k)) - std::log(model_values(k));
     covariance(k, k) += discrepancy * discrepancy;
   }
   const Eigen::LDLT<Eigen::MatrixXd> factor(covariance);
@@ -137,10 +137,9 @@ void describe_absent_shaped_term(const SelectedModel& selected, const DataSpan& 
   estimate.name = term_kind_name(slot.kind);
   estimate.kind = slot.kind;
   estimate.status = TermStatus::kAbsent;
-  estimate.amplitude.upper_bound =
-      shaped_profile_upper_bound(fit->points, fit->structure, fit->log_parameters, selected.cost,
-                                 spread_start_shapes(slot, fit->points, span), span, selected.weights,
-                                 fit->options.upper_bound_confidence);
+  estimate.amplitude.upper_bound = shaped_profile_upper_bound(
+      fit->points, fit->structure, fit->log_parameters, selected.cost, spread_start_shapes(slot, fit->points, span),
+      span, selected.weights, fit->options.upper_bound_confidence);
   fit->terms.push_back(estimate);
 }
 
@@ -157,8 +156,7 @@ void describe_absent_terms(const SelectedModel& selected, const DataSpan& span, 
       describe_absent_shaped_term(selected, span, slot, fit);
       continue;
     }
-    if (shape_count(slot.kind) > 0 && slot.kind != TermKind::kBiasInstability &&
-        slot.kind != TermKind::kWhiteRate) {
+    if (shape_count(slot.kind) > 0 && slot.kind != TermKind::kBiasInstability && slot.kind != TermKind::kWhiteRate) {
       continue;  // the zero-DC family (an option): its shape is not bounded
     }
     if (slot.shape_free) {  // bound a fitted-cutoff bias instability at the Nyquist cutoff
@@ -174,11 +172,10 @@ void describe_absent_terms(const SelectedModel& selected, const DataSpan& span, 
     estimate.status = TermStatus::kAbsent;
     if (has_shape(slot.kind) && slot.fixed_shape > 0.0) estimate.shape.value = slot.fixed_shape;
     const int slot_index = static_cast<int>(structure.slots.size()) - 1;
-    estimate.amplitude.upper_bound = profile_upper_bound(fit->points, structure, log_parameters, selected.cost,
-                                                         slot_index, span, selected.weights,
-                                                         fit->options.upper_bound_confidence);
-    const SolveOutcome added =
-        refit_structure(fit->points, structure, log_parameters, span, selected.weights);
+    estimate.amplitude.upper_bound =
+        profile_upper_bound(fit->points, structure, log_parameters, selected.cost, slot_index, span, selected.weights,
+                            fit->options.upper_bound_confidence);
+    const SolveOutcome added = refit_structure(fit->points, structure, log_parameters, span, selected.weights);
     if (added.usable) {
       estimate.selection_statistic = std::max(0.0, 2.0 * (selected.cost - added.cost));
       estimate.selection_threshold = slot_lr_threshold(fit->options, slot, static_cast<int>(fit->points.size()));
@@ -247,7 +244,8 @@ void leave_out_one(TermKind kind, const NoiseModel& model, FitOptions* options) 
 }  // namespace
 
 BandLimits band_limits(double measured_deviation, double edf) {
-  const allan::DeviationBounds bounds = allan::chi_squared_bounds(measured_deviation, std::min(edf, 1e12), kBandConfidence);
+  const allan::DeviationBounds bounds =
+      allan::chi_squared_bounds(measured_deviation, std::min(edf, 1e12), kBandConfidence);
   return {std::min((1.0 - kBandMinimumHalfWidth) * measured_deviation, bounds.lower),
           std::max((1.0 + kBandMinimumHalfWidth) * measured_deviation, bounds.upper)};
 }
@@ -267,8 +265,8 @@ std::string sigma_source_name(SigmaSource source) {
 
 std::vector<const TermEstimate*> terms_in_report_order(const FitResult& fit) {
   std::vector<const TermEstimate*> ordered;
-  for (TermKind kind : {TermKind::kWhiteRate, TermKind::kBiasInstability, TermKind::kRandomWalk,
-                        TermKind::kWhiteAngle, TermKind::kRateRamp}) {
+  for (TermKind kind : {TermKind::kWhiteRate, TermKind::kBiasInstability, TermKind::kRandomWalk, TermKind::kWhiteAngle,
+                        TermKind::kRateRamp}) {
     for (const TermEstimate& term : fit.terms) {
       if (term.kind == kind) ordered.push_back(&term);
     }

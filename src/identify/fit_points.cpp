@@ -50,8 +50,8 @@ std::vector<FitPoint> ladder_points(const std::vector<allan::StabilityPoint>& po
     const allan::StabilityPoint* nearest = nullptr;
     for (const auto& point : points) {
       if (point.averaging_factor < 1) continue;  // no place on a log axis
-      if (nearest == nullptr || log_distance(point.averaging_factor, target) <
-                                    log_distance(nearest->averaging_factor, target)) {
+      if (nearest == nullptr ||
+          log_distance(point.averaging_factor, target) < log_distance(nearest->averaging_factor, target)) {
         nearest = &point;
       }
     }
@@ -70,9 +70,10 @@ std::vector<FitPoint> select_fit_points(const std::vector<allan::StabilityPoint>
   double previous_tau_s = 0.0;
   for (const auto& point : points) {
     if (!(point.tau_s > previous_tau_s)) {
-      throw InputError("noise identification: stability points must have positive, increasing "
-                       "tau (tau " + std::to_string(point.tau_s) + " s follows " +
-                       std::to_string(previous_tau_s) + " s)");
+      throw InputError(
+          "noise identification: stability points must have positive, increasing "
+          "tau (tau " +
+          std::to_string(point.tau_s) + " s follows " + std::to_string(previous_tau_s) + " s)");
     }
     previous_tau_s = point.tau_s;
     if (!usable(point)) continue;

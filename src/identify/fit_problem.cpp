@@ -150,7 +150,8 @@ MomentWeights moment_weights(const std::vector<FitPoint>& points, const NoiseMod
     if (!(scale.minCoeff() > 0.0)) {
       throw std::runtime_error("noise identification: the model gives an estimate no variance");
     }
-    const Eigen::MatrixXd correlation = scale.cwiseInverse().asDiagonal() * covariance * scale.cwiseInverse().asDiagonal();
+    const Eigen::MatrixXd correlation =
+        scale.cwiseInverse().asDiagonal() * covariance * scale.cwiseInverse().asDiagonal();
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(correlation);
     const Eigen::VectorXd clipped = eigen.eigenvalues().cwiseMax(1e-6 * correlation.rows());
     const Eigen::MatrixXd repaired = eigen.eigenvectors() * clipped.asDiagonal() * eigen.eigenvectors().transpose();
@@ -241,8 +242,7 @@ SolveOutcome solve_model(const std::vector<FitPoint>& points, const ModelStructu
     if (std::isfinite(upper[i])) problem.SetParameterUpperBound(parameters.data(), static_cast<int>(i), upper[i]);
   }
   if (!held_fixed.empty()) {
-    problem.SetManifold(parameters.data(),
-                        new ceres::SubsetManifold(static_cast<int>(parameters.size()), held_fixed));
+    problem.SetManifold(parameters.data(), new ceres::SubsetManifold(static_cast<int>(parameters.size()), held_fixed));
   }
   ceres::Solver::Options options;
   options.linear_solver_type = ceres::DENSE_QR;

@@ -60,8 +60,8 @@ void warn_markov_as_white(const FitResult& fit, std::vector<std::string>* warnin
     if (term.kind == TermKind::kMarkov && markov_acts_as_low_passed_white(term.shape, fit.points.front().tau_s)) {
       warnings->push_back(fit.terms[i].name + " has T_c = " + format_number(term.shape) +
                           " s, below twice the shortest tau: it behaves like low-passed white noise of density "
-                          "q_c T_c = " + format_number(term.amplitude) +
-                          "; kalibr_imu.yaml's noise density adds it to N in power");
+                          "q_c T_c = " +
+                          format_number(term.amplitude) + "; kalibr_imu.yaml's noise density adds it to N in power");
     }
   }
 }
@@ -72,8 +72,8 @@ void warn_bias_instability(const FitResult& fit, std::vector<std::string>* warni
   const double fitted = value_or_bound(bias);
   if (!std::isfinite(reading) || !std::isfinite(fitted)) return;
   if (reading > kReadingDisagreementRatio * fitted) {
-    warnings->push_back("flat-tangent reading of B (minimum / 0.664 = " + format_number(reading) + " at tau = " +
-                        format_number(fit.graphical.tau_at_minimum_s) + " s) over-states the fitted B" +
+    warnings->push_back("flat-tangent reading of B (minimum / 0.664 = " + format_number(reading) +
+                        " at tau = " + format_number(fit.graphical.tau_at_minimum_s) + " s) over-states the fitted B" +
                         (bias->status == TermStatus::kPresent ? "" : " upper bound") + " (" + format_number(fitted) +
                         ") " + format_number(reading / fitted) + "x: at the minimum the AVAR is mostly " +
                         dominant_terms_at(fit, fit.graphical.tau_at_minimum_s, TermKind::kBiasInstability));
@@ -83,13 +83,13 @@ void warn_bias_instability(const FitResult& fit, std::vector<std::string>* warni
 void warn_band(const FitResult& fit, std::vector<std::string>* warnings) {
   for (const BandExcursion& excursion : band_excursions(fit.band)) {
     const bool single = excursion.point_count == 1;
-    warnings->push_back(
-        "the fitted total leaves the measured curve's 95 % band at " +
-        (single ? "tau " + format_number(excursion.first_tau_s) + " s"
-                : "tau " + format_number(excursion.first_tau_s) + "-" + format_number(excursion.last_tau_s) + " s (" +
-                      std::to_string(excursion.point_count) + " points)") +
-        ", by up to " + format_number(100.0 * std::abs(excursion.largest_excursion)) + " % of the deviation " +
-        (excursion.largest_excursion > 0.0 ? "above" : "below") + " the band");
+    warnings->push_back("the fitted total leaves the measured curve's 95 % band at " +
+                        (single ? "tau " + format_number(excursion.first_tau_s) + " s"
+                                : "tau " + format_number(excursion.first_tau_s) + "-" +
+                                      format_number(excursion.last_tau_s) + " s (" +
+                                      std::to_string(excursion.point_count) + " points)") +
+                        ", by up to " + format_number(100.0 * std::abs(excursion.largest_excursion)) +
+                        " % of the deviation " + (excursion.largest_excursion > 0.0 ? "above" : "below") + " the band");
   }
   // A term whose own partial curve exceeds the band's upper bound claims more than the curve has.
   for (size_t i = 0; i < fit.model.terms.size(); ++i) {

@@ -11,8 +11,7 @@ namespace identify {
 
 namespace {
 
-void write_entry(std::ostringstream& out, const std::string& key, double value,
-                 const std::string& comment) {
+void write_entry(std::ostringstream& out, const std::string& key, double value, const std::string& comment) {
   out << key << ": " << value << "  # " << comment << "\n";
 }
 
@@ -22,19 +21,15 @@ void write_pair(std::ostringstream& out, const std::string& sensor, const std::s
     return v.is_upper_bound ? " UPPER BOUND: the fit could not constrain it" : "";
   };
   write_entry(out, sensor + "_noise_density", density.value,
-              "[" + rate_unit + "/sqrt(Hz)] continuous, axis " + std::to_string(density.axis) +
-                  flag(density));
+              "[" + rate_unit + "/sqrt(Hz)] continuous, axis " + std::to_string(density.axis) + flag(density));
   write_entry(out, sensor + "_random_walk", walk.value,
-              "[" + rate_unit + "/s/sqrt(Hz)] continuous, axis " + std::to_string(walk.axis) +
-                  flag(walk));
+              "[" + rate_unit + "/s/sqrt(Hz)] continuous, axis " + std::to_string(walk.axis) + flag(walk));
   write_entry(out, sensor + "_noise_density_discrete", density.value * std::sqrt(rate_hz),
               "[" + rate_unit + "] per sample = density * sqrt(update_rate)");
   write_entry(out, sensor + "_random_walk_discrete", walk.value / std::sqrt(rate_hz),
               "[" + rate_unit + "] per sample = random_walk / sqrt(update_rate)");
-  out << sensor << "_noise_density_is_upper_bound: " << (density.is_upper_bound ? "true" : "false")
-      << "\n";
-  out << sensor << "_random_walk_is_upper_bound: " << (walk.is_upper_bound ? "true" : "false")
-      << "\n";
+  out << sensor << "_noise_density_is_upper_bound: " << (density.is_upper_bound ? "true" : "false") << "\n";
+  out << sensor << "_random_walk_is_upper_bound: " << (walk.is_upper_bound ? "true" : "false") << "\n";
 }
 
 // One axis's candidate: the white-equivalent density for N (white_equivalent.h), else the
@@ -72,8 +67,8 @@ KalibrValue kalibr_value(const TriadFit& triad, TermKind kind) {
   return result;
 }
 
-KalibrImuNoise kalibr_noise(const TriadFit& gyro, const TriadFit& accelerometer,
-                            double update_rate_hz, const std::string& rostopic) {
+KalibrImuNoise kalibr_noise(const TriadFit& gyro, const TriadFit& accelerometer, double update_rate_hz,
+                            const std::string& rostopic) {
   KalibrImuNoise noise;
   noise.gyroscope_noise_density = kalibr_value(gyro, TermKind::kWhiteRate);
   noise.gyroscope_random_walk = kalibr_value(gyro, TermKind::kRandomWalk);
@@ -92,10 +87,10 @@ std::string format_kalibr_imu_yaml(const KalibrImuNoise& noise) {
          "# at update_rate. One value per sensor: the largest over its axes. The noise density\n"
          "# is the white-equivalent one: N plus, in power, any Markov term whose T_c is below\n"
          "# twice tau0 (white noise behind the sensor's low-pass; see noise.yaml's warnings).\n";
-  write_pair(out, "accelerometer", "m/s^2", noise.accelerometer_noise_density,
-             noise.accelerometer_random_walk, noise.update_rate_hz);
-  write_pair(out, "gyroscope", "rad/s", noise.gyroscope_noise_density,
-             noise.gyroscope_random_walk, noise.update_rate_hz);
+  write_pair(out, "accelerometer", "m/s^2", noise.accelerometer_noise_density, noise.accelerometer_random_walk,
+             noise.update_rate_hz);
+  write_pair(out, "gyroscope", "rad/s", noise.gyroscope_noise_density, noise.gyroscope_random_walk,
+             noise.update_rate_hz);
   out << "rostopic: " << noise.rostopic << "\n";
   out << "update_rate: " << noise.update_rate_hz << "  # [Hz] measured\n";
   return out.str();

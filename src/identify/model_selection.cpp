@@ -70,8 +70,8 @@ void reweigh(const SelectionContext& context, SelectedModel* current) {
     const NoiseModel refitted = model_from_log_parameters(current->structure, refit.log_parameters);
     double largest_change = 0.0;
     for (const FitPoint& point : context.points) {
-      largest_change = std::max(largest_change,
-                                std::abs(model_avar(refitted, point.tau_s) / model_avar(model, point.tau_s) - 1.0));
+      largest_change =
+          std::max(largest_change, std::abs(model_avar(refitted, point.tau_s) / model_avar(model, point.tau_s) - 1.0));
     }
     current->log_parameters = refit.log_parameters;
     if (largest_change < kSettled) break;
@@ -85,7 +85,8 @@ SolveOutcome fit_with_new_slot(const SelectionContext& context, const ModelStruc
   *extended = base;
   extended->slots.push_back(slot);
   std::vector<std::vector<double>> starts;
-  for (const auto& slot_start : new_slot_starts(slot, context.points, context.span, context.options.envelope_fractions)) {
+  for (const auto& slot_start :
+       new_slot_starts(slot, context.points, context.span, context.options.envelope_fractions)) {
     for (double base_factor : {1.0, 0.5}) {
       if (base.slots.empty() && base_factor != 1.0) continue;
       std::vector<double> start = scaled_amplitudes(base, base_parameters, base_factor);
@@ -134,8 +135,7 @@ Addition best_addition(const SelectionContext& context, const ModelStructure& ba
   for (size_t c = 0; c < candidates.size(); ++c) {
     if (is_extra_term(candidates[c].kind) && !allow_extras) continue;
     ModelStructure extended;
-    const SolveOutcome outcome =
-        fit_with_new_slot(context, base, base_parameters, candidates[c], weights, &extended);
+    const SolveOutcome outcome = fit_with_new_slot(context, base, base_parameters, candidates[c], weights, &extended);
     if (!outcome.usable) continue;
     // The distance left plus half the candidate's threshold: among candidates of different
     // parameter counts (a sinusoid or a resonance for one peak) the one whose fall of J clears
@@ -180,8 +180,8 @@ Extension weigh_extension(const SelectionContext& context, const SelectedModel& 
   extension.model.structure = structure;
   extension.model.log_parameters = outcome.log_parameters;
   reweigh(context, &extension.model);
-  const SolveOutcome reduced = refit_structure(context.points, current.structure, current.log_parameters,
-                                               context.span, extension.model.weights);
+  const SolveOutcome reduced =
+      refit_structure(context.points, current.structure, current.log_parameters, context.span, extension.model.weights);
   extension.statistic = reduced.usable ? 2.0 * (reduced.cost - extension.model.cost) : kInfinity;
   return extension;
 }
@@ -210,8 +210,8 @@ void forward_pass(const SelectionContext& context, std::vector<TermSlot>* remain
       // The front end belongs to the white noise: decided before a Markov term can stand in.
       if (extras) added_any |= front_end_pass(context, current);
       while (true) {
-        const Addition addition = best_addition(context, current->structure, current->log_parameters, *remaining,
-                                                extras, current->weights);
+        const Addition addition =
+            best_addition(context, current->structure, current->log_parameters, *remaining, extras, current->weights);
         if (!std::isfinite(addition.outcome.cost)) break;
         const SolveOutcome best = polish(context, addition.structure, addition.outcome, current->weights);
         const TermSlot added = (*remaining)[addition.index];
@@ -247,11 +247,11 @@ bool front_end_pass(const SelectionContext& context, SelectedModel* current) {
       start.insert(start.begin() + offset + 1, std::log(shape.shape));
       starts.push_back(start);
     }
-    const SolveOutcome outcome = best_of(context.points, upgraded, starts, static_cast<int>(starts.size()),
-                                         context.span, current->weights);
+    const SolveOutcome outcome =
+        best_of(context.points, upgraded, starts, static_cast<int>(starts.size()), context.span, current->weights);
     if (!outcome.usable) return false;
-    return try_extension(context, upgraded, outcome, upgraded.slots[i], {"front end", term_kind_name(slot.kind), 0.0, 0.0},
-                         current);
+    return try_extension(context, upgraded, outcome, upgraded.slots[i],
+                         {"front end", term_kind_name(slot.kind), 0.0, 0.0}, current);
   }
   return false;
 }
@@ -308,8 +308,7 @@ bool swap_pass(const SelectionContext& context, std::vector<TermSlot>* remaining
     ModelStructure reduced = current->structure;
     std::vector<double> reduced_parameters = current->log_parameters;
     remove_slot(reduced, reduced_parameters, static_cast<int>(i));
-    const Addition addition =
-        best_addition(context, reduced, reduced_parameters, *remaining, false, current->weights);
+    const Addition addition = best_addition(context, reduced, reduced_parameters, *remaining, false, current->weights);
     if (!std::isfinite(addition.outcome.cost)) continue;
     const double statistic = 2.0 * (addition.outcome.cost - current->cost);
     const double threshold = slot_lr_threshold(context.options, extra, context.point_count);
@@ -361,8 +360,7 @@ std::vector<TermSlot> candidate_slots(const FitOptions& options, const DataSpan&
   }
   if (options.allow_bias_instability) {
     TermSlot bias{TermKind::kBiasInstability, options.bias_cutoff == BiasCutoff::kFitted, 0.0};
-    bias.fixed_shape =
-        options.bias_cutoff == BiasCutoff::kGiven ? options.bias_cutoff_hz : 1.0 / (2.0 * span.tau0_s);
+    bias.fixed_shape = options.bias_cutoff == BiasCutoff::kGiven ? options.bias_cutoff_hz : 1.0 / (2.0 * span.tau0_s);
     slots.push_back(bias);
   }
   add(options.allow_random_walk, TermKind::kRandomWalk);

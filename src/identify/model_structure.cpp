@@ -25,8 +25,7 @@ int parameter_offset(const ModelStructure& structure, int slot_index) {
   return offset;
 }
 
-NoiseModel model_from_log_parameters(const ModelStructure& structure,
-                                     const std::vector<double>& log_parameters) {
+NoiseModel model_from_log_parameters(const ModelStructure& structure, const std::vector<double>& log_parameters) {
   if (static_cast<int>(log_parameters.size()) != parameter_count(structure)) {
     throw std::invalid_argument("model_from_log_parameters: parameter count mismatch");
   }
@@ -49,8 +48,7 @@ Term term_from_log_parameters(const TermSlot& slot, const double* log_parameters
   return term;
 }
 
-std::vector<double> log_parameters_from_model(const ModelStructure& structure,
-                                              const NoiseModel& model) {
+std::vector<double> log_parameters_from_model(const ModelStructure& structure, const NoiseModel& model) {
   if (model.terms.size() != structure.slots.size()) {
     throw std::invalid_argument("log_parameters_from_model: term count mismatch");
   }

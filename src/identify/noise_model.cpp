@@ -67,9 +67,7 @@ std::string amplitude_symbol(TermKind kind) { return names_of(kind).amplitude_sy
 std::string shape_symbol(TermKind kind) { return names_of(kind).shape_symbol; }
 std::string width_symbol(TermKind kind) { return names_of(kind).width_symbol; }
 bool has_shape(TermKind kind) { return !shape_symbol(kind).empty(); }
-int shape_count(TermKind kind) {
-  return (has_shape(kind) ? 1 : 0) + (width_symbol(kind).empty() ? 0 : 1);
-}
+int shape_count(TermKind kind) { return (has_shape(kind) ? 1 : 0) + (width_symbol(kind).empty() ? 0 : 1); }
 
 TermKind term_kind_from_name(const std::string& name) {
   for (const auto& entry : kKinds) {
@@ -81,28 +79,20 @@ TermKind term_kind_from_name(const std::string& name) {
 double term_avar(const Term& term, double tau_s) {
   const double a = term.amplitude;
   switch (term.kind) {
-    case TermKind::kWhiteAngle:
-      return noise::white_angle_avar(a, tau_s);
+    case TermKind::kWhiteAngle: return noise::white_angle_avar(a, tau_s);
     case TermKind::kWhiteRate:
       if (term.shape > 0.0) {
         const double time_constant_s = 1.0 / (kTwoPi * term.shape);
         return noise::markov_avar(a / time_constant_s, time_constant_s, tau_s);
       }
       return noise::white_rate_avar(a, tau_s);
-    case TermKind::kBiasInstability:
-      return a * a * unit_bias_instability_avar(term.shape, tau_s);
-    case TermKind::kRandomWalk:
-      return noise::random_walk_avar(a, tau_s);
-    case TermKind::kRateRamp:
-      return noise::rate_ramp_avar(a, tau_s);
-    case TermKind::kMarkov:
-      return noise::markov_avar(a / term.shape, term.shape, tau_s);
-    case TermKind::kSinusoid:
-      return noise::sinusoid_avar(a, term.shape, tau_s);
-    case TermKind::kZeroDcFamily:
-      return noise::zero_dc_family_avar(2.0, a * a, term.shape, tau_s);
-    case TermKind::kResonance:
-      return noise::resonance_avar(a, term.shape, term.width, tau_s);
+    case TermKind::kBiasInstability: return a * a * unit_bias_instability_avar(term.shape, tau_s);
+    case TermKind::kRandomWalk: return noise::random_walk_avar(a, tau_s);
+    case TermKind::kRateRamp: return noise::rate_ramp_avar(a, tau_s);
+    case TermKind::kMarkov: return noise::markov_avar(a / term.shape, term.shape, tau_s);
+    case TermKind::kSinusoid: return noise::sinusoid_avar(a, term.shape, tau_s);
+    case TermKind::kZeroDcFamily: return noise::zero_dc_family_avar(2.0, a * a, term.shape, tau_s);
+    case TermKind::kResonance: return noise::resonance_avar(a, term.shape, term.width, tau_s);
   }
   throw std::invalid_argument("unknown noise term kind");
 }

@@ -107,14 +107,11 @@ void emit_graphical(YAML::Emitter& out, SensorKind sensor, const GraphicalReadin
   out << YAML::Key << "note" << YAML::Value
       << "IEEE 952 graphical readings, correct for a single term only; the fit is the estimate";
   for (const UnitScale& unit : n_units) {
-    emit_number(out, parameter_key("N_upper_bound_slope_ray", unit.key),
-                readings.white_rate_upper_bound * unit.per_si);
-    emit_number(out, parameter_key("N_slope_reading_at_1s", unit.key),
-                readings.white_rate_at_1s * unit.per_si);
+    emit_number(out, parameter_key("N_upper_bound_slope_ray", unit.key), readings.white_rate_upper_bound * unit.per_si);
+    emit_number(out, parameter_key("N_slope_reading_at_1s", unit.key), readings.white_rate_at_1s * unit.per_si);
   }
   for (const UnitScale& unit : k_units) {
-    emit_number(out, parameter_key("K_slope_reading_at_3s", unit.key),
-                readings.random_walk_at_3s * unit.per_si);
+    emit_number(out, parameter_key("K_slope_reading_at_3s", unit.key), readings.random_walk_at_3s * unit.per_si);
   }
   for (const UnitScale& unit : b_units) {
     emit_number(out, parameter_key("B_flat_tangent_at_minimum", unit.key),
@@ -140,8 +137,7 @@ void emit_white_equivalent(YAML::Emitter& out, SensorKind sensor, const FitResul
   out << YAML::EndMap;
 }
 
-void emit_axis(YAML::Emitter& out, SensorKind sensor, const std::string& name,
-               const FitResult& fit) {
+void emit_axis(YAML::Emitter& out, SensorKind sensor, const std::string& name, const FitResult& fit) {
   out << YAML::Key << name << YAML::Value << YAML::BeginMap;
   emit_number(out, "tau0_s", fit.tau0_s);
   emit_number(out, "record_length_s", fit.record_length_s);
@@ -181,9 +177,7 @@ void emit_axis(YAML::Emitter& out, SensorKind sensor, const std::string& name,
 
 }  // namespace
 
-std::string parameter_key(const std::string& symbol, const std::string& unit_key) {
-  return symbol + "_" + unit_key;
-}
+std::string parameter_key(const std::string& symbol, const std::string& unit_key) { return symbol + "_" + unit_key; }
 
 std::string upper_bound_suffix(double confidence) {
   return "_upper_" + std::to_string(static_cast<int>(std::lround(100.0 * confidence)));
@@ -215,8 +209,7 @@ void emit_events(YAML::Emitter& out, const ReportMetadata& metadata) {
 }
 }  // namespace
 
-std::string format_noise_report(const std::vector<TriadFit>& triads,
-                                const ReportMetadata& metadata) {
+std::string format_noise_report(const std::vector<TriadFit>& triads, const ReportMetadata& metadata) {
   YAML::Emitter out;
   out.SetDoublePrecision(17);
   out << YAML::Comment(
@@ -246,8 +239,7 @@ std::string format_noise_report(const std::vector<TriadFit>& triads,
   return std::string(out.c_str()) + "\n";
 }
 
-void write_noise_report(const std::string& path, const std::vector<TriadFit>& triads,
-                        const ReportMetadata& metadata) {
+void write_noise_report(const std::string& path, const std::vector<TriadFit>& triads, const ReportMetadata& metadata) {
   write_file_atomically(path, format_noise_report(triads, metadata));
 }
 
@@ -262,18 +254,18 @@ std::map<std::string, double> read_noise_report_values(const std::string& yaml_t
     throw InputError(std::string("noise report: missing 'format: ") + kFormatName + "'");
   }
   std::map<std::string, double> values;
-  const std::function<void(const YAML::Node&, const std::string&)> walk =
-      [&](const YAML::Node& node, const std::string& path) {
-        if (node.IsMap()) {
-          for (const auto& entry : node) {
-            const std::string key = entry.first.as<std::string>();
-            walk(entry.second, path.empty() ? key : path + "." + key);
-          }
-        } else if (node.IsScalar()) {
-          double value = 0.0;
-          if (YAML::convert<double>::decode(node, value)) values[path] = value;
-        }
-      };
+  const std::function<void(const YAML::Node&, const std::string&)> walk = [&](const YAML::Node& node,
+                                                                              const std::string& path) {
+    if (node.IsMap()) {
+      for (const auto& entry : node) {
+        const std::string key = entry.first.as<std::string>();
+        walk(entry.second, path.empty() ? key : path + "." + key);
+      }
+    } else if (node.IsScalar()) {
+      double value = 0.0;
+      if (YAML::convert<double>::decode(node, value)) values[path] = value;
+    }
+  };
   walk(root, "");
   return values;
 }

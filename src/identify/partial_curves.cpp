@@ -9,8 +9,7 @@
 namespace imu_lab {
 namespace identify {
 
-PartialCurves partial_curves(const FitResult& fit,
-                             const std::vector<allan::StabilityPoint>& measured) {
+PartialCurves partial_curves(const FitResult& fit, const std::vector<allan::StabilityPoint>& measured) {
   PartialCurves curves;
   curves.term_names = term_names(fit.model);
   // Rounding is white noise behind the front end: a white rate term of its density.
@@ -36,24 +35,21 @@ PartialCurves partial_curves(const FitResult& fit,
   return curves;
 }
 
-std::string format_partial_curves_csv(const PartialCurves& curves,
-                                      const std::string& rate_unit_key) {
+std::string format_partial_curves_csv(const PartialCurves& curves, const std::string& rate_unit_key) {
   std::ostringstream out;
   out.precision(10);
   out << "tau_s,measured_dev_" << rate_unit_key << ",fit_total_dev_" << rate_unit_key;
   for (const std::string& name : curves.term_names) out << "," << name << "_dev_" << rate_unit_key;
   out << ",band95_low_" << rate_unit_key << ",band95_high_" << rate_unit_key << "\n";
   for (size_t k = 0; k < curves.tau_s.size(); ++k) {
-    out << curves.tau_s[k] << "," << curves.measured_deviation[k] << ","
-        << curves.total_deviation[k];
+    out << curves.tau_s[k] << "," << curves.measured_deviation[k] << "," << curves.total_deviation[k];
     for (const auto& term : curves.term_deviations) out << "," << term[k];
     out << "," << curves.band_lower_deviation[k] << "," << curves.band_upper_deviation[k] << "\n";
   }
   return out.str();
 }
 
-void write_partial_curves_csv(const std::string& path, const PartialCurves& curves,
-                              const std::string& rate_unit_key) {
+void write_partial_curves_csv(const std::string& path, const PartialCurves& curves, const std::string& rate_unit_key) {
   write_file_atomically(path, format_partial_curves_csv(curves, rate_unit_key));
 }
 

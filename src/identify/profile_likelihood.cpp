@@ -70,9 +70,9 @@ double shaped_profile_upper_bound(const std::vector<FitPoint>& points, const Mod
     start.push_back(std::log(kStartFraction * envelope));
     start.push_back(std::log(shape.shape));
     if (shape.kind == TermKind::kResonance) start.push_back(std::log(shape.width / shape.shape));
-    const double at_start = profile_upper_bound(points, extended, start, best_cost,
-                                                static_cast<int>(extended.slots.size()) - 1, span, weights,
-                                                confidence, kBisections);
+    const double at_start =
+        profile_upper_bound(points, extended, start, best_cost, static_cast<int>(extended.slots.size()) - 1, span,
+                            weights, confidence, kBisections);
     if (!(at_start <= bound)) bound = at_start;
   }
   return bound;

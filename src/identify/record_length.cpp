@@ -45,20 +45,17 @@ Eigen::MatrixXd predicted_log_covariance(const ModelStructure& structure, const 
   return result.allFinite() ? result : Eigen::MatrixXd();
 }
 
-double predicted_relative_sigma(const ModelStructure& structure,
-                                const std::vector<double>& log_parameters, int parameter_index,
-                                double tau0_s, double record_length_s) {
-  const Eigen::MatrixXd covariance =
-      predicted_log_covariance(structure, log_parameters, tau0_s, record_length_s);
+double predicted_relative_sigma(const ModelStructure& structure, const std::vector<double>& log_parameters,
+                                int parameter_index, double tau0_s, double record_length_s) {
+  const Eigen::MatrixXd covariance = predicted_log_covariance(structure, log_parameters, tau0_s, record_length_s);
   if (covariance.size() == 0 || !(covariance(parameter_index, parameter_index) >= 0.0)) {
     return std::numeric_limits<double>::infinity();
   }
   return std::sqrt(covariance(parameter_index, parameter_index));
 }
 
-double required_record_length_s(const ModelStructure& structure,
-                                const std::vector<double>& log_parameters, int parameter_index,
-                                double tau0_s, double current_length_s,
+double required_record_length_s(const ModelStructure& structure, const std::vector<double>& log_parameters,
+                                int parameter_index, double tau0_s, double current_length_s,
                                 double target_relative_sigma) {
   const auto sigma_at = [&](double length_s) {
     return predicted_relative_sigma(structure, log_parameters, parameter_index, tau0_s, length_s);
@@ -80,26 +77,24 @@ double required_record_length_s(const ModelStructure& structure,
   return std::exp(high);
 }
 
-double required_record_length_s(const FitResult& fit, const std::string& term_name,
-                                double target_relative_sigma) {
+double required_record_length_s(const FitResult& fit, const std::string& term_name, double target_relative_sigma) {
   const TermEstimate* term = fit.find(term_name);
   if (term == nullptr) {
     throw std::invalid_argument("required_record_length_s: no term '" + term_name + "'");
   }
-  const auto position = std::find_if(fit.terms.begin(), fit.terms.end(),
-                                     [&](const TermEstimate& t) { return t.name == term_name; });
+  const auto position =
+      std::find_if(fit.terms.begin(), fit.terms.end(), [&](const TermEstimate& t) { return t.name == term_name; });
   const int slot = static_cast<int>(position - fit.terms.begin());
   if (slot >= static_cast<int>(fit.structure.slots.size())) {
     return std::numeric_limits<double>::infinity();
   }
   const int index = parameter_offset(fit.structure, slot);
-  const double predicted = predicted_relative_sigma(fit.structure, fit.log_parameters, index, fit.tau0_s,
-                                                   fit.record_length_s);
+  const double predicted =
+      predicted_relative_sigma(fit.structure, fit.log_parameters, index, fit.tau0_s, fit.record_length_s);
   const double reported = term->amplitude.log_sigma;
-  const double inflation =
-      (std::isfinite(reported) && predicted > 0.0) ? std::max(1.0, reported / predicted) : 1.0;
-  return required_record_length_s(fit.structure, fit.log_parameters, index, fit.tau0_s,
-                                  fit.record_length_s, target_relative_sigma / inflation);
+  const double inflation = (std::isfinite(reported) && predicted > 0.0) ? std::max(1.0, reported / predicted) : 1.0;
+  return required_record_length_s(fit.structure, fit.log_parameters, index, fit.tau0_s, fit.record_length_s,
+                                  target_relative_sigma / inflation);
 }
 
 }  // namespace identify

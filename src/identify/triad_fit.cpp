@@ -36,14 +36,13 @@ void flag_worst_axis(TriadFit* triad) {
   triad->worst_axis_reason = reason.str();
 }
 
-TriadFit fit_triad(SensorKind sensor,
-                   const std::array<std::vector<allan::StabilityPoint>, 3>& curves, double tau0_s,
+TriadFit fit_triad(SensorKind sensor, const std::array<std::vector<allan::StabilityPoint>, 3>& curves, double tau0_s,
                    double record_length_s, const FitOptions& options) {
   return fit_triad(sensor, curves, tau0_s, record_length_s, std::array<FitOptions, 3>{options, options, options});
 }
 
-TriadFit fit_triad(SensorKind sensor, const std::array<std::vector<allan::StabilityPoint>, 3>& curves,
-                   double tau0_s, double record_length_s, const std::array<FitOptions, 3>& options_per_axis) {
+TriadFit fit_triad(SensorKind sensor, const std::array<std::vector<allan::StabilityPoint>, 3>& curves, double tau0_s,
+                   double record_length_s, const std::array<FitOptions, 3>& options_per_axis) {
   TriadFit triad;
   triad.sensor = sensor;
   for (int axis = 0; axis < 3; ++axis) {

@@ -3,13 +3,9 @@
 namespace imu_lab {
 namespace identify {
 
-std::string sensor_prefix(SensorKind sensor) {
-  return sensor == SensorKind::kGyroscope ? "gyro" : "accel";
-}
+std::string sensor_prefix(SensorKind sensor) { return sensor == SensorKind::kGyroscope ? "gyro" : "accel"; }
 
-std::string rate_unit_key(SensorKind sensor) {
-  return sensor == SensorKind::kGyroscope ? "rad_s" : "m_s2";
-}
+std::string rate_unit_key(SensorKind sensor) { return sensor == SensorKind::kGyroscope ? "rad_s" : "m_s2"; }
 
 namespace {
 using namespace units;
@@ -37,8 +33,7 @@ const std::vector<TermUnits>& unit_table() {
        {{"rad_s", 1.0}, {"deg_h", 1.0 / kDegPerHour_rad_s}},
        {{"m_s2", 1.0}, {"micro_g", 1.0 / kMicroG_m_s2}}},
       {TermKind::kRandomWalk,
-       {{"rad_s_per_sqrt_s", 1.0},
-        {"deg_h_per_sqrt_h", 1.0 / kDegPerHourPerSqrtHour_rad_s_per_sqrt_s}},
+       {{"rad_s_per_sqrt_s", 1.0}, {"deg_h_per_sqrt_h", 1.0 / kDegPerHourPerSqrtHour_rad_s_per_sqrt_s}},
        {{"m_s2_per_sqrt_s", 1.0},
         {"m_s_per_h_per_sqrt_h", kHour_s * kSqrtHour_sqrt_s},
         {"micro_g_per_sqrt_s", 1.0 / kMicroG_m_s2}}},
@@ -70,15 +65,13 @@ std::vector<UnitScale> amplitude_units(SensorKind sensor, TermKind kind) {
 std::vector<UnitScale> shape_units(TermKind kind) {
   switch (kind) {
     case TermKind::kMarkov:
-    case TermKind::kZeroDcFamily:
-      return {{"s", 1.0}};
+    case TermKind::kZeroDcFamily: return {{"s", 1.0}};
     case TermKind::kSinusoid:
     case TermKind::kBiasInstability:
     case TermKind::kResonance:
     case TermKind::kWhiteRate:  // the front end's corner
       return {{"hz", 1.0}};
-    default:
-      return {};
+    default: return {};
   }
 }
 

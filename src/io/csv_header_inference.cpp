@@ -77,7 +77,10 @@ std::optional<Unit> unit_named(const std::string& written) {
   } else if (is({"g"})) {
     unit.family = UnitFamily::kForce;
     unit.force = SpecificForceUnit::kStandardGravity;
-  } else if (is({"c", "degc", "deg c", "\xC2\xB0" "c", "celsius"})) {
+  } else if (is({"c", "degc", "deg c",
+                 "\xC2\xB0"
+                 "c",
+                 "celsius"})) {
     unit.family = UnitFamily::kTemperature;
   } else {
     return std::nullopt;
@@ -103,7 +106,8 @@ void split_unit(const std::string& field, Column& column) {
     for (const char* suffix : {"_rad_s", "_deg_s", "_m_s2", "_dps", "_degc", "_ns", "_us", "_ms", "_s", "_g", "_c"}) {
       const std::string ending = suffix;
       const std::string lowered = lower(name);
-      if (lowered.size() > ending.size() && lowered.compare(lowered.size() - ending.size(), ending.size(), ending) == 0) {
+      if (lowered.size() > ending.size() &&
+          lowered.compare(lowered.size() - ending.size(), ending.size(), ending) == 0) {
         if (const auto unit = unit_named(ending.substr(1))) {
           column.unit = *unit;
           name = name.substr(0, name.size() - ending.size());
@@ -124,7 +128,8 @@ void assign_role(Column& column) {
   const std::string& base = column.base;
   const UnitFamily family = column.unit.family;
   if (one_of(base, {"t", "time", "timestamp", "stamp", "time_stamp", "header_stamp"}) ||
-      (family == UnitFamily::kTime && (base.find("time") != std::string::npos || base.find("stamp") != std::string::npos))) {
+      (family == UnitFamily::kTime &&
+       (base.find("time") != std::string::npos || base.find("stamp") != std::string::npos))) {
     column.role = Role::kTime;
     return;
   }
@@ -139,10 +144,10 @@ void assign_role(Column& column) {
   std::string prefix = base.substr(0, base.size() - 1);
   if (!prefix.empty() && prefix.back() == '_') prefix.pop_back();
   column.axis = last - 'x';
-  const bool gyro_name = one_of(prefix, {"w", "w_rs_s", "gyro", "gyr", "gyroscope", "omega", "angular_velocity",
-                                         "angular_rate", "rate", "g"});
-  const bool accel_name = one_of(prefix, {"a", "a_rs_s", "acc", "accel", "accelerometer", "linear_acceleration",
-                                          "specific_force", "f"});
+  const bool gyro_name = one_of(
+      prefix, {"w", "w_rs_s", "gyro", "gyr", "gyroscope", "omega", "angular_velocity", "angular_rate", "rate", "g"});
+  const bool accel_name =
+      one_of(prefix, {"a", "a_rs_s", "acc", "accel", "accelerometer", "linear_acceleration", "specific_force", "f"});
   if ((gyro_name && family != UnitFamily::kForce) || (family == UnitFamily::kRate && !accel_name)) {
     column.role = Role::kGyro;
   } else if ((accel_name && family != UnitFamily::kRate) || (family == UnitFamily::kForce && !gyro_name)) {

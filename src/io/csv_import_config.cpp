@@ -62,13 +62,15 @@ CsvImportOptions parse_csv_import_options(const std::string& yaml_text, const st
   CsvImportOptions options = defaults;
   if (root.IsNull()) return options;
   check_keys(root, source, "", {"delimiter", "header", "decimal_comma", "time", "gyro", "accel", "temperature"});
-  if (root["delimiter"]) options.delimiter = parse_delimiter(scalar(root["delimiter"], source, "delimiter"), source, "delimiter");
+  if (root["delimiter"])
+    options.delimiter = parse_delimiter(scalar(root["delimiter"], source, "delimiter"), source, "delimiter");
   if (root["header"]) options.has_header = boolean(root["header"], source, "header");
   if (root["decimal_comma"]) options.decimal_comma = boolean(root["decimal_comma"], source, "decimal_comma");
   if (const YAML::Node time = root["time"]) {
     check_keys(time, source, "time", {"column", "unit", "offset_s"});
     if (time["column"]) options.time_column = scalar(time["column"], source, "time.column");
-    if (time["unit"]) options.time_unit = parse_time_unit(scalar(time["unit"], source, "time.unit"), source, "time.unit");
+    if (time["unit"])
+      options.time_unit = parse_time_unit(scalar(time["unit"], source, "time.unit"), source, "time.unit");
     options.given.columns |= bool(time["column"]);
     options.given.time_unit |= bool(time["unit"]);
     options.given.time_offset |= bool(time["offset_s"]);
@@ -80,7 +82,8 @@ CsvImportOptions parse_csv_import_options(const std::string& yaml_text, const st
   if (const YAML::Node gyro = root["gyro"]) {
     check_keys(gyro, source, "gyro", {"columns", "unit"});
     if (gyro["columns"]) read_triad(gyro["columns"], source, "gyro.columns", options.gyro_columns);
-    if (gyro["unit"]) options.gyro_unit = parse_angular_rate_unit(scalar(gyro["unit"], source, "gyro.unit"), source, "gyro.unit");
+    if (gyro["unit"])
+      options.gyro_unit = parse_angular_rate_unit(scalar(gyro["unit"], source, "gyro.unit"), source, "gyro.unit");
     options.given.columns |= bool(gyro["columns"]);
     options.given.gyro_unit |= bool(gyro["unit"]);
   }

@@ -51,7 +51,8 @@ void write_imu_csv_row(std::ostream& out, const ImuCsvSample& sample, const CsvE
   out << stamp;
   const double gyro_per_si = 1.0 / to_rad_s(options.gyro_unit);
   const double accel_per_si = 1.0 / to_m_s2(options.accel_unit);
-  for (int axis = 0; axis < 3; ++axis) write_value(out, options.delimiter, sample.angular_rate_rad_s[axis] * gyro_per_si);
+  for (int axis = 0; axis < 3; ++axis)
+    write_value(out, options.delimiter, sample.angular_rate_rad_s[axis] * gyro_per_si);
   for (int axis = 0; axis < 3; ++axis) {
     write_value(out, options.delimiter, sample.specific_force_m_s2[axis] * accel_per_si);
   }

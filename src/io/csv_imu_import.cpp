@@ -79,7 +79,6 @@ int unit_exponent_to_ns(TimeUnit unit) {
   return 0;
 }
 
-
 bool is_column_number(const std::string& spec) {
   return !spec.empty() && std::all_of(spec.begin(), spec.end(), [](unsigned char c) { return std::isdigit(c); });
 }
@@ -123,13 +122,14 @@ ColumnIndices resolve_columns(const std::string& source, const CsvImportOptions&
   columns.time = resolve_column(source, options.time_column, "time_column", header, options.has_header);
   const char* axes[] = {"x", "y", "z"};
   for (int i = 0; i < 3; ++i) {
-    columns.gyro[i] =
-        resolve_column(source, options.gyro_columns[i], std::string("gyro_columns.") + axes[i], header, options.has_header);
+    columns.gyro[i] = resolve_column(source, options.gyro_columns[i], std::string("gyro_columns.") + axes[i], header,
+                                     options.has_header);
     columns.accel[i] = resolve_column(source, options.accel_columns[i], std::string("accel_columns.") + axes[i], header,
                                       options.has_header);
   }
   if (!options.temperature_column.empty()) {
-    columns.temperature = resolve_column(source, options.temperature_column, "temperature_column", header, options.has_header);
+    columns.temperature =
+        resolve_column(source, options.temperature_column, "temperature_column", header, options.has_header);
   }
   columns.highest = std::max({columns.time, columns.gyro[0], columns.gyro[1], columns.gyro[2], columns.accel[0],
                               columns.accel[1], columns.accel[2], columns.temperature.value_or(0)});
@@ -209,7 +209,8 @@ class RowParser {
   void header(std::string_view line) {
     const auto fields = split(line, options_.delimiter);
     bool all_numbers = true;
-    for (const auto& field : fields) all_numbers = all_numbers && parse_number(field, options_.decimal_comma).problem.empty();
+    for (const auto& field : fields)
+      all_numbers = all_numbers && parse_number(field, options_.decimal_comma).problem.empty();
     if (all_numbers) {
       throw ConfigError(source_, "header",
                         "line " + std::to_string(summary_.lines) +
@@ -237,8 +238,8 @@ class RowParser {
       expect_fields(fields.size(), "line " + std::to_string(summary_.lines));
     }
     if (fields.size() != expected_fields_) {
-      std::string reason = std::to_string(fields.size()) + (fields.size() == 1 ? " field" : " fields") +
-                           ", expected " + std::to_string(expected_fields_) + " as in " + expected_from_;
+      std::string reason = std::to_string(fields.size()) + (fields.size() == 1 ? " field" : " fields") + ", expected " +
+                           std::to_string(expected_fields_) + " as in " + expected_from_;
       if (fields.size() == 1 && options_.delimiter != ';' && line.find(';') != std::string_view::npos) {
         reason += " (is the delimiter ';'?)";
       } else if (fields.size() == 1 && options_.delimiter != '\t' && line.find('\t') != std::string_view::npos) {
@@ -250,8 +251,9 @@ class RowParser {
     std::string time_text(fields[columns_->time]);
     if (options_.decimal_comma) std::replace(time_text.begin(), time_text.end(), ',', '.');
     const auto stamp = parse_decimal_time_ns(time_text, options_.time_unit);
-    if (!stamp) return reject(column_label(summary_.header, columns_->time) + ": '" +
-                              std::string(fields[columns_->time]) + "' is not a time");
+    if (!stamp)
+      return reject(column_label(summary_.header, columns_->time) + ": '" + std::string(fields[columns_->time]) +
+                    "' is not a time");
     if (!add_offset(*stamp, sample.stamp_ns)) return;
     for (int i = 0; i < 3; ++i) {
       if (!read_value(fields, columns_->gyro[i], to_rad_s(options_.gyro_unit), sample.angular_rate_rad_s[i])) return;
@@ -271,8 +273,9 @@ class RowParser {
     }
     if (summary_.accepted_rows > 0 && sample.stamp_ns <= summary_.last_stamp_ns) {
       // In the file's own times (without the offset), which the user can find in it.
-      return reject("time " + format_stamp_s(sample.stamp_ns - *offset_ns_) + " s is not after the previous good row's " +
-                    format_stamp_s(summary_.last_stamp_ns - *offset_ns_) + " s");
+      return reject("time " + format_stamp_s(sample.stamp_ns - *offset_ns_) +
+                    " s is not after the previous good row's " + format_stamp_s(summary_.last_stamp_ns - *offset_ns_) +
+                    " s");
     }
     if (summary_.accepted_rows == 0) summary_.first_stamp_ns = sample.stamp_ns;
     summary_.last_stamp_ns = sample.stamp_ns;
@@ -352,11 +355,13 @@ std::string format_stamp_s(std::int64_t stamp_ns) {
 }
 
 AngularRateUnit parse_angular_rate_unit(const std::string& name, const std::string& source, const std::string& key) {
-  return parse_name<AngularRateUnit>(name, source, key, "angular-rate unit",
-                                     {{"rad_s", AngularRateUnit::kRadPerSecond}, {"deg_s", AngularRateUnit::kDegreePerSecond}});
+  return parse_name<AngularRateUnit>(
+      name, source, key, "angular-rate unit",
+      {{"rad_s", AngularRateUnit::kRadPerSecond}, {"deg_s", AngularRateUnit::kDegreePerSecond}});
 }
 
-SpecificForceUnit parse_specific_force_unit(const std::string& name, const std::string& source, const std::string& key) {
+SpecificForceUnit parse_specific_force_unit(const std::string& name, const std::string& source,
+                                            const std::string& key) {
   return parse_name<SpecificForceUnit>(
       name, source, key, "specific-force unit",
       {{"m_s2", SpecificForceUnit::kMeterPerSecondSquared}, {"g", SpecificForceUnit::kStandardGravity}});
@@ -411,7 +416,8 @@ std::optional<std::int64_t> parse_decimal_time_ns(const std::string& text, TimeU
   std::string digits;
   int fraction_digits = 0;
   bool seen_point = false;
-  while (!rest.empty() && (std::isdigit(static_cast<unsigned char>(rest.front())) || (rest.front() == '.' && !seen_point))) {
+  while (!rest.empty() &&
+         (std::isdigit(static_cast<unsigned char>(rest.front())) || (rest.front() == '.' && !seen_point))) {
     if (rest.front() == '.') {
       seen_point = true;
     } else {

@@ -52,8 +52,7 @@ std::string format_stability_csv(const std::vector<ChannelCurve>& channels) {
       }
       const allan::StabilityPoint& p = *found->second;
       out << ',' << format_number(p.deviation) << ',' << format_number(p.deviation_lower) << ','
-          << format_number(p.deviation_upper) << ',' << format_number(p.edf) << ',' << p.term_count << ','
-          << p.alpha;
+          << format_number(p.deviation_upper) << ',' << format_number(p.edf) << ',' << p.term_count << ',' << p.alpha;
     }
     out << '\n';
   }

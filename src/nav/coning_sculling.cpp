@@ -5,8 +5,7 @@
 namespace imu_lab {
 namespace nav {
 
-ConingScullingCompensator::ConingScullingCompensator(const ConingScullingConfig& config)
-    : config_(config) {}
+ConingScullingCompensator::ConingScullingCompensator(const ConingScullingConfig& config) : config_(config) {}
 
 CompensatedIncrement ConingScullingCompensator::compensate(const ImuIncrement& increment) {
   const Eigen::Vector3d& angle = increment.delta_angle_rad;
@@ -19,8 +18,7 @@ CompensatedIncrement ConingScullingCompensator::compensate(const ImuIncrement& i
   out.delta_velocity_m_s = velocity + 0.5 * angle.cross(velocity);
   if (config_.sculling_correction) {
     out.delta_velocity_m_s +=
-        (previous_delta_angle_rad_.cross(velocity) + previous_delta_velocity_m_s_.cross(angle)) /
-        12.0;
+        (previous_delta_angle_rad_.cross(velocity) + previous_delta_velocity_m_s_.cross(angle)) / 12.0;
   }
   previous_delta_angle_rad_ = angle;
   previous_delta_velocity_m_s_ = velocity;

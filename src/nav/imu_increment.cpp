@@ -19,7 +19,7 @@ void validate_increment(const ImuIncrement& increment) {
 }
 
 ImuIncrement increment_from_mean_rates(const Eigen::Vector3d& mean_angular_rate_rad_s,
-                                    const Eigen::Vector3d& mean_specific_force_m_s2, double dt_s) {
+                                       const Eigen::Vector3d& mean_specific_force_m_s2, double dt_s) {
   ImuIncrement increment;
   increment.delta_angle_rad = mean_angular_rate_rad_s * dt_s;
   increment.delta_velocity_m_s = mean_specific_force_m_s2 * dt_s;

@@ -19,9 +19,9 @@ LocalEnuFrame::LocalEnuFrame(const nav::EarthModelConfig& earth, double origin_l
   const double cos_lat = std::cos(origin_latitude_rad);
   const double sin_lon = std::sin(origin_longitude_rad);
   const double cos_lon = std::cos(origin_longitude_rad);
-  earth_centred_to_enu_ << -sin_lon, cos_lon, 0.0,                          // east
-      -sin_lat * cos_lon, -sin_lat * sin_lon, cos_lat,                      // north
-      cos_lat * cos_lon, cos_lat * sin_lon, sin_lat;                        // up
+  earth_centred_to_enu_ << -sin_lon, cos_lon, 0.0,      // east
+      -sin_lat * cos_lon, -sin_lat * sin_lon, cos_lat,  // north
+      cos_lat * cos_lon, cos_lat * sin_lon, sin_lat;    // up
 }
 
 Eigen::Vector3d LocalEnuFrame::earth_centred_m(double latitude_rad, double longitude_rad, double height_m) const {

@@ -29,8 +29,8 @@ std::string state_problem(const NavState& state) {
            "the poles";
   }
   if (!(std::abs(state.height_m) <= kMaxAbsoluteHeight_m)) {
-    return "height " + format_number(state.height_m, 4) + " m is beyond +-" + format_number(kMaxAbsoluteHeight_m / 1e3, 4) +
-           " km";
+    return "height " + format_number(state.height_m, 4) + " m is beyond +-" +
+           format_number(kMaxAbsoluteHeight_m / 1e3, 4) + " km";
   }
   return "";
 }
@@ -50,8 +50,8 @@ void Navigator::initialise(const NavState& initial_state) {
   initialised_ = true;
 }
 
-const NavState& Navigator::update(const Eigen::Vector3d& delta_angle_rad,
-                                  const Eigen::Vector3d& delta_velocity_m_s, double dt_s) {
+const NavState& Navigator::update(const Eigen::Vector3d& delta_angle_rad, const Eigen::Vector3d& delta_velocity_m_s,
+                                  double dt_s) {
   ImuIncrement increment;
   increment.delta_angle_rad = delta_angle_rad;
   increment.delta_velocity_m_s = delta_velocity_m_s;
@@ -81,34 +81,28 @@ const NavState& Navigator::update(const ImuIncrement& increment) {
   const Eigen::Vector3d gravity(0.0, 0.0, -earth_.gravity_m_s2(old.latitude_rad, old.height_m));
   const Eigen::Vector3d coriolis = -(2.0 * earth_rate + transport_rate).cross(old.velocity_enu_m_s);
   state_.velocity_enu_m_s = old.velocity_enu_m_s + specific_force_dv -
-                            0.5 * nav_rotation_start.cross(raw_specific_force_dv) +
-                            (gravity + coriolis) * dt;
+                            0.5 * nav_rotation_start.cross(raw_specific_force_dv) + (gravity + coriolis) * dt;
 
   // Position: trapezoidal velocity; radii at mid-interval height and latitude.
   const Eigen::Vector3d mean_velocity = 0.5 * (old.velocity_enu_m_s + state_.velocity_enu_m_s);
   state_.height_m = old.height_m + mean_velocity.z() * dt;
   const double mid_height = 0.5 * (old.height_m + state_.height_m);
   state_.latitude_rad =
-      old.latitude_rad +
-      mean_velocity.y() / (earth_.meridian_radius_m(old.latitude_rad) + mid_height) * dt;
+      old.latitude_rad + mean_velocity.y() / (earth_.meridian_radius_m(old.latitude_rad) + mid_height) * dt;
   const double mid_latitude = 0.5 * (old.latitude_rad + state_.latitude_rad);
   state_.longitude_rad = wrap_longitude(
       old.longitude_rad +
-      mean_velocity.x() /
-          ((earth_.prime_vertical_radius_m(mid_latitude) + mid_height) * std::cos(mid_latitude)) *
-          dt);
+      mean_velocity.x() / ((earth_.prime_vertical_radius_m(mid_latitude) + mid_height) * std::cos(mid_latitude)) * dt);
   const VerticalCorrection height_loop = vertical_.feedback(old.height_m, dt);
   state_.height_m += height_loop.height_m;
   state_.velocity_enu_m_s.z() += height_loop.up_velocity_m_s;
 
   // Attitude: nav frame rotation at mid-interval, which also keeps the Schuler loop from
   // gaining energy through the explicit velocity step above.
-  const Eigen::Vector3d nav_rotation_mid =
-      (earth_.earth_rate_enu_rad_s(mid_latitude) +
-       earth_.transport_rate_enu_rad_s(mean_velocity, mid_latitude, mid_height)) *
-      dt;
-  state_.q_body_to_enu =
-      propagate_attitude(old.q_body_to_enu, body.rotation_vector_rad, nav_rotation_mid);
+  const Eigen::Vector3d nav_rotation_mid = (earth_.earth_rate_enu_rad_s(mid_latitude) +
+                                            earth_.transport_rate_enu_rad_s(mean_velocity, mid_latitude, mid_height)) *
+                                           dt;
+  state_.q_body_to_enu = propagate_attitude(old.q_body_to_enu, body.rotation_vector_rad, nav_rotation_mid);
   state_.stamp_s = old.stamp_s + dt;
   const std::string problem = state_problem(state_);
   if (!problem.empty()) {

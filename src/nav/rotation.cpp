@@ -16,11 +16,9 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
 Eigen::Quaterniond quaternion_from_rotation_vector(const Eigen::Vector3d& rotation_vector_rad) {
   const double angle = rotation_vector_rad.norm();
   // sin(angle/2)/angle is 0/0 at zero: use its series where the direct form loses digits.
-  const double sin_half_over_angle =
-      angle < 1e-4 ? 0.5 - angle * angle / 48.0 : std::sin(0.5 * angle) / angle;
+  const double sin_half_over_angle = angle < 1e-4 ? 0.5 - angle * angle / 48.0 : std::sin(0.5 * angle) / angle;
   const Eigen::Vector3d vector_part = sin_half_over_angle * rotation_vector_rad;
-  return Eigen::Quaterniond(std::cos(0.5 * angle), vector_part.x(), vector_part.y(),
-                            vector_part.z());
+  return Eigen::Quaterniond(std::cos(0.5 * angle), vector_part.x(), vector_part.y(), vector_part.z());
 }
 
 Eigen::Vector3d rotation_vector_from_quaternion(const Eigen::Quaterniond& rotation) {
@@ -33,12 +31,11 @@ Eigen::Vector3d rotation_vector_from_quaternion(const Eigen::Quaterniond& rotati
 }
 
 Eigen::Quaterniond propagate_attitude(const Eigen::Quaterniond& q_body_to_nav,
-                                     const Eigen::Vector3d& body_rotation_vector_rad,
-                                     const Eigen::Vector3d& nav_rotation_vector_rad) {
+                                      const Eigen::Vector3d& body_rotation_vector_rad,
+                                      const Eigen::Vector3d& nav_rotation_vector_rad) {
   // C(k) = C_{n(k-1)}^{n(k)} C(k-1) C_{b(k)}^{b(k-1)}; the nav frame turning by +zeta moves
   // fixed vectors' coordinates by -zeta.
-  Eigen::Quaterniond updated = quaternion_from_rotation_vector(-nav_rotation_vector_rad) *
-                               q_body_to_nav *
+  Eigen::Quaterniond updated = quaternion_from_rotation_vector(-nav_rotation_vector_rad) * q_body_to_nav *
                                quaternion_from_rotation_vector(body_rotation_vector_rad);
   updated.normalize();
   return updated;

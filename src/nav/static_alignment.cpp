@@ -33,13 +33,11 @@ void StaticAligner::add(const ImuIncrement& increment) {
 }
 
 Eigen::Vector3d StaticAligner::mean_angular_rate_rad_s() const {
-  return accumulated_s_ > 0.0 ? Eigen::Vector3d(sum_delta_angle_rad_ / accumulated_s_)
-                              : Eigen::Vector3d::Zero();
+  return accumulated_s_ > 0.0 ? Eigen::Vector3d(sum_delta_angle_rad_ / accumulated_s_) : Eigen::Vector3d::Zero();
 }
 
 Eigen::Vector3d StaticAligner::mean_specific_force_m_s2() const {
-  return accumulated_s_ > 0.0 ? Eigen::Vector3d(sum_delta_velocity_m_s_ / accumulated_s_)
-                              : Eigen::Vector3d::Zero();
+  return accumulated_s_ > 0.0 ? Eigen::Vector3d(sum_delta_velocity_m_s_ / accumulated_s_) : Eigen::Vector3d::Zero();
 }
 
 Eigen::Quaterniond StaticAligner::attitude() const {
@@ -72,8 +70,7 @@ Eigen::Quaterniond StaticAligner::gyrocompassed(const Eigen::Vector3d& f) const 
   const Eigen::Vector3d up = f.normalized();
   const Eigen::Vector3d east_unnormalised = mean_angular_rate_rad_s().cross(up);
   if (east_unnormalised.norm() < kMinHorizontalRate_rad_s) {
-    throw InputError("nav alignment: horizontal Earth rate is " +
-                     std::to_string(east_unnormalised.norm()) +
+    throw InputError("nav alignment: horizontal Earth rate is " + std::to_string(east_unnormalised.norm()) +
                      " rad/s, too small to gyrocompass (near a pole, or gyros too noisy); set "
                      "alignment heading_source to given and supply given_yaw_rad");
   }

@@ -11,16 +11,15 @@ VerticalLoopGains critically_damped_vertical_gains(double time_constant_s, doubl
   if (!(time_constant_s > 0.0)) {
     throw ConfigError("nav", "vertical.time_constant_s", "must be a positive number of seconds");
   }
-  return {-2.0 / time_constant_s, -1.0 / (time_constant_s * time_constant_s) -
-                                      2.0 * schuler_rate_rad_s * schuler_rate_rad_s};
+  return {-2.0 / time_constant_s,
+          -1.0 / (time_constant_s * time_constant_s) - 2.0 * schuler_rate_rad_s * schuler_rate_rad_s};
 }
 
 VerticalChannel::VerticalChannel(const VerticalChannelConfig& config)
     : config_(config), reference_height_m_(config.fixed_reference_height_m) {
   if (config_.mode == VerticalChannelMode::kHeld) {
     if (!(config_.k1_per_s < 0.0)) {
-      throw ConfigError("nav", "vertical.k1_per_s",
-                        "must be negative for a stable height loop (Fomichev 2022 eq. 37)");
+      throw ConfigError("nav", "vertical.k1_per_s", "must be negative for a stable height loop (Fomichev 2022 eq. 37)");
     }
     if (!(config_.k2_per_s2 < 0.0)) {
       throw ConfigError("nav", "vertical.k2_per_s2",

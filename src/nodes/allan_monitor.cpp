@@ -6,9 +6,10 @@
 #include "imu_lab/ros_io/node/allan_monitor_node.h"
 
 int main(int argc, char** argv) {
-  return imu_lab::ros_io::run_node_main(argc, argv, "allan_monitor", [](ros::NodeHandle& node, ros::NodeHandle& private_node) {
-    imu_lab::ros_io::AllanMonitorNode monitor(node, private_node);
-    ros::spin();
-    monitor.finish();
-  });
+  return imu_lab::ros_io::run_node_main(argc, argv, "allan_monitor",
+                                        [](ros::NodeHandle& node, ros::NodeHandle& private_node) {
+                                          imu_lab::ros_io::AllanMonitorNode monitor(node, private_node);
+                                          ros::spin();
+                                          monitor.finish();
+                                        });
 }

@@ -61,8 +61,7 @@ double sinusoid_avar(double amplitude, double frequency_hz, double tau) {
   return amplitude * amplitude * std::pow(s * s / x, 2.0);
 }
 
-double stationary_angle_avar(double covariance_0, double covariance_tau, double covariance_2tau,
-                             double tau) {
+double stationary_angle_avar(double covariance_0, double covariance_tau, double covariance_2tau, double tau) {
   return (3.0 * covariance_0 - 4.0 * covariance_tau + covariance_2tau) / (tau * tau);
 }
 
@@ -75,9 +74,7 @@ void require_exponent_above_one(double n, const char* family) {
 
 // Re (beta - i omega)^(1 - n): the Laplace-Fourier integral
 // int_0^inf f^(n-2) e^{-beta f} cos(omega f) df = Gamma(n - 1) Re (beta - i omega)^(1 - n).
-double real_power(double beta, double omega, double n) {
-  return std::pow(Complex(beta, -omega), 1.0 - n).real();
-}
+double real_power(double beta, double omega, double n) { return std::pow(Complex(beta, -omega), 1.0 - n).real(); }
 
 // Kummer's 1F1(a; 1/2; -z), z >= 0. Beyond z = 40 the large-argument expansion (DLMF 13.7.2)
 // Gamma(1/2) / Gamma(1/2 - a) z^(-a) sum_s (a)_s (a + 1/2)_s / (s! z^s), summed to its smallest
@@ -112,14 +109,12 @@ double zero_dc_family_avar(double n, double alpha, double beta, double tau) {
   if (n == 1.0) {  // table 7.2, first row (the angle variance diverges, the AVAR does not)
     const double a = beta * beta + 4.0 * kPi * kPi * tau * tau;
     const double c = beta * beta + 16.0 * kPi * kPi * tau * tau;
-    return -alpha / (4.0 * kPi * kPi * tau * tau) *
-           (std::log(c) - 4.0 * std::log(a) + 6.0 * std::log(beta));
+    return -alpha / (4.0 * kPi * kPi * tau * tau) * (std::log(c) - 4.0 * std::log(a) + 6.0 * std::log(beta));
   }
   if (!(n > 1.0)) throw std::invalid_argument("zero_dc_family_avar: n must be >= 1");
   // = table 7.1 row 1: alpha Gamma(n-1) / (2 pi^2 tau^2) Re[3 beta^(1-n)
   //   - 4 (beta - 2 i pi tau)^(1-n) + (beta - 4 i pi tau)^(1-n)]
-  return avar_of_angle(
-      [&](double lag) { return zero_dc_family_angle_covariance(n, alpha, beta, lag); }, tau);
+  return avar_of_angle([&](double lag) { return zero_dc_family_angle_covariance(n, alpha, beta, lag); }, tau);
 }
 
 double zero_dc_cosine_angle_covariance(double n, double alpha, double beta, double c, double lag) {
@@ -130,8 +125,7 @@ double zero_dc_cosine_angle_covariance(double n, double alpha, double beta, doub
 }
 
 double zero_dc_cosine_avar(double n, double alpha, double beta, double c, double tau) {
-  return avar_of_angle(
-      [&](double lag) { return zero_dc_cosine_angle_covariance(n, alpha, beta, c, lag); }, tau);
+  return avar_of_angle([&](double lag) { return zero_dc_cosine_angle_covariance(n, alpha, beta, c, lag); }, tau);
 }
 
 double zero_dc_gaussian_angle_covariance(double n, double alpha, double beta_s2, double lag) {
@@ -145,8 +139,7 @@ double zero_dc_gaussian_angle_covariance(double n, double alpha, double beta_s2,
 }
 
 double zero_dc_gaussian_avar(double n, double alpha, double beta_s2, double tau) {
-  return avar_of_angle(
-      [&](double lag) { return zero_dc_gaussian_angle_covariance(n, alpha, beta_s2, lag); }, tau);
+  return avar_of_angle([&](double lag) { return zero_dc_gaussian_angle_covariance(n, alpha, beta_s2, lag); }, tau);
 }
 
 double high_pass_white_angle_covariance(double alpha, double beta_hz, double lag) {
@@ -173,8 +166,7 @@ double resonance_angle_correlation(double natural_frequency_hz, double width_hz,
   const double zeta = width_hz / (2.0 * natural_frequency_hz);
   const double root = std::sqrt(1.0 - zeta * zeta);
   const double u = std::abs(lag_s);
-  return std::exp(-zeta * omega_n * u) *
-         (std::cos(omega_n * root * u) + zeta / root * std::sin(omega_n * root * u));
+  return std::exp(-zeta * omega_n * u) * (std::cos(omega_n * root * u) + zeta / root * std::sin(omega_n * root * u));
 }
 
 double resonance_avar(double rms, double natural_frequency_hz, double width_hz, double tau) {

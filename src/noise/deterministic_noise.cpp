@@ -15,9 +15,7 @@ double RateRampNoise::next_interval_average(double start_s, double interval_s) {
   return slope_ * (start_s + 0.5 * interval_s);  // a linear rate averages to its midpoint
 }
 
-double RateRampNoise::allan_variance(double tau_s, double) const {
-  return rate_ramp_avar(slope_, tau_s);
-}
+double RateRampNoise::allan_variance(double tau_s, double) const { return rate_ramp_avar(slope_, tau_s); }
 
 double SinusoidNoise::next_interval_average(double start_s, double interval_s) {
   // (cos(a) - cos(a + w h)) / (w h) written without the cancellation of the difference.

@@ -7,7 +7,6 @@
 
 #include <Eigen/Dense>
 
-
 #include "imu_lab/noise/analytic_avar.h"
 
 namespace imu_lab {
@@ -99,8 +98,7 @@ double flicker_bank_avar(const FlickerBankDesign& design, double tau_s) {
   return sum;
 }
 
-FlickerBankNoise::FlickerBankNoise(const BiasInstabilityParameters& parameters,
-                                   NormalStream normals)
+FlickerBankNoise::FlickerBankNoise(const BiasInstabilityParameters& parameters, NormalStream normals)
     : design_(design_flicker_bank(parameters)), normals_(normals) {
   for (size_t j = 0; j < design_.corner_frequencies_hz.size(); ++j) {
     poles_.emplace_back(kTwoPi * design_.corner_frequencies_hz[j], design_.drive_densities[j]);
@@ -118,9 +116,7 @@ double FlickerBankNoise::next_interval_average(double, double interval_s) {
   return integral / interval_s;
 }
 
-double FlickerBankNoise::allan_variance(double tau_s, double) const {
-  return flicker_bank_avar(design_, tau_s);
-}
+double FlickerBankNoise::allan_variance(double tau_s, double) const { return flicker_bank_avar(design_, tau_s); }
 
 double FlickerBankNoise::sample_variance(double interval_s) const {
   double sum = 0.0;

@@ -10,14 +10,13 @@ namespace {
 constexpr double kTwoPi = 6.28318530717958647692;
 }
 
-GaussMarkovNoise::GaussMarkovNoise(double decay_rate_per_s, double drive_density,
-                                   NormalStream normals, std::string kind)
+GaussMarkovNoise::GaussMarkovNoise(double decay_rate_per_s, double drive_density, NormalStream normals,
+                                   std::string kind)
     : propagator_(decay_rate_per_s, drive_density), normals_(normals), kind_(std::move(kind)) {
   if (decay_rate_per_s > 0.0) state_ = std::sqrt(propagator_.stationary_variance()) * normals_.next();
 }
 
-GaussMarkovNoise GaussMarkovNoise::markov(double q_c, double correlation_time_s,
-                                          NormalStream normals) {
+GaussMarkovNoise GaussMarkovNoise::markov(double q_c, double correlation_time_s, NormalStream normals) {
   return GaussMarkovNoise(1.0 / correlation_time_s, q_c, normals, "markov");
 }
 
@@ -25,8 +24,7 @@ GaussMarkovNoise GaussMarkovNoise::random_walk(double density, NormalStream norm
   return GaussMarkovNoise(0.0, density, normals, "random_walk");
 }
 
-GaussMarkovNoise GaussMarkovNoise::band_limited_white(double density, double bandwidth_hz,
-                                                      NormalStream normals) {
+GaussMarkovNoise GaussMarkovNoise::band_limited_white(double density, double bandwidth_hz, NormalStream normals) {
   const double decay_rate = kTwoPi * bandwidth_hz;
   return GaussMarkovNoise(decay_rate, density * decay_rate, normals, "band_limited_white_rate");
 }

@@ -48,8 +48,7 @@ void IntegratedGaussMarkov::prepare(double h) {
 
 double IntegratedGaussMarkov::advance(double& state, double h, double normal_1, double normal_2) {
   prepare(h);
-  const double integral =
-      integral_gain_ * state + chol_cross_ * normal_1 + chol_integral_ * normal_2;
+  const double integral = integral_gain_ * state + chol_cross_ * normal_1 + chol_integral_ * normal_2;
   state = state_gain_ * state + chol_state_ * normal_1;
   return integral;
 }

@@ -15,17 +15,16 @@ namespace imu_lab {
 namespace noise {
 
 std::string process_kind(const ProcessParameters& parameters) {
-  static const char* const kNames[] = {"white_rate", "bias_instability", "random_walk",
-                                       "rate_ramp",  "markov",           "sinusoid",
-                                       "white_angle", "zero_dc_family",   "resonance",
-                                       "high_pass_white", "zero_dc_gaussian"};
+  static const char* const kNames[] = {"white_rate", "bias_instability", "random_walk",     "rate_ramp",
+                                       "markov",     "sinusoid",         "white_angle",     "zero_dc_family",
+                                       "resonance",  "high_pass_white",  "zero_dc_gaussian"};
   static_assert(std::variant_size_v<ProcessParameters> == sizeof(kNames) / sizeof(kNames[0]),
                 "one name per parameter type");
   return kNames[parameters.index()];
 }
 
-std::unique_ptr<NoiseProcess> make_noise_process(const ProcessParameters& parameters,
-                                                 std::uint64_t seed, double bandwidth_hz) {
+std::unique_ptr<NoiseProcess> make_noise_process(const ProcessParameters& parameters, std::uint64_t seed,
+                                                 double bandwidth_hz) {
   NormalStream normals(seed);
   return std::visit(
       [&](const auto& p) -> std::unique_ptr<NoiseProcess> {
@@ -39,8 +38,7 @@ std::unique_ptr<NoiseProcess> make_noise_process(const ProcessParameters& parame
         } else if constexpr (std::is_same_v<T, BiasInstabilityParameters>) {
           return std::make_unique<FlickerBankNoise>(p, normals);
         } else if constexpr (std::is_same_v<T, RandomWalkParameters>) {
-          return std::make_unique<GaussMarkovNoise>(
-              GaussMarkovNoise::random_walk(p.density_per_sqrt_s, normals));
+          return std::make_unique<GaussMarkovNoise>(GaussMarkovNoise::random_walk(p.density_per_sqrt_s, normals));
         } else if constexpr (std::is_same_v<T, RateRampParameters>) {
           return std::make_unique<RateRampNoise>(p);
         } else if constexpr (std::is_same_v<T, MarkovParameters>) {
@@ -50,8 +48,7 @@ std::unique_ptr<NoiseProcess> make_noise_process(const ProcessParameters& parame
           return std::make_unique<SinusoidNoise>(p);
         } else if constexpr (std::is_same_v<T, WhiteAngleParameters>) {
           return std::make_unique<WhiteAngleNoise>(p, normals);
-        } else if constexpr (std::is_same_v<T, ZeroDcFamilyParameters> ||
-                             std::is_same_v<T, ZeroDcGaussianParameters>) {
+        } else if constexpr (std::is_same_v<T, ZeroDcFamilyParameters> || std::is_same_v<T, ZeroDcGaussianParameters>) {
           return std::make_unique<ZeroDcNoise>(p, normals);
         } else if constexpr (std::is_same_v<T, ResonanceParameters>) {
           return std::make_unique<ResonanceNoise>(p, normals);

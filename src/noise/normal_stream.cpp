@@ -28,9 +28,7 @@ std::uint64_t stream_seed(std::uint64_t seed, const std::string& stream_name) {
   return mix64(seed ^ fnv1a(stream_name));
 }
 
-double NormalStream::next_uniform() {
-  return static_cast<double>(engine_() >> 11) * 0x1.0p-53;
-}
+double NormalStream::next_uniform() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
 
 double NormalStream::next() {
   if (has_spare_) {

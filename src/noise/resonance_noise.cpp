@@ -34,8 +34,8 @@ void ResonanceNoise::prepare(double h) {
   const double omega_d = omega_n * std::sqrt(1.0 - zeta * zeta);
   const double e = std::exp(-decay * h), c = std::cos(omega_d * h), s = std::sin(omega_d * h);
   // e^{A h}, A = [[0, 1], [-w_n^2, -2 zeta w_n]], underdamped.
-  transition_ << e * (c + decay / omega_d * s), e * s / omega_d,
-                 -e * omega_n * omega_n / omega_d * s, e * (c - decay / omega_d * s);
+  transition_ << e * (c + decay / omega_d * s), e * s / omega_d, -e * omega_n * omega_n / omega_d * s,
+      e * (c - decay / omega_d * s);
   Eigen::Matrix2d stationary = Eigen::Matrix2d::Zero();
   stationary(0, 0) = std::pow(parameters_.rms / omega_n, 2);
   stationary(1, 1) = parameters_.rms * parameters_.rms;
@@ -66,20 +66,17 @@ double ResonanceNoise::next_interval_average(double, double h) {
 }
 
 double ResonanceNoise::allan_variance(double tau_s, double) const {
-  return resonance_avar(parameters_.rms, parameters_.natural_frequency_hz, parameters_.width_hz,
-                        tau_s);
+  return resonance_avar(parameters_.rms, parameters_.natural_frequency_hz, parameters_.width_hz, tau_s);
 }
 
 double ResonanceNoise::sample_variance(double h) const {
   // Var((z(t+h) - z(t)) / h) = 2 sigma_z^2 (1 - rho(h)) / h^2
   const double sigma_z = parameters_.rms / (kTwoPi * parameters_.natural_frequency_hz);
-  const double rho = resonance_angle_correlation(parameters_.natural_frequency_hz,
-                                                 parameters_.width_hz, h);
+  const double rho = resonance_angle_correlation(parameters_.natural_frequency_hz, parameters_.width_hz, h);
   return 2.0 * sigma_z * sigma_z * (1.0 - rho) / (h * h);
 }
 
-HighPassWhiteNoise::HighPassWhiteNoise(const HighPassWhiteParameters& parameters,
-                                       NormalStream normals)
+HighPassWhiteNoise::HighPassWhiteNoise(const HighPassWhiteParameters& parameters, NormalStream normals)
     : parameters_(parameters),
       angle_propagator_(kTwoPi * parameters.corner_frequency_hz, parameters.density_per_sqrt_hz),
       normals_(normals) {
@@ -103,8 +100,8 @@ double HighPassWhiteNoise::allan_variance(double tau_s, double) const {
 double HighPassWhiteNoise::sample_variance(double h) const {
   const double alpha = parameters_.density_per_sqrt_hz * parameters_.density_per_sqrt_hz;
   const double f_c = parameters_.corner_frequency_hz;
-  return 2.0 * (high_pass_white_angle_covariance(alpha, f_c, 0.0) -
-                high_pass_white_angle_covariance(alpha, f_c, h)) / (h * h);
+  return 2.0 * (high_pass_white_angle_covariance(alpha, f_c, 0.0) - high_pass_white_angle_covariance(alpha, f_c, h)) /
+         (h * h);
 }
 
 }  // namespace noise

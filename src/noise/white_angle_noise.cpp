@@ -11,9 +11,8 @@ WhiteAngleNoise::WhiteAngleNoise(const WhiteAngleParameters& parameters, NormalS
     : parameters_(parameters), normals_(normals) {}
 
 double WhiteAngleNoise::per_sample_sigma(double interval_s) const {
-  return parameters_.density_per_sqrt_hz > 0.0
-             ? parameters_.density_per_sqrt_hz / std::sqrt(interval_s)
-             : parameters_.per_sample_sigma;
+  return parameters_.density_per_sqrt_hz > 0.0 ? parameters_.density_per_sqrt_hz / std::sqrt(interval_s)
+                                               : parameters_.per_sample_sigma;
 }
 
 double WhiteAngleNoise::next_interval_average(double, double interval_s) {

@@ -26,8 +26,8 @@ std::size_t next_power_of_two(double value) {
 }
 }  // namespace
 
-ZeroDcNoise::ZeroDcNoise(std::function<double(double)> angle_covariance, double time_scale_s,
-                         double echo_delay_s, std::string kind, NormalStream normals)
+ZeroDcNoise::ZeroDcNoise(std::function<double(double)> angle_covariance, double time_scale_s, double echo_delay_s,
+                         std::string kind, NormalStream normals)
     : angle_covariance_(std::move(angle_covariance)),
       time_scale_s_(time_scale_s),
       echo_delay_s_(echo_delay_s),
@@ -39,8 +39,7 @@ ZeroDcNoise::ZeroDcNoise(const ZeroDcFamilyParameters& p, NormalStream normals)
           [p](double lag) {
             double c = zero_dc_family_angle_covariance(p.exponent_n, p.alpha, p.beta_s, lag);
             if (p.cosine_weight != 0.0) {
-              c += p.cosine_weight *
-                   zero_dc_cosine_angle_covariance(p.exponent_n, p.alpha, p.beta_s, p.cosine_s, lag);
+              c += p.cosine_weight * zero_dc_cosine_angle_covariance(p.exponent_n, p.alpha, p.beta_s, p.cosine_s, lag);
             }
             return c;
           },
@@ -48,25 +47,20 @@ ZeroDcNoise::ZeroDcNoise(const ZeroDcFamilyParameters& p, NormalStream normals)
           p.beta_s / (2.0 * kPi), p.cosine_s / (2.0 * kPi), "zero_dc_family", normals) {
   if (!(p.exponent_n > 1.0) || !(p.alpha > 0.0) || !(p.beta_s > 0.0) || !(p.cosine_s >= 0.0) ||
       !(std::abs(p.cosine_weight) <= 1.0)) {
-    throw std::invalid_argument(
-        "zero_dc_family: need n > 1, alpha > 0, beta > 0, cosine_s >= 0, |cosine_weight| <= 1");
+    throw std::invalid_argument("zero_dc_family: need n > 1, alpha > 0, beta > 0, cosine_s >= 0, |cosine_weight| <= 1");
   }
 }
 
 ZeroDcNoise::ZeroDcNoise(const ZeroDcGaussianParameters& p, NormalStream normals)
-    : ZeroDcNoise(
-          [p](double lag) {
-            return zero_dc_gaussian_angle_covariance(p.exponent_n, p.alpha, p.beta_s2, lag);
-          },
-          std::sqrt(std::max(0.0, p.beta_s2)) / kPi, 0.0, "zero_dc_gaussian", normals) {
+    : ZeroDcNoise([p](double lag) { return zero_dc_gaussian_angle_covariance(p.exponent_n, p.alpha, p.beta_s2, lag); },
+                  std::sqrt(std::max(0.0, p.beta_s2)) / kPi, 0.0, "zero_dc_gaussian", normals) {
   if (!(p.exponent_n > 1.0) || !(p.alpha > 0.0) || !(p.beta_s2 > 0.0)) {
     throw std::invalid_argument("zero_dc_gaussian: need n > 1, alpha > 0, beta > 0");
   }
 }
 
 double ZeroDcNoise::analytic_avar(double tau_s) const {
-  return stationary_angle_avar(angle_covariance_(0.0), angle_covariance_(tau_s),
-                               angle_covariance_(2.0 * tau_s), tau_s);
+  return stationary_angle_avar(angle_covariance_(0.0), angle_covariance_(tau_s), angle_covariance_(2.0 * tau_s), tau_s);
 }
 
 void ZeroDcNoise::build_taps(double h, std::size_t half_width) {
@@ -94,8 +88,8 @@ double ZeroDcNoise::design_error(double h) const {
   double worst = 0.0;
   for (std::size_t m = 1; m <= 1000; m = m < 8 ? m + 1 : m + m / 8) {
     const double exact = analytic_avar(m * h);
-    const double generated = (3.0 * generated_covariance(0) - 4.0 * generated_covariance(m) +
-                              generated_covariance(2 * m)) / (m * h * m * h);
+    const double generated =
+        (3.0 * generated_covariance(0) - 4.0 * generated_covariance(m) + generated_covariance(2 * m)) / (m * h * m * h);
     worst = std::max(worst, std::abs(generated / exact - 1.0));
   }
   return worst;
@@ -104,8 +98,7 @@ double ZeroDcNoise::design_error(double h) const {
 void ZeroDcNoise::design(double h) {
   if (h == designed_interval_s_) return;
   designed_interval_s_ = h;
-  std::size_t half_width =
-      next_power_of_two(256.0 * std::max(1.0, time_scale_s_ / h) + 4.0 * echo_delay_s_ / h);
+  std::size_t half_width = next_power_of_two(256.0 * std::max(1.0, time_scale_s_ / h) + 4.0 * echo_delay_s_ / h);
   for (;;) {
     build_taps(h, half_width);
     max_relative_error_ = design_error(h);
@@ -151,8 +144,8 @@ double ZeroDcNoise::generated_covariance(std::size_t lag) const {
 double ZeroDcNoise::allan_variance(double tau_s, double tau0_s) const {
   if (tau0_s != designed_interval_s_) return analytic_avar(tau_s);
   const auto m = static_cast<std::size_t>(std::llround(tau_s / tau0_s));
-  return (3.0 * generated_covariance(0) - 4.0 * generated_covariance(m) +
-          generated_covariance(2 * m)) / (tau_s * tau_s);
+  return (3.0 * generated_covariance(0) - 4.0 * generated_covariance(m) + generated_covariance(2 * m)) /
+         (tau_s * tau_s);
 }
 
 double ZeroDcNoise::sample_variance(double h) const {

@@ -186,8 +186,8 @@ AllanPlot AllanPanelModel::plot(const std::string& sensor, const std::string& st
   plot.tau_decades = decades_enclosing(plot.measured.points.front().log10_tau, plot.measured.points.back().log10_tau);
 
   const double recorded_s = static_cast<double>(curves.samples) * curves.tau0_s;
-  plot.status_lines.push_back("recorded " + duration_text(recorded_s) + " (" +
-                              std::to_string(curves.samples) + " samples), band " + percent_text(curves.confidence));
+  plot.status_lines.push_back("recorded " + duration_text(recorded_s) + " (" + std::to_string(curves.samples) +
+                              " samples), band " + percent_text(curves.confidence));
 
   if (!has_report_) {
     plot.status_lines.push_back("no noise report yet");
@@ -197,8 +197,7 @@ AllanPlot AllanPanelModel::plot(const std::string& sensor, const std::string& st
     const auto model_axis = std::find_if(report_.axes.begin(), report_.axes.end(),
                                          [&](const NoiseAxisModel& candidate) { return candidate.axis == axis_name; });
     if (model_axis != report_.axes.end()) {
-      plot.status_lines.push_back("model fitted on " + duration_text(report_.record_length_s) +
-                                  " of record");
+      plot.status_lines.push_back("model fitted on " + duration_text(report_.record_length_s) + " of record");
       if (model_applies_to(statistic)) {
         try {
           plot.model = model_series(*model_axis, measured_tau_s);

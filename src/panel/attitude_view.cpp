@@ -46,7 +46,8 @@ std::string format_sigma(double sigma_rad) {
   const double sigma_deg = sigma_rad * kRadToDeg;
   const double sigma_arcsec = sigma_deg * kDegToArcsec;
   // Two significant digits, without an exponent for hundreds of arcseconds and more.
-  return printed(sigma_arcsec < 99.5 ? "+-%.2g deg (%.2g arcsec)" : "+-%.2g deg (%.0f arcsec)", sigma_deg, sigma_arcsec);
+  return printed(sigma_arcsec < 99.5 ? "+-%.2g deg (%.2g arcsec)" : "+-%.2g deg (%.0f arcsec)", sigma_deg,
+                 sigma_arcsec);
 }
 
 void AttitudePanelModel::set_attitude(const AttitudeSample& attitude, double received_s) {
@@ -66,7 +67,8 @@ AttitudeView AttitudePanelModel::view(double now_s) const {
   view.have_alignment = alignment_.has_value();
   const std::array<const char*, 3> names{"roll", "pitch", "yaw"};
   std::array<double, 3> sigma_rad{NAN, NAN, NAN};
-  if (alignment_ && attitude_) sigma_rad = roll_pitch_yaw_sigma_rad(alignment_->error_sigma_enu_rad, attitude_->yaw_rad);
+  if (alignment_ && attitude_)
+    sigma_rad = roll_pitch_yaw_sigma_rad(alignment_->error_sigma_enu_rad, attitude_->yaw_rad);
   for (std::size_t i = 0; i < names.size(); ++i) {
     AttitudeRow row;
     row.angle = names[i];
@@ -83,8 +85,8 @@ AttitudeView AttitudePanelModel::view(double now_s) const {
   if (!attitude_) {
     view.solution_line = "waiting for nav/odometry (the navigator publishes after its alignment)";
   } else if (now_s - attitude_received_s_ > stale_after_s_) {
-    view.solution_line = printed("STALE: no nav/odometry for %.0f s; the angles are the last received",
-                                 now_s - attitude_received_s_);
+    view.solution_line =
+        printed("STALE: no nav/odometry for %.0f s; the angles are the last received", now_s - attitude_received_s_);
   } else {
     view.solution_line = "navigating";
   }
@@ -103,10 +105,10 @@ AttitudeView AttitudePanelModel::view(double now_s) const {
   }
   std::stable_sort(view.health_lines.begin(), view.health_lines.end(),
                    [](const HealthLine& a, const HealthLine& b) { return a.level > b.level; });
-  view.health_summary = health_.empty() ? "input health: no /diagnostics received yet"
-                                        : std::string("input health: ") + level_name(view.worst_health_level) + " (" +
-                                              std::to_string(health_.size()) +
-                                              (health_.size() == 1 ? " status)" : " statuses)");
+  view.health_summary = health_.empty()
+                            ? "input health: no /diagnostics received yet"
+                            : std::string("input health: ") + level_name(view.worst_health_level) + " (" +
+                                  std::to_string(health_.size()) + (health_.size() == 1 ? " status)" : " statuses)");
   return view;
 }
 

@@ -48,9 +48,8 @@ std::array<identify::FitOptions, 3> axis_options(SensorKind sensor, const AllanR
 
 identify::TriadFit fit_sensor(SensorKind sensor, const AllanRunDescription& run,
                               const allan::StreamingSnapshot& snapshot, const AllanIdentifyOptions& options) {
-  identify::TriadFit triad =
-      identify::fit_triad(sensor, oadev_curves(snapshot, sensor), snapshot.timing.tau0_s, record_length_s(snapshot),
-                          axis_options(sensor, run, options));
+  identify::TriadFit triad = identify::fit_triad(sensor, oadev_curves(snapshot, sensor), snapshot.timing.tau0_s,
+                                                 record_length_s(snapshot), axis_options(sensor, run, options));
   if (options.bootstrap_replicas <= 0) return triad;
   for (std::size_t axis = 0; axis < 3; ++axis) {
     identify::BootstrapOptions bootstrap;
@@ -90,7 +89,8 @@ identify::ReportMetadata report_metadata(const AllanRunDescription& run, const a
 
 std::string bootstrap_replicas_problem(int replicas) {
   if (replicas == 0 || replicas >= 2) return "";
-  return "must be 0 (sigmas from the fit's moment covariance) or at least 2 (a bootstrap), not " + std::to_string(replicas);
+  return "must be 0 (sigmas from the fit's moment covariance) or at least 2 (a bootstrap), not " +
+         std::to_string(replicas);
 }
 
 std::string partial_curves_file_name(const std::string& channel_name) {
@@ -136,8 +136,8 @@ AllanNoiseReport write_allan_noise_report(const std::string& directory, const Al
 
   if (report.triads.size() == kSensors.size()) {
     const std::string kalibr_path = directory + "/kalibr_imu.yaml";
-    identify::write_kalibr_imu_yaml(kalibr_path, identify::kalibr_noise(report.triads[0], report.triads[1],
-                                                                        metadata.update_rate_hz, run.topic));
+    identify::write_kalibr_imu_yaml(
+        kalibr_path, identify::kalibr_noise(report.triads[0], report.triads[1], metadata.update_rate_hz, run.topic));
     report.written.push_back(kalibr_path);
   } else {
     report.problems.push_back("no kalibr_imu.yaml: it needs both the gyro and the accelerometer identified");
@@ -163,7 +163,7 @@ std::string format_identification_summary(const AllanIdentifyOptions& options, c
   if (options.enabled) {
     out << YAML::Key << "sigma_source" << YAML::Value
         << identify::sigma_source_name(options.bootstrap_replicas > 0 ? identify::SigmaSource::kBootstrap
-                                                                    : identify::SigmaSource::kMomentCovariance);
+                                                                      : identify::SigmaSource::kMomentCovariance);
     out << YAML::Key << "bootstrap_replicas" << YAML::Value << options.bootstrap_replicas;
     out << YAML::Key << "identified" << YAML::Value << YAML::Flow << YAML::BeginSeq;
     for (const auto& triad : report.triads) out << identify::sensor_prefix(triad.sensor);

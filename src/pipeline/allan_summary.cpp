@@ -42,19 +42,17 @@ void emit_timing(YAML::Emitter& out, const allan::TimingReport& timing, bool sto
   out << YAML::Key << "first_stamp_events" << YAML::Value << YAML::BeginSeq;
   for (std::size_t i = 0; i < std::min(timing.events.size(), kListedStampEvents); ++i) {
     const allan::StampEvent& event = timing.events[i];
-    out << YAML::Flow << YAML::BeginMap << YAML::Key << "kind" << YAML::Value << event_name(event.kind)
-        << YAML::Key << "sample_index" << YAML::Value << event.sample_index << YAML::Key << "stamp_ns" << YAML::Value
-        << event.stamp_ns << YAML::Key << "previous_stamp_ns" << YAML::Value << event.previous_stamp_ns
-        << YAML::EndMap;
+    out << YAML::Flow << YAML::BeginMap << YAML::Key << "kind" << YAML::Value << event_name(event.kind) << YAML::Key
+        << "sample_index" << YAML::Value << event.sample_index << YAML::Key << "stamp_ns" << YAML::Value
+        << event.stamp_ns << YAML::Key << "previous_stamp_ns" << YAML::Value << event.previous_stamp_ns << YAML::EndMap;
   }
   out << YAML::EndSeq;
 }
 
 void emit_channels(YAML::Emitter& out, const AllanRunDescription& run, const allan::StreamingSnapshot& snapshot) {
   // An increment's offset is per sample; the summary gives it as a rate like the curves.
-  const double offset_scale = run.input == AllanInput::kIncrement && snapshot.timing.tau0_s > 0.0
-                                  ? 1.0 / snapshot.timing.tau0_s
-                                  : 1.0;
+  const double offset_scale =
+      run.input == AllanInput::kIncrement && snapshot.timing.tau0_s > 0.0 ? 1.0 / snapshot.timing.tau0_s : 1.0;
   std::int64_t non_finite_total = 0;
   out << YAML::Key << "channels" << YAML::Value << YAML::BeginMap;
   for (std::size_t c = 0; c < snapshot.channels.size() && c < kAllanChannelCount; ++c) {
@@ -71,8 +69,7 @@ void emit_channels(YAML::Emitter& out, const AllanRunDescription& run, const all
       out << YAML::Key << std::string("output_step_") + allan_value_unit(run.input, c) << YAML::Value
           << run.output_steps[c].step;
     }
-    const allan::StabilityPoint* minimum =
-        minimum_point(snapshot.curve(allan::Statistic::kOverlappingAllan, c));
+    const allan::StabilityPoint* minimum = minimum_point(snapshot.curve(allan::Statistic::kOverlappingAllan, c));
     if (minimum != nullptr) {
       out << YAML::Key << "min_oadev_" + unit << YAML::Value << minimum->deviation;
       out << YAML::Key << "min_oadev_tau_s" << YAML::Value << minimum->tau_s;
@@ -148,9 +145,8 @@ void emit_split_files(YAML::Emitter& out, const AllanRunDescription& run) {
 }  // namespace
 
 const allan::StabilityPoint* minimum_point(const std::vector<allan::StabilityPoint>& curve) {
-  const auto smallest = std::min_element(curve.begin(), curve.end(), [](const auto& a, const auto& b) {
-    return a.deviation < b.deviation;
-  });
+  const auto smallest = std::min_element(curve.begin(), curve.end(),
+                                         [](const auto& a, const auto& b) { return a.deviation < b.deviation; });
   return smallest == curve.end() ? nullptr : &*smallest;
 }
 

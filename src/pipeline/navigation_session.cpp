@@ -22,17 +22,16 @@ Eigen::Vector3d predicted_error_sigma_rad(const NavigationSettings& settings, co
                                           double duration_s) {
   if (!settings.expected_errors) return Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
   const ExpectedSensorErrors& expected = *settings.expected_errors;
-  const double gyro_effective = std::sqrt(expected.gyro_bias_rad_s * expected.gyro_bias_rad_s * duration_s +
-                                          expected.gyro_noise_density_rad_s_per_sqrt_hz *
-                                              expected.gyro_noise_density_rad_s_per_sqrt_hz);
-  const double accel_effective = std::sqrt(expected.accel_bias_m_s2 * expected.accel_bias_m_s2 * duration_s +
-                                           expected.accel_noise_density_m_s2_per_sqrt_hz *
-                                               expected.accel_noise_density_m_s2_per_sqrt_hz);
+  const double gyro_effective =
+      std::sqrt(expected.gyro_bias_rad_s * expected.gyro_bias_rad_s * duration_s +
+                expected.gyro_noise_density_rad_s_per_sqrt_hz * expected.gyro_noise_density_rad_s_per_sqrt_hz);
+  const double accel_effective =
+      std::sqrt(expected.accel_bias_m_s2 * expected.accel_bias_m_s2 * duration_s +
+                expected.accel_noise_density_m_s2_per_sqrt_hz * expected.accel_noise_density_m_s2_per_sqrt_hz);
   const double gravity = earth.gravity_m_s2(settings.latitude_rad, settings.height_m);
   const double earth_rate = earth.earth_rate_rad_s();
-  const Eigen::Matrix3d covariance =
-      nav::alignment_noise_covariance_rad2(gyro_effective, accel_effective, duration_s, settings.latitude_rad, gravity,
-                                         earth_rate > 0.0 ? earth_rate : 1.0);
+  const Eigen::Matrix3d covariance = nav::alignment_noise_covariance_rad2(
+      gyro_effective, accel_effective, duration_s, settings.latitude_rad, gravity, earth_rate > 0.0 ? earth_rate : 1.0);
   Eigen::Vector3d sigma = covariance.diagonal().cwiseSqrt();
   if (settings.alignment.heading_source == nav::HeadingSource::kGiven || !(earth_rate > 0.0)) {
     sigma.z() = std::numeric_limits<double>::quiet_NaN();
@@ -44,9 +43,9 @@ AlignmentResult given_attitude(const NavigationSettings& settings) {
   AlignmentResult given;
   given.method = "given_attitude";
   given.q_body_to_enu = settings.initial_attitude_body_to_enu
-                           ? *settings.initial_attitude_body_to_enu
-                           : emulator::attitude_from_roll_pitch_yaw(settings.initial_roll_rad, settings.initial_pitch_rad,
-                                                                    settings.initial_yaw_rad);
+                            ? *settings.initial_attitude_body_to_enu
+                            : emulator::attitude_from_roll_pitch_yaw(
+                                  settings.initial_roll_rad, settings.initial_pitch_rad, settings.initial_yaw_rad);
   given.predicted_error_sigma_rad.setConstant(std::numeric_limits<double>::quiet_NaN());
   return given;
 }
@@ -75,8 +74,8 @@ std::optional<SampleOutcome> NavigationSession::begin_sample(std::int64_t stamp_
   new_solution_ = false;
   if (divergence_) {
     return skip(SampleOutcome::kHalted, counters_.halted,
-                "navigation stopped at " + std::to_string(divergence_->stamp_ns * kSecondsPerNanosecond) +
-                    " s (" + divergence_->problem + "); waiting to be re-initialised");
+                "navigation stopped at " + std::to_string(divergence_->stamp_ns * kSecondsPerNanosecond) + " s (" +
+                    divergence_->problem + "); waiting to be re-initialised");
   }
   if (previous_stamp_ns_ && stamp_ns <= *previous_stamp_ns_) {
     return skip(SampleOutcome::kSkippedUnordered, counters_.unordered,
@@ -124,9 +123,9 @@ SampleOutcome NavigationSession::add_rates(std::int64_t stamp_ns, const Eigen::V
   }
   const double interval_s = static_cast<double>(stamp_ns - *start_ns) * kSecondsPerNanosecond;
   if (is_gap(interval_s, typical_interval_s_)) {
-    return skip(SampleOutcome::kSkippedGap, counters_.gaps,
-                "gap of " + std::to_string(interval_s) + " s (typical interval " + std::to_string(typical_interval_s_) +
-                    " s)");
+    return skip(
+        SampleOutcome::kSkippedGap, counters_.gaps,
+        "gap of " + std::to_string(interval_s) + " s (typical interval " + std::to_string(typical_interval_s_) + " s)");
   }
   typical_interval_s_ = typical_interval_s_ > 0.0
                             ? typical_interval_s_ + kTypicalIntervalSmoothing * (interval_s - typical_interval_s_)
@@ -181,11 +180,10 @@ SampleOutcome NavigationSession::integrate(std::int64_t stamp_ns, const nav::Imu
   }
   last_stamp_ns_ = stamp_ns;
   const nav::NavState& state = navigator_.state();
-  const Eigen::Vector3d enu_rate = navigator_.earth().earth_rate_enu_rad_s(state.latitude_rad) +
-                                   navigator_.earth().transport_rate_enu_rad_s(state.velocity_enu_m_s,
-                                                                             state.latitude_rad, state.height_m);
-  body_rate_wrt_enu_rad_s_ =
-      increment.delta_angle_rad / increment.dt_s - state.q_body_to_enu.conjugate() * enu_rate;
+  const Eigen::Vector3d enu_rate =
+      navigator_.earth().earth_rate_enu_rad_s(state.latitude_rad) +
+      navigator_.earth().transport_rate_enu_rad_s(state.velocity_enu_m_s, state.latitude_rad, state.height_m);
+  body_rate_wrt_enu_rad_s_ = increment.delta_angle_rad / increment.dt_s - state.q_body_to_enu.conjugate() * enu_rate;
   new_solution_ = true;
   return SampleOutcome::kNavigated;
 }
@@ -200,8 +198,8 @@ SampleOutcome NavigationSession::finish_alignment(std::int64_t stamp_ns) {
                 std::string(error.what()) + "; aligning again");
   }
   AlignmentResult result;
-  result.method = settings_.alignment.heading_source == nav::HeadingSource::kGyrocompass ? "gyrocompass"
-                                                                                          : "given_heading";
+  result.method =
+      settings_.alignment.heading_source == nav::HeadingSource::kGyrocompass ? "gyrocompass" : "given_heading";
   result.duration_s = aligner_.accumulated_s();
   result.mean_angular_rate_rad_s = aligner_.mean_angular_rate_rad_s();
   result.mean_specific_force_m_s2 = aligner_.mean_specific_force_m_s2();

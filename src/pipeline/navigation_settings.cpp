@@ -46,9 +46,9 @@ void validate(const NavigationSettings& settings, const std::string& source) {
   require(within(in_degrees(settings.longitude_rad), kLowestLongitudeDeg, kHighestLongitudeDeg), "longitude_deg",
           "must be in [" + format_number(kLowestLongitudeDeg, 6) + ", " + format_number(kHighestLongitudeDeg, 6) +
               "] degrees, got " + format_number(in_degrees(settings.longitude_rad), 6));
-  const std::string heights =
-      "[" + format_number(kLowestHeightM, 6) + ", " + format_number(kHighestHeightM, 6) + "] m (the deepest trench to "
-      "the edge of space), got ";
+  const std::string heights = "[" + format_number(kLowestHeightM, 6) + ", " + format_number(kHighestHeightM, 6) +
+                              "] m (the deepest trench to "
+                              "the edge of space), got ";
   require(within(settings.height_m, kLowestHeightM, kHighestHeightM), "height_m",
           "must be in " + heights + format_number(settings.height_m, 6));
   const auto& reference_height_m = settings.navigator.vertical.fixed_reference_height_m;
@@ -67,9 +67,8 @@ void validate(const NavigationSettings& settings, const std::string& source) {
   angle(settings.initial_pitch_rad, 90.0, "initial_pitch_deg");
   angle(settings.initial_yaw_rad, 360.0, "initial_yaw_deg");
   angle(settings.alignment.given_yaw_rad, 360.0, "initial_yaw_deg");
-  require(!settings.initial_attitude_body_to_enu ||
-              (settings.initial_attitude_body_to_enu->coeffs().allFinite() &&
-               settings.initial_attitude_body_to_enu->norm() > 0.5),
+  require(!settings.initial_attitude_body_to_enu || (settings.initial_attitude_body_to_enu->coeffs().allFinite() &&
+                                                     settings.initial_attitude_body_to_enu->norm() > 0.5),
           "initial attitude", "must be a finite, non-zero quaternion");
   require(settings.initial_velocity_enu_m_s.allFinite(), "initial_velocity_enu_m_s",
           "must be three finite numbers (east, north, up) in m/s");

@@ -40,7 +40,8 @@ std::string format_shape(const identify::TermEstimate& term) {
   if (term.status == identify::TermStatus::kAbsent || !identify::has_shape(term.kind)) return text;
   const auto units = identify::shape_units(term.kind);
   if (units.empty()) return text;
-  const std::string label = term.kind == identify::TermKind::kWhiteRate ? "low-pass" : identify::shape_symbol(term.kind);
+  const std::string label =
+      term.kind == identify::TermKind::kWhiteRate ? "low-pass" : identify::shape_symbol(term.kind);
   append(label, term.shape, units.front());
   if (!identify::width_symbol(term.kind).empty()) append(identify::width_symbol(term.kind), term.width, units.front());
   return text;
@@ -59,19 +60,18 @@ std::string format_noise_table(const std::vector<identify::TriadFit>& triads) {
     for (int axis = 0; axis < 3; ++axis) {
       for (const identify::TermEstimate* term : identify::terms_in_report_order(triad.axes[axis])) {
         const identify::UnitScale unit = display_unit(triad.sensor, term->kind);
-        std::snprintf(line, sizeof(line), "  %-8s %-18s %-8s %-22s %s%s%s\n",
-                      identify::axis_name(triad.sensor, axis).c_str(), term->name.c_str(),
-                      identify::amplitude_symbol(term->kind).c_str(), unit.key.c_str(),
-                      format_term(*term, unit).c_str(), format_shape(*term).c_str(),
-                      term->borderline ? " [borderline]" : "");
+        std::snprintf(
+            line, sizeof(line), "  %-8s %-18s %-8s %-22s %s%s%s\n", identify::axis_name(triad.sensor, axis).c_str(),
+            term->name.c_str(), identify::amplitude_symbol(term->kind).c_str(), unit.key.c_str(),
+            format_term(*term, unit).c_str(), format_shape(*term).c_str(), term->borderline ? " [borderline]" : "");
         table += line;
       }
       for (const std::string& warning : triad.axes[axis].warnings) {
         table += "  " + identify::axis_name(triad.sensor, axis) + " warning: " + warning + "\n";
       }
     }
-    table += "  worst " + identify::sensor_prefix(triad.sensor) + " axis: " +
-             identify::axis_name(triad.sensor, triad.worst_axis) + " (" + triad.worst_axis_reason + ")\n";
+    table += "  worst " + identify::sensor_prefix(triad.sensor) +
+             " axis: " + identify::axis_name(triad.sensor, triad.worst_axis) + " (" + triad.worst_axis_reason + ")\n";
   }
   return table;
 }

@@ -18,7 +18,8 @@ constexpr double kThresholdFloor_rad_s = 1e-9;
 
 PlateauDetection detect_plateaus(const std::vector<double>& stamps_s, const std::vector<double>& rate_rad_s,
                                  const PlateauOptions& options) {
-  if (stamps_s.size() != rate_rad_s.size()) throw std::invalid_argument("detect_plateaus: stamps and rates differ in length");
+  if (stamps_s.size() != rate_rad_s.size())
+    throw std::invalid_argument("detect_plateaus: stamps and rates differ in length");
   for (std::size_t k = 1; k < stamps_s.size(); ++k) {
     if (!(stamps_s[k] > stamps_s[k - 1])) {
       std::ostringstream message;
@@ -58,8 +59,7 @@ PlateauDetection detect_plateaus(const std::vector<double>& stamps_s, const std:
     const bool right = w + 1 == window_count || std::abs(means[w + 1] - means[w]) <= threshold;
     return left && right;
   };
-  const std::size_t guard_windows =
-      std::max<std::size_t>(1, std::ceil(options.guard_s / detection.window_s - 1e-9));
+  const std::size_t guard_windows = std::max<std::size_t>(1, std::ceil(options.guard_s / detection.window_s - 1e-9));
   const auto keep_run = [&](std::size_t first, std::size_t last) {  // steady windows [first, last)
     // A slow ramp passes the neighbour test: trim the end farther from the run's median until the
     // spread is within twice the threshold.

@@ -98,8 +98,9 @@ std::string scale_factor_summary(const ScaleFactorTestResult& result) {
                      std::to_string(result.plateaus.size()) + " plateaus, full scale " +
                      format_printf(result.full_scale_rad_s * kDegPerRad, "%.4g") + " deg/s\n";
   text += "straight lines:\n";
-  text += line("bias                  ", {result.line.bias_rad_s.value * kDegPerRad * 3600.0,
-                                          result.line.bias_rad_s.sigma * kDegPerRad * 3600.0}, "deg/h");
+  text += line("bias                  ",
+               {result.line.bias_rad_s.value * kDegPerRad * 3600.0, result.line.bias_rad_s.sigma * kDegPerRad * 3600.0},
+               "deg/h");
   text += line("scale-factor error    ", result.line.scale_factor_error_ppm, "ppm");
   text += line("asymmetry             ", result.line.asymmetry_ppm, "ppm");
   text += line("nonlinearity          ", result.nonlinearity_ppm_fs, "ppm of FS");

@@ -44,7 +44,8 @@ double RateTableSetup::earth_rate_on_axis_rad_s() const {
 
 RateTableSetup setup_from_scenario(const emulator::ScenarioConfig& scenario) {
   if (!scenario.rate_table) {
-    throw ConfigError(scenario.source, "type", "is '" + scenario.type + "'; a rate-table test needs a rate_table scenario");
+    throw ConfigError(scenario.source, "type",
+                      "is '" + scenario.type + "'; a rate-table test needs a rate_table scenario");
   }
   RateTableSetup setup;
   setup.source = scenario.source;
@@ -85,7 +86,8 @@ RateTableSetup load_rate_table_setup(const std::string& path) {
   const YAML::Node rates = f.raw("rates_deg_s");
   if (!rates.IsSequence() || rates.size() < 3) f.fail("rates_deg_s", "must list at least three plateau rates");
   for (std::size_t k = 0; k < rates.size(); ++k) {
-    append_merged(setup.nominal_rates_rad_s, f.number_at(rates[k], "rates_deg_s[" + std::to_string(k) + "]") * kRadPerDeg);
+    append_merged(setup.nominal_rates_rad_s,
+                  f.number_at(rates[k], "rates_deg_s[" + std::to_string(k) + "]") * kRadPerDeg);
   }
   setup.tested_axis();
   return setup;

@@ -269,8 +269,9 @@ void fit_plateau_measurements(ScaleFactorTestResult& result, const ScaleFactorTe
     sigma[r] = m.sigma_of_mean_rad_s;
   }
   if (!(sigma.minCoeff() > 0.0)) {
-    throw InputError("rate-table recording: a plateau mean has no measurable noise (constant output); "
-                     "its sigma, and the fit's, would be zero");
+    throw InputError(
+        "rate-table recording: a plateau mean has no measurable noise (constant output); "
+        "its sigma, and the fit's, would be zero");
   }
   const WeightedFit line = weighted_fit(design_matrix(u, false), y, sigma);
   if (!line.full_rank) throw InputError("rate-table recording: the plateau rates do not determine the straight lines");

@@ -147,8 +147,8 @@ identify::NoiseModel typical_model(const std::vector<LotUnit>& units, const std:
     if (term_channel != channel) continue;
     const identify::TermKind kind = kind_of(term_name);
     const std::string term_prefix = prefix + "terms." + term_name + ".";
-    const std::string amplitude_key = term_prefix + si_key(identify::amplitude_symbol(kind),
-                                                           identify::amplitude_units(sensor, kind));
+    const std::string amplitude_key =
+        term_prefix + si_key(identify::amplitude_symbol(kind), identify::amplitude_units(sensor, kind));
     std::size_t identified = 0;
     for (const LotUnit& unit : units) identified += find_value(unit.report_values, amplitude_key) != nullptr ? 1 : 0;
     if (2 * identified < units.size()) continue;  // a minority's term is not the typical unit's
@@ -188,7 +188,8 @@ std::string typical_model_csv(const std::vector<LotUnit>& units, const std::vect
   for (double tau_s : taus_s) {
     text += format_number(tau_s);
     for (const auto& model : models) {
-      text += "," + (model.terms.empty() ? std::string() : format_number(std::sqrt(identify::model_avar(model, tau_s))));
+      text +=
+          "," + (model.terms.empty() ? std::string() : format_number(std::sqrt(identify::model_avar(model, tau_s))));
     }
     text += "\n";
   }
@@ -253,20 +254,22 @@ std::string lot_yaml(const LotSummary& summary) {
 
 std::string lot_markdown(const LotSummary& summary) {
   std::string page = "# Lot of " + std::to_string(summary.units.size()) + " units\n\n";
-  page += "Typical = median over the units that identify the term, worst = the largest of them; spread = sample "
-          "standard deviation (n - 1) over those units. A unit without the term is counted in `identified in`; "
-          "`absent: < x` is the largest upper bound such units give. Per unit: value ± one sigma. See doc/lot.md.\n\n";
+  page +=
+      "Typical = median over the units that identify the term, worst = the largest of them; spread = sample "
+      "standard deviation (n - 1) over those units. A unit without the term is counted in `identified in`; "
+      "`absent: < x` is the largest upper bound such units give. Per unit: value ± one sigma. See doc/lot.md.\n\n";
   page += "| channel | term | unit | typical | worst | spread | identified in |";
   for (const std::string& unit : summary.units) page += " " + unit + " |";
   page += "\n|---|---|---|---|---|---|---|";
   for (std::size_t k = 0; k < summary.units.size(); ++k) page += "---|";
   page += "\n";
   for (const LotTerm& term : summary.terms) {
-    page += "| " + term.channel + " | " + term.term + " | " + term.field_unit + " | " +
-            page_number(term.typical) + " | " + page_number(term.worst) + " | " +
+    page += "| " + term.channel + " | " + term.term + " | " + term.field_unit + " | " + page_number(term.typical) +
+            " | " + page_number(term.worst) + " | " +
             page_number(term.spread.count >= 2 ? term.spread.standard_deviation : kNaN) + " | " +
             std::to_string(term.identified.size()) + " of " + std::to_string(summary.units.size());
-    if (std::isfinite(term.absent_upper_bound_max)) page += " (absent: < " + page_number(term.absent_upper_bound_max) + ")";
+    if (std::isfinite(term.absent_upper_bound_max))
+      page += " (absent: < " + page_number(term.absent_upper_bound_max) + ")";
     page += " |";
     for (const std::string& unit : summary.units) {
       const auto value = std::find_if(term.identified.begin(), term.identified.end(),
@@ -274,7 +277,8 @@ std::string lot_markdown(const LotSummary& summary) {
       if (value == term.identified.end()) {
         page += " - |";
       } else {
-        page += " " + page_number(value->value) + (std::isfinite(value->sigma) ? " ± " + page_number(value->sigma) : "") + " |";
+        page += " " + page_number(value->value) +
+                (std::isfinite(value->sigma) ? " ± " + page_number(value->sigma) : "") + " |";
       }
     }
     page += "\n";

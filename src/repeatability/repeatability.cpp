@@ -208,9 +208,9 @@ std::string repeatability_yaml(const RepeatabilityTable& table) {
     for (std::size_t c = 0; c < kChannelCount; ++c) {
       const RunChannel& r = run.channels[c];
       out << YAML::Key << kChannelNames[c] << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "bias"
-          << YAML::Value << r.bias << YAML::Key << "mean_uncertainty" << YAML::Value << r.mean_uncertainty
-          << YAML::Key << "allan_minimum" << YAML::Value << r.allan_minimum << YAML::Key << "allan_minimum_tau_s"
-          << YAML::Value << r.allan_minimum_tau_s << YAML::EndMap;
+          << YAML::Value << r.bias << YAML::Key << "mean_uncertainty" << YAML::Value << r.mean_uncertainty << YAML::Key
+          << "allan_minimum" << YAML::Value << r.allan_minimum << YAML::Key << "allan_minimum_tau_s" << YAML::Value
+          << r.allan_minimum_tau_s << YAML::EndMap;
     }
     out << YAML::EndMap;
     if (!run.terms.empty()) {

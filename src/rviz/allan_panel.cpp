@@ -112,9 +112,9 @@ void AllanPanel::selection_changed() {
 }
 
 void AllanPanel::refresh() {
-  const panel::AllanPlot plot = model_.plot(sensor_choice_->currentText().toStdString(),
-                                            statistic_choice_->currentText().toStdString(),
-                                            axis_choice_->currentIndex());
+  const panel::AllanPlot plot =
+      model_.plot(sensor_choice_->currentText().toStdString(), statistic_choice_->currentText().toStdString(),
+                  axis_choice_->currentIndex());
   status_text_->setText(joined_lines(plot.status_lines));
   record_text_->setText(joined_lines(plot.record_length_lines));
   plot_->set_plot(plot);
@@ -123,10 +123,9 @@ void AllanPanel::refresh() {
 // One line on rviz's log for each new kind of picture drawn, with where it is on the screen: the
 // rviz test waits for it before taking its screenshot, and crops the panel from it.
 void AllanPanel::log_painted(std::size_t measured_points, std::size_t model_series) {
-  const std::string what = sensor_choice_->currentText().toStdString() + " " +
-                           axis_choice_->currentText().toStdString() + " " +
-                           statistic_choice_->currentText().toStdString() +
-                           (model_series > 0 ? " with the fitted model" : "");
+  const std::string what =
+      sensor_choice_->currentText().toStdString() + " " + axis_choice_->currentText().toStdString() + " " +
+      statistic_choice_->currentText().toStdString() + (model_series > 0 ? " with the fitted model" : "");
   if (what == last_logged_) return;
   last_logged_ = what;
   const QPoint origin = plot_->mapToGlobal(QPoint(0, 0));

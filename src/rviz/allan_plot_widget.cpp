@@ -12,9 +12,8 @@ namespace {
 
 // Colours that stay apart for readers with a colour-vision deficiency (Okabe and Ito, "Color
 // Universal Design", 2008), one per term in report order.
-const QColor kTermColours[] = {QColor(0, 114, 178), QColor(213, 94, 0), QColor(0, 158, 115),
-                               QColor(204, 121, 167), QColor(230, 159, 0), QColor(86, 180, 233),
-                               QColor(120, 120, 120)};
+const QColor kTermColours[] = {QColor(0, 114, 178), QColor(213, 94, 0),   QColor(0, 158, 115),  QColor(204, 121, 167),
+                               QColor(230, 159, 0), QColor(86, 180, 233), QColor(120, 120, 120)};
 const QColor kMeasuredColour(20, 20, 20);
 const QColor kBandColour(150, 150, 150, 90);
 const QColor kTotalColour(200, 0, 0);
@@ -83,8 +82,8 @@ void AllanPlotWidget::paintEvent(QPaintEvent*) {
     const double y = to_screen(tau_low, decade).y();
     painter.drawLine(QPointF(area.left(), y), QPointF(area.right(), y));
     painter.setPen(Qt::black);
-    painter.drawText(QRectF(0, y - metrics.height() / 2.0, left - 6, metrics.height()), Qt::AlignRight | Qt::AlignVCenter,
-                     decade_label(decade));
+    painter.drawText(QRectF(0, y - metrics.height() / 2.0, left - 6, metrics.height()),
+                     Qt::AlignRight | Qt::AlignVCenter, decade_label(decade));
     painter.setPen(QPen(QColor(190, 190, 190), 1));
   }
   painter.setPen(Qt::black);
@@ -122,7 +121,8 @@ void AllanPlotWidget::paintEvent(QPaintEvent*) {
                    series.constrained ? Qt::DashLine : Qt::DotLine);
     painter.setPen(pen);
     polyline(series);
-    legend.emplace_back(pen, QString::fromStdString(series.constrained ? series.label : series.label + " (unconstrained)"));
+    legend.emplace_back(pen,
+                        QString::fromStdString(series.constrained ? series.label : series.label + " (unconstrained)"));
   }
   const QPen measured_pen(kMeasuredColour, 1.2);
   painter.setPen(measured_pen);

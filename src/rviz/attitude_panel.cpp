@@ -24,9 +24,7 @@ QColor level_colour(int level) {
 
 }  // namespace
 
-AttitudeViewWidget::AttitudeViewWidget(QWidget* parent) : QWidget(parent) {
-  setMinimumSize(320, 200);
-}
+AttitudeViewWidget::AttitudeViewWidget(QWidget* parent) : QWidget(parent) { setMinimumSize(320, 200); }
 
 void AttitudeViewWidget::set_view(panel::AttitudeView view) {
   view_ = std::move(view);

@@ -36,8 +36,6 @@ struct AxisData {
   double input_reference = 1.0;
 };
 
-
-
 struct Structure {
   int clusters = 0;
   int bias_order = 1;
@@ -45,7 +43,10 @@ struct Structure {
   bool scale_rate = false;
   int second_order = 0;
   int scale_order = 0;  // 0: no scale-factor terms
-  int columns() const { return clusters + bias_order + (rate ? 1 : 0) + second_order + scale_order + (scale_rate && scale_order > 0 ? 1 : 0); }
+  int columns() const {
+    return clusters + bias_order + (rate ? 1 : 0) + second_order + scale_order +
+           (scale_rate && scale_order > 0 ? 1 : 0);
+  }
 };
 
 // Writes one row's regressors (cluster columns mapped through cluster_column, -1 = dropped).
@@ -82,13 +83,13 @@ Solution solve(const Eigen::MatrixXd& design, const Eigen::VectorXd& y) {
   out.beta = svd.solve(y);
   out.residual_sum_squares = (y - design * out.beta).squaredNorm();
   const double variance = out.residual_sum_squares / static_cast<double>(design.rows() - design.cols());
-  out.covariance = svd.matrixV() * singular.cwiseInverse().cwiseAbs2().asDiagonal() * svd.matrixV().transpose() * variance;
+  out.covariance =
+      svd.matrixV() * singular.cwiseInverse().cwiseAbs2().asDiagonal() * svd.matrixV().transpose() * variance;
   return out;
 }
 
 // Cluster columns kept for the given rows (clusters without rows are dropped).
-std::vector<int> cluster_columns(const AxisData& data, const std::vector<std::size_t>& rows, int clusters,
-                                 int* kept) {
+std::vector<int> cluster_columns(const AxisData& data, const std::vector<std::size_t>& rows, int clusters, int* kept) {
   std::vector<int> column(clusters, -1);
   for (std::size_t r : rows) column[data.cluster[r]] = 0;
   *kept = 0;
@@ -130,7 +131,8 @@ FoldErrors fold_errors(const AxisData& data, const Structure& s, const ThermalFi
   FoldErrors out;
   for (int fold = 0; fold < folds; ++fold) {
     std::vector<std::size_t> train, test;
-    for (std::size_t r = 0; r < data.y.size(); ++r) ((r / block) % folds == static_cast<std::size_t>(fold) ? test : train).push_back(r);
+    for (std::size_t r = 0; r < data.y.size(); ++r)
+      ((r / block) % folds == static_cast<std::size_t>(fold) ? test : train).push_back(r);
     std::vector<int> column;
     const Solution solution = fit_rows(data, train, s, &column);
     out.constrained.push_back(solution.ok);
@@ -253,7 +255,8 @@ void fill_terms(const Structure& s, const Solution& solution, const AxisData& da
   if (s.rate) terms->bias_per_temperature_rate = add("bias_per_temperature_rate", 1.0 / kRateUnit_c_s, u + "/(degC/s)");
   for (int k = 1; k <= s.second_order; ++k) {
     terms->bias_second_sensor_polynomial.push_back(add("bias_second_sensor_polynomial[" + std::to_string(k - 1) + "]",
-                                                       std::pow(kTemperatureUnit_c, -k), u + "/degC^" + std::to_string(k)));
+                                                       std::pow(kTemperatureUnit_c, -k),
+                                                       u + "/degC^" + std::to_string(k)));
   }
   const double ppm_per_unit = 1e6 / data.input_reference;
   for (int k = 1; k <= s.scale_order; ++k) {
@@ -287,8 +290,9 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
                           "orientations, or the static thresholds are too tight for this sensor's noise");
   }
   if (options.second_sensor_term && !windows[used.front()].second_temperature_c) {
-    throw ThermalFitError("the second-sensor term needs a second thermosensor topic; give it, or fit without "
-                          "the second-sensor term");
+    throw ThermalFitError(
+        "the second-sensor term needs a second thermosensor topic; give it, or fit without "
+        "the second-sensor term");
   }
   result.static_window_count = used.size();
   // Visits: runs of static windows in one orientation, broken by a move (or any window not static).
@@ -296,7 +300,8 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
   int visits = 0;
   for (std::size_t w = 0, previous = windows.size(); w < windows.size(); ++w) {
     if (orientations.cluster_of_window[w] < 0) continue;
-    const bool continues = previous + 1 == w && orientations.cluster_of_window[previous] == orientations.cluster_of_window[w];
+    const bool continues =
+        previous + 1 == w && orientations.cluster_of_window[previous] == orientations.cluster_of_window[w];
     visit_of_window[w] = continues ? visit_of_window[previous] : visits++;
     previous = w;
   }
@@ -340,8 +345,8 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
     for (int axis = 0; axis < 3; ++axis) {
       bool up = false, down = false;
       for (const OrientationCluster& cluster : orientations.clusters) {
-        const Eigen::Vector3d& input = triad.name == std::string("gyro") ? cluster.angular_rate_input_rad_s
-                                                                         : cluster.specific_force_input_m_s2;
+        const Eigen::Vector3d& input =
+            triad.name == std::string("gyro") ? cluster.angular_rate_input_rad_s : cluster.specific_force_input_m_s2;
         up = up || input[axis] > 0.5 * triad.input_reference;
         down = down || input[axis] < -0.5 * triad.input_reference;
       }
@@ -351,12 +356,13 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
   if (!single_sided.empty()) {
     std::string axes;
     for (const auto& label : single_sided) axes += (axes.empty() ? "" : ", ") + label;
-    throw ThermalFitError("scale factor vs temperature needs each axis in at least two opposite orientations (input "
-                          "up and down), but " + axes + " saw only one side in the " +
-                          std::to_string(orientations.clusters.size()) +
-                          " orientation(s) of this test: one orientation cannot separate bias(T) from scale "
-                          "factor(T). Record a multi-position thermal test (e.g. config/scenarios/"
-                          "thermal_multiposition.yaml) or fit the bias only (no scale-factor term)");
+    throw ThermalFitError(
+        "scale factor vs temperature needs each axis in at least two opposite orientations (input "
+        "up and down), but " +
+        axes + " saw only one side in the " + std::to_string(orientations.clusters.size()) +
+        " orientation(s) of this test: one orientation cannot separate bias(T) from scale "
+        "factor(T). Record a multi-position thermal test (e.g. config/scenarios/"
+        "thermal_multiposition.yaml) or fit the bias only (no scale-factor term)");
   }
 
   for (int t = 0; t < 2; ++t) {
@@ -377,7 +383,7 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
         const bool along_gravity = std::abs(cluster.up_body[axis]) >= along_gravity_cosine;
         const int clusters = static_cast<int>(orientations.clusters.size());
         data.cluster.push_back(options.precise_revisits || along_gravity ? orientations.cluster_of_window[w]
-                                                                          : clusters + visit_of_window[w]);
+                                                                         : clusters + visit_of_window[w]);
       }
       Structure base;
       base.clusters = static_cast<int>(orientations.clusters.size()) + visits;
@@ -422,11 +428,12 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
         }
         const std::vector<CrossValidation> scores = score_on_common_folds(errors);
         for (std::size_t c = 0; c < candidates.size(); ++c) candidates[c].score = scores[c];
-        const auto best = std::min_element(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
-          return a.score.mean_square < b.score.mean_square;
-        });
+        const auto best = std::min_element(
+            candidates.begin(), candidates.end(),
+            [](const Candidate& a, const Candidate& b) { return a.score.mean_square < b.score.mean_square; });
         if (!std::isfinite(best->score.mean_square)) {
-          throw ThermalFitError(axis_label(triad, axis) + ": no polynomial order can be fitted: the orientations "
+          throw ThermalFitError(axis_label(triad, axis) +
+                                ": no polynomial order can be fitted: the orientations "
                                 "and temperatures of this test leave the model singular; add dwells at more "
                                 "temperatures in each orientation");
         }

@@ -19,8 +19,8 @@ Eigen::Vector3d correct_triad(const ThermalModel& model, const TriadThermalTerms
                               const ThermalInput& input) {
   Eigen::Vector3d corrected;
   for (int axis = 0; axis < 3; ++axis) {
-    corrected[axis] = (raw[axis] - axis_delta_bias(model, triad[axis], input)) /
-                      (1.0 + axis_delta_scale(model, triad[axis], input));
+    corrected[axis] =
+        (raw[axis] - axis_delta_bias(model, triad[axis], input)) / (1.0 + axis_delta_scale(model, triad[axis], input));
   }
   return corrected;
 }
@@ -35,7 +35,8 @@ double polynomial_without_constant(const std::vector<double>& coefficients, doub
 
 std::string validity_range_text(const ThermalModel& model) {
   const ThermalValidity& box = model.validity;
-  std::string text = format_number(box.temperature_min_c, 4) + " .. " + format_number(box.temperature_max_c, 4) + " degC";
+  std::string text =
+      format_number(box.temperature_min_c, 4) + " .. " + format_number(box.temperature_max_c, 4) + " degC";
   if (model.uses_temperature_rate) {
     text += ", " + format_number(box.rate_min_c_s, 4) + " .. " + format_number(box.rate_max_c_s, 4) + " degC/s";
   }
@@ -54,8 +55,8 @@ ThermalInput clamp_to_validity(const ThermalModel& model, const ThermalInput& in
     inside.rate_c_s = clamp_flagged(input.rate_c_s, box.rate_min_c_s, box.rate_max_c_s, clamped);
   }
   if (model.uses_second_sensor && input.second_temperature_c) {
-    inside.second_temperature_c = clamp_flagged(*input.second_temperature_c, box.second_temperature_min_c,
-                                                box.second_temperature_max_c, clamped);
+    inside.second_temperature_c =
+        clamp_flagged(*input.second_temperature_c, box.second_temperature_min_c, box.second_temperature_max_c, clamped);
   }
   return inside;
 }

@@ -34,7 +34,8 @@ std::vector<double> polynomial(const YamlFields& f, const std::string& key) {
   const YAML::Node list = f.raw(key);
   if (!list.IsSequence()) f.fail(key, "expected a list of coefficients (per degC, per degC^2, ...)");
   if (list.size() > 4) f.fail(key, "at most 4 coefficients (order 4)");
-  for (std::size_t k = 0; k < list.size(); ++k) out.push_back(f.number_at(list[k], key + "[" + std::to_string(k) + "]"));
+  for (std::size_t k = 0; k < list.size(); ++k)
+    out.push_back(f.number_at(list[k], key + "[" + std::to_string(k) + "]"));
   return out;
 }
 
@@ -82,7 +83,8 @@ void write_fit(YAML::Emitter& out, const ThermalFitResult& fit) {
   out << YAML::Key << "axes" << YAML::Value << YAML::BeginSeq;
   for (const AxisFitReport& axis : fit.axes) {
     out << YAML::BeginMap;
-    out << YAML::Key << "triad" << YAML::Value << axis.triad << YAML::Key << "axis" << YAML::Value << kAxisNames[axis.axis];
+    out << YAML::Key << "triad" << YAML::Value << axis.triad << YAML::Key << "axis" << YAML::Value
+        << kAxisNames[axis.axis];
     out << YAML::Key << "bias_order" << YAML::Value << axis.bias_order;
     out << YAML::Key << "scale_factor_order" << YAML::Value << axis.scale_factor_order;
     out << YAML::Key << "windows" << YAML::Value << axis.window_count;
@@ -142,8 +144,9 @@ ThermalModel load_thermal_model(const std::string& path) {
 std::string thermal_model_to_yaml(const ThermalModel& model, const ThermalFitResult* fit) {
   YAML::Emitter out;
   out.SetDoublePrecision(10);
-  out << YAML::Comment("imu_lab thermal model: corrected = (raw - delta_bias(T)) / (1 + delta_scale(T)); see "
-                       "include/imu_lab/thermal/thermal_model.h");
+  out << YAML::Comment(
+      "imu_lab thermal model: corrected = (raw - delta_bias(T)) / (1 + delta_scale(T)); see "
+      "include/imu_lab/thermal/thermal_model.h");
   out << YAML::BeginMap;
   out << YAML::Key << "format" << YAML::Value << kFormat << YAML::Key << "version" << YAML::Value << 1;
   out << YAML::Key << "reference_temperature_c" << YAML::Value << model.reference_temperature_c;

@@ -10,7 +10,8 @@ namespace thermal {
 void write_thermal_residual_csv(const std::string& path, const ThermalFitResult& result) {
   static const char* const kAxisNames[3] = {"x", "y", "z"};
   write_file_atomically(path, [&](std::ostream& out) {
-    out << "triad,axis,unit,stamp_s,temperature_c,rate_c_s,orientation,observed_delta_bias,fitted_delta_bias,residual\n";
+    out << "triad,axis,unit,stamp_s,temperature_c,rate_c_s,orientation,observed_delta_bias,fitted_delta_bias,"
+           "residual\n";
     out << std::setprecision(12);
     for (const WindowResidual& row : result.residuals) {
       out << row.triad << ',' << kAxisNames[row.axis] << ',' << (row.triad == "gyro" ? "rad_s" : "m_s2") << ','

@@ -35,8 +35,8 @@ ThermalWindowAverager::ThermalWindowAverager(const WindowSettings& settings, con
 void ThermalWindowAverager::add(const ImuSample& reading) {
   if (first_stamp_s_ && !(reading.stamp_s > last_stamp_s_)) {
     std::ostringstream text;
-    text << std::setprecision(15) << "IMU stamps go backwards or repeat at " << reading.stamp_s
-         << " s (previous " << last_stamp_s_ << " s); re-record or sort the bag by header stamp";
+    text << std::setprecision(15) << "IMU stamps go backwards or repeat at " << reading.stamp_s << " s (previous "
+         << last_stamp_s_ << " s); re-record or sort the bag by header stamp";
     throw InputError(text.str());
   }
   const auto temperature_c = temperature_.temperature_at(reading.stamp_s, settings_.max_temperature_age_s);

@@ -35,18 +35,20 @@ void print_summary(const imu_lab::ros_io::AllanBagPassResult& result, const imu_
   long long non_finite = 0;
   for (const auto& channel : result.snapshot.channels) non_finite += channel.non_finite_count;
   if (timing.gap_count + timing.duplicate_count + timing.out_of_order_count + non_finite > 0) {
-    std::printf("allan: irregular input (split and pooled / dropped, see allan_summary.yaml): %lld gaps (%.6g s), "
-                "%lld duplicate and %lld out-of-order stamps, %lld NaN/Inf or unusable values\n",
-                static_cast<long long>(timing.gap_count), timing.gap_time_s,
-                static_cast<long long>(timing.duplicate_count), static_cast<long long>(timing.out_of_order_count),
-                non_finite);
+    std::printf(
+        "allan: irregular input (split and pooled / dropped, see allan_summary.yaml): %lld gaps (%.6g s), "
+        "%lld duplicate and %lld out-of-order stamps, %lld NaN/Inf or unusable values\n",
+        static_cast<long long>(timing.gap_count), timing.gap_time_s, static_cast<long long>(timing.duplicate_count),
+        static_cast<long long>(timing.out_of_order_count), non_finite);
   }
-  for (const auto& [count, field, triad] : {std::tuple{result.messages_without_angular_rate, "angular_velocity", "gyro"},
-                                            std::tuple{result.messages_without_specific_force, "linear_acceleration",
-                                                       "accelerometer"}}) {
+  for (const auto& [count, field, triad] :
+       {std::tuple{result.messages_without_angular_rate, "angular_velocity", "gyro"},
+        std::tuple{result.messages_without_specific_force, "linear_acceleration", "accelerometer"}}) {
     if (count > 0) {
-      std::printf("allan: %zu of %zu messages mark the %s triad as not provided (%s_covariance[0] = -1): its channels "
-                  "leave them out\n", count, result.message_count, triad, field);
+      std::printf(
+          "allan: %zu of %zu messages mark the %s triad as not provided (%s_covariance[0] = -1): its channels "
+          "leave them out\n",
+          count, result.message_count, triad, field);
     }
   }
   std::printf("%s", imu_lab::pipeline::format_impulse_events("allan: ", result.impulses).c_str());
@@ -116,7 +118,8 @@ int main(int argc, char** argv) {
   options.input = imu_lab::pipeline::parse_allan_input("--input", input);
   identify.enabled = !no_identify;
   options.screen.enabled = !no_impulse_screen;
-  engine.stamp_policy = on_gap == "stop" ? imu_lab::allan::StampPolicy::kStop : imu_lab::allan::StampPolicy::kSplitAndPool;
+  engine.stamp_policy =
+      on_gap == "stop" ? imu_lab::allan::StampPolicy::kStop : imu_lab::allan::StampPolicy::kSplitAndPool;
 
   const imu_lab::ToolInput bag_input = recording.tool_input(options.topic);
   return imu_lab::run_tool_main("allan", bag_input, [&] {

@@ -75,7 +75,9 @@ int main(int argc, char** argv) {
   imu_lab::ros_io::add_recording_arguments(app, recording, "bag to read", true);
   app.add_option("--topic", topic, "sensor_msgs/Imu topic (default: the only one in the bag)");
   app.add_option("--profile", profile_name, "sensor profile whose analytic ADEV to print beside the measured");
-  app.add_option("--taus-s", taus_s, "averaging times [s]")->capture_default_str()->check(imu_lab::option_range::positive());
+  app.add_option("--taus-s", taus_s, "averaging times [s]")
+      ->capture_default_str()
+      ->check(imu_lab::option_range::positive());
   if (const auto status = imu_lab::parse_tool_options("bag_summary", app, argc, argv)) return *status;
 
   imu_lab::ToolInput input = recording.tool_input(topic);
@@ -87,13 +89,16 @@ int main(int argc, char** argv) {
     std::vector<std::int64_t> stamps_ns;
     // A triad no message carries (covariance[0] = -1) is left out; one that some lack is refused.
     imu_lab::ros_io::StrictImuCheck check(imu_lab::ros_io::ImuTriadsNeeded{false, false});
-    imu_lab::ros_io::for_each_imu_strictly(bag, topic, [&](const imu_lab::io::ImuRecord& record) {
-      stamps_ns.push_back(record.stamp_ns);
-      for (int axis = 0; axis < 3; ++axis) {
-        channels[axis].push_back(record.angular_rate_rad_s[axis]);
-        channels[axis + 3].push_back(record.specific_force_m_s2[axis]);
-      }
-    }, &check);
+    imu_lab::ros_io::for_each_imu_strictly(
+        bag, topic,
+        [&](const imu_lab::io::ImuRecord& record) {
+          stamps_ns.push_back(record.stamp_ns);
+          for (int axis = 0; axis < 3; ++axis) {
+            channels[axis].push_back(record.angular_rate_rad_s[axis]);
+            channels[axis + 3].push_back(record.specific_force_m_s2[axis]);
+          }
+        },
+        &check);
     std::array<bool, 6> present{};
     for (int c = 0; c < 6; ++c) {
       present[c] = c < 3 ? !check.angular_rate_absent_throughout() : !check.specific_force_absent_throughout();
@@ -102,8 +107,10 @@ int main(int argc, char** argv) {
          {std::tuple{check.angular_rate_absent_throughout(), "gyro", "angular_velocity"},
           std::tuple{check.specific_force_absent_throughout(), "accelerometer", "linear_acceleration"}}) {
       if (absent) {
-        std::fprintf(stderr, "bag_summary: bag %s, topic %s: no message carries the %s triad (%s_covariance[0] = -1, "
-                     "not provided by the driver): left out\n", bag_name.c_str(), topic.c_str(), triad, field);
+        std::fprintf(stderr,
+                     "bag_summary: bag %s, topic %s: no message carries the %s triad (%s_covariance[0] = -1, "
+                     "not provided by the driver): left out\n",
+                     bag_name.c_str(), topic.c_str(), triad, field);
       }
     }
     const std::size_t count = channels[0].size();
@@ -113,10 +120,12 @@ int main(int argc, char** argv) {
     std::printf("%s, topic %s: %zu samples over %.3f s, rate %.4f Hz (median interval)\n", bag_name.c_str(),
                 topic.c_str(), count, (stamps_ns.back() - stamps_ns.front()) * 1e-9, 1.0 / tau0_s);
     if (timing.irregular_count > 0) {
-      std::fprintf(stderr, "bag_summary: warning: bag %s, topic %s: %zu intervals off the sample period by over a "
+      std::fprintf(stderr,
+                   "bag_summary: warning: bag %s, topic %s: %zu intervals off the sample period by over a "
                    "factor %.1f (%.6g .. %.6g s): gaps or a rate change; the Allan deviation below assumes evenly "
-                   "spaced samples (the allan tool splits the record at gaps)\n", bag_name.c_str(), topic.c_str(),
-                   timing.irregular_count, kIrregularFactor, timing.shortest_interval_s, timing.longest_interval_s);
+                   "spaced samples (the allan tool splits the record at gaps)\n",
+                   bag_name.c_str(), topic.c_str(), timing.irregular_count, kIrregularFactor,
+                   timing.shortest_interval_s, timing.longest_interval_s);
     }
 
     std::optional<imu_lab::emulator::SensorProfile> profile;
@@ -148,7 +157,8 @@ int main(int argc, char** argv) {
       std::vector<double> centred(channels[c]);
       for (double& v : centred) v -= means[c];  // keeps the integrated phase small (round-off)
       const auto phase = imu_lab::allan::phase_from_frequency(centred, tau0_s);
-      const auto points = imu_lab::allan::evaluate(imu_lab::allan::Statistic::kOverlappingAllan, phase, tau0_s, factors);
+      const auto points =
+          imu_lab::allan::evaluate(imu_lab::allan::Statistic::kOverlappingAllan, phase, tau0_s, factors);
       for (const auto& p : points) {
         std::printf("%-8s %10.4g %14.6g %14.6g %14.6g", kChannelNames[c], p.tau_s, p.deviation, p.deviation_lower,
                     p.deviation_upper);

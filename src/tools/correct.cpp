@@ -36,12 +36,12 @@ void print_summary(const CommandLine& c, const imu_lab::ros_io::BagCorrectionSum
   std::printf("correct: %zu of %zu IMU messages on %s corrected with %s and written to %s in %s", s.corrected,
               s.imu_messages, s.imu_topic.c_str(), stages.c_str(), s.out_topic.c_str(), c.out_path.c_str());
   if (c.options.thermal_model) {
-    std::printf("; %zu temperature readings used; %zu samples outside the thermal model's validity range "
-                "(%s) were corrected at its edge (clamped); %zu samples skipped for want of a temperature within "
-                "%.3g s of their stamp (as thermal_compensator does)",
-                s.temperature_messages, s.clamped,
-                imu_lab::thermal::validity_range_text(*c.options.thermal_model).c_str(), s.stale,
-                c.options.max_temperature_age_s);
+    std::printf(
+        "; %zu temperature readings used; %zu samples outside the thermal model's validity range "
+        "(%s) were corrected at its edge (clamped); %zu samples skipped for want of a temperature within "
+        "%.3g s of their stamp (as thermal_compensator does)",
+        s.temperature_messages, s.clamped, imu_lab::thermal::validity_range_text(*c.options.thermal_model).c_str(),
+        s.stale, c.options.max_temperature_age_s);
   }
   std::printf("; %zu other messages copied unchanged (%s)", s.copied_messages, joined(s.copied_topics).c_str());
   if (!s.uncorrected_imu_topics.empty()) {
@@ -62,11 +62,13 @@ int main(int argc, char** argv) {
   app.add_option("--thermal-model", c.thermal_model_path, "thermal model YAML written by fit_thermal (applied first)");
   app.add_option("--calibration", c.calibration_path, "calibration YAML written by fit_calibration (applied second)");
   app.add_option("--topic", o.imu_topic, "sensor_msgs/Imu topic (default: the bag's only one)");
-  app.add_option("--out-topic", o.out_topic, "topic of the corrected IMU (default: the input topic, replaced; "
+  app.add_option("--out-topic", o.out_topic,
+                 "topic of the corrected IMU (default: the input topic, replaced; "
                  "another name keeps the raw topic too)");
   app.add_option("--temperature-topic", o.temperature_topic, "thermosensor topic")->capture_default_str();
   app.add_option("--second-temperature-topic", o.second_temperature_topic,
-                 "second thermosensor topic (read only if the model uses one)")->capture_default_str();
+                 "second thermosensor topic (read only if the model uses one)")
+      ->capture_default_str();
   app.add_option("--max-temperature-age-s", o.max_temperature_age_s,
                  "farthest a thermosensor reading may be from an IMU stamp [s] (thermal_compensator's parameter)")
       ->capture_default_str()

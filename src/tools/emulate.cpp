@@ -54,8 +54,7 @@ int main(int argc, char** argv) {
   return imu_lab::run_tool_main("emulate", [&] {
     const auto profile =
         imu_lab::emulator::load_sensor_profile(imu_lab::ros_io::resolve_config("sensors", profile_name));
-    const auto scenario =
-        imu_lab::emulator::load_scenario(imu_lab::ros_io::resolve_config("scenarios", scenario_name));
+    const auto scenario = imu_lab::emulator::load_scenario(imu_lab::ros_io::resolve_config("scenarios", scenario_name));
     options.duration_s = duration_option->count() > 0 ? duration_s : scenario.duration_s;
     if (!(options.duration_s > 0.0)) {
       std::cerr << "emulate: the scenario " << scenario.source << " has no duration_s; give --duration-s\n";
@@ -66,9 +65,8 @@ int main(int argc, char** argv) {
     const auto samples = imu_lab::ros_io::write_emulated_bag(emulator, options, out_path);
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     std::printf("emulate: wrote %s: %llu samples of %s in %s, %.1f s of data at %.6g Hz in %.2f s (%.0fx real time)\n",
-                out_path.c_str(), static_cast<unsigned long long>(samples), profile.name.c_str(),
-                scenario.type.c_str(), options.duration_s, settings.rate_hz, wall_s,
-                options.duration_s / std::max(wall_s, 1e-9));
+                out_path.c_str(), static_cast<unsigned long long>(samples), profile.name.c_str(), scenario.type.c_str(),
+                options.duration_s, settings.rate_hz, wall_s, options.duration_s / std::max(wall_s, 1e-9));
     return 0;
   });
 }

@@ -45,7 +45,8 @@ int main(int argc, char** argv) {
     std::printf("%s: wrote %s: %zu rows of %s (gyro %s, accel %s)", kTool, out_path.c_str(), report.rows,
                 report.imu_topic.c_str(), gyro_unit.c_str(), accel_unit.c_str());
     if (!report.temperature_topic.empty()) {
-      std::printf(", temperature_c from %s in %zu rows", report.temperature_topic.c_str(), report.rows_with_temperature);
+      std::printf(", temperature_c from %s in %zu rows", report.temperature_topic.c_str(),
+                  report.rows_with_temperature);
       if (report.unmatched_temperatures > 0) {
         std::printf(" (%zu readings at stamps without an IMU sample left out)", report.unmatched_temperatures);
       }

@@ -68,7 +68,8 @@ int main(int argc, char** argv) {
   app.add_option("--earth-model", earth_model, "wgs84_rotating | sphere_non_rotating, without a schedule")
       ->capture_default_str()
       ->excludes(schedule_option);
-  app.add_option("--held-out-last", held_out_last, "leave the last N rests out of the fit, for the |g|/|Earth rate| check");
+  app.add_option("--held-out-last", held_out_last,
+                 "leave the last N rests out of the fit, for the |g|/|Earth rate| check");
   app.add_flag("--g-sensitivity", options.estimate_g_sensitivity, "also fit the gyros' g-sensitivity matrix");
   app.add_option("--static-window-s", options.static_detection.window_s, "rest detection window")
       ->capture_default_str()
@@ -104,10 +105,12 @@ int main(int argc, char** argv) {
     imu_lab::ros_io::for_each_imu_strictly(bag, topic, [&](const imu_lab::io::ImuRecord& record) {
       samples.push_back({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2});
     });
-    if (samples.size() < 2) throw imu_lab::InputError("bag " + bag.name() + ": topic " + topic + " has too few messages (" +
-                                                       imu_lab::io::describe_time_window(bag.window) + ")");
+    if (samples.size() < 2)
+      throw imu_lab::InputError("bag " + bag.name() + ": topic " + topic + " has too few messages (" +
+                                imu_lab::io::describe_time_window(bag.window) + ")");
     // Held out at the end, like the thesis's verification run after the calibration run.
-    const std::size_t rests = imu_lab::calib::detect_static_intervals(samples, options.static_detection).intervals.size();
+    const std::size_t rests =
+        imu_lab::calib::detect_static_intervals(samples, options.static_detection).intervals.size();
     for (std::size_t k = rests > held_out_last ? rests - held_out_last : 0; k < rests; ++k) {
       options.held_out_positions.push_back(k);
     }
@@ -117,12 +120,13 @@ int main(int argc, char** argv) {
     // The three files are one set: all new, or (on any failure) all as they were.
     imu_lab::OutputSet outputs;
     outputs.write(out_path, imu_lab::calib::calibration_yaml(result));
-    outputs.write(beside(out_path, "_kalibr_imu_chain.yaml"), imu_lab::calib::kalibr_imu_chain_yaml(result, topic, rate_hz));
+    outputs.write(beside(out_path, "_kalibr_imu_chain.yaml"),
+                  imu_lab::calib::kalibr_imu_chain_yaml(result, topic, rate_hz));
     outputs.write(beside(out_path, "_report.txt"), report);
     outputs.commit();
     for (const std::string& warning : result.warnings) std::cerr << "fit_calibration: warning: " << warning << "\n";
-    std::cout << "fit_calibration: " << bag.name() << ", " << imu_lab::io::describe_time_window(bag.window)
-              << "\n" << report << "\nwrote " << out_path << ", " << beside(out_path, "_kalibr_imu_chain.yaml") << ", "
+    std::cout << "fit_calibration: " << bag.name() << ", " << imu_lab::io::describe_time_window(bag.window) << "\n"
+              << report << "\nwrote " << out_path << ", " << beside(out_path, "_kalibr_imu_chain.yaml") << ", "
               << beside(out_path, "_report.txt") << "\n";
     return 0;
   });

@@ -38,8 +38,8 @@ struct Command {
 
 std::string default_csv_path(const std::string& out_path) {
   const std::string suffix = ".yaml";
-  const bool has_suffix = out_path.size() > suffix.size() &&
-                          out_path.compare(out_path.size() - suffix.size(), suffix.size(), suffix) == 0;
+  const bool has_suffix =
+      out_path.size() > suffix.size() && out_path.compare(out_path.size() - suffix.size(), suffix.size(), suffix) == 0;
   return (has_suffix ? out_path.substr(0, out_path.size() - suffix.size()) : out_path) + "_residuals.csv";
 }
 
@@ -49,11 +49,12 @@ void print_summary(const imu_lab::thermal::ThermalFitResult& result) {
               imu_lab::thermal::validity_range_text(result.model).c_str());
   static const char* const kAxisNames[3] = {"x", "y", "z"};
   for (const auto& axis : result.axes) {
-    std::printf("  %-13s %s: bias order %d, scale-factor order %d, fitted delta-bias p-p %.4g, residual rms %.4g%s "
-                "(%.3g x the noise of a window mean), %zu constants\n",
-                axis.triad.c_str(), kAxisNames[axis.axis], axis.bias_order, axis.scale_factor_order,
-                axis.delta_bias_peak_to_peak, axis.residual_rms, axis.triad == "gyro" ? " rad/s" : " m/s^2",
-                axis.residual_over_noise, axis.constant_count);
+    std::printf(
+        "  %-13s %s: bias order %d, scale-factor order %d, fitted delta-bias p-p %.4g, residual rms %.4g%s "
+        "(%.3g x the noise of a window mean), %zu constants\n",
+        axis.triad.c_str(), kAxisNames[axis.axis], axis.bias_order, axis.scale_factor_order,
+        axis.delta_bias_peak_to_peak, axis.residual_rms, axis.triad == "gyro" ? " rad/s" : " m/s^2",
+        axis.residual_over_noise, axis.constant_count);
   }
 }
 
@@ -72,7 +73,8 @@ int main(int argc, char** argv) {
   app.add_option("--temperature-topic", c.topics.temperature, "thermosensor topic")->capture_default_str();
   app.add_option("--second-temperature-topic", c.topics.second_temperature,
                  "second, lagging thermosensor (enables the second-sensor term)");
-  app.add_option("--order", c.order, "polynomial order 1..4 (default: chosen by cross-validation)")->check(CLI::Range(1, 4));
+  app.add_option("--order", c.order, "polynomial order 1..4 (default: chosen by cross-validation)")
+      ->check(CLI::Range(1, 4));
   app.add_option("--max-order", c.fit.max_polynomial_order, "highest order cross-validation tries")
       ->capture_default_str()
       ->check(CLI::Range(1, 4));
@@ -102,18 +104,20 @@ int main(int argc, char** argv) {
   app.add_option("--static-accel-std-m-s2", c.windows.static_specific_force_std_m_s2, "static-window threshold")
       ->capture_default_str()
       ->check(positive());
-  const auto* latitude_option =
-      app.add_option("--latitude-deg", c.latitude_deg, "test site latitude (gravity and Earth rate; required with a "
-                                                       "scale-factor term)")
-          ->check(latitude_deg());
-  app.add_option("--height-m", c.height_m, "test site height")->capture_default_str()->check(imu_lab::option_range::height_m());
+  const auto* latitude_option = app.add_option("--latitude-deg", c.latitude_deg,
+                                               "test site latitude (gravity and Earth rate; required with a "
+                                               "scale-factor term)")
+                                    ->check(latitude_deg());
+  app.add_option("--height-m", c.height_m, "test site height")
+      ->capture_default_str()
+      ->check(imu_lab::option_range::height_m());
   if (const auto status = imu_lab::parse_tool_options("fit_thermal", app, argc, argv)) return *status;
   if (c.order > 0) c.fit.polynomial_order = c.order;
   if (c.no_scale_factor) c.fit.accelerometer_scale_factor = c.fit.gyro_scale_factor = false;
   c.fit.second_sensor_term = !c.topics.second_temperature.empty();
   c.fit.earth.latitude_rad = c.latitude_deg * kRadPerDeg;
-  c.fit.earth.gravity_m_s2 = imu_lab::emulator::normal_gravity_m_s2(imu_lab::EarthShape::kWgs84Rotating,
-                                                                     c.fit.earth.latitude_rad, c.height_m);
+  c.fit.earth.gravity_m_s2 =
+      imu_lab::emulator::normal_gravity_m_s2(imu_lab::EarthShape::kWgs84Rotating, c.fit.earth.latitude_rad, c.height_m);
   if (c.csv_path.empty()) c.csv_path = default_csv_path(c.out_path);
 
   c.recording.on_progress = imu_lab::terminal_progress("fit_thermal", "messages");
@@ -136,7 +140,8 @@ int main(int argc, char** argv) {
                 c.windows.window_s);
     const auto result = imu_lab::thermal::fit_thermal_model(data.windows, c.windows.rate_window_s, c.fit);
     print_summary(result);
-    for (const std::string& warning : result.warnings) std::fprintf(stderr, "fit_thermal: warning: %s\n", warning.c_str());
+    for (const std::string& warning : result.warnings)
+      std::fprintf(stderr, "fit_thermal: warning: %s\n", warning.c_str());
     // Model, residuals and plot are one set: all new, or (on any failure) all as they were.
     imu_lab::OutputSet outputs;
     imu_lab::thermal::save_thermal_model(outputs.stage(c.out_path), result.model, &result);
@@ -145,7 +150,8 @@ int main(int argc, char** argv) {
     if (!c.plot_path.empty()) {
       const std::string problem =
           imu_lab::ros_io::run_plot_script("plot_thermal.py", {staged_csv, outputs.stage(c.plot_path)});
-      if (!problem.empty()) throw imu_lab::OutputError("cannot plot " + c.plot_path + ": " + problem + "; nothing written");
+      if (!problem.empty())
+        throw imu_lab::OutputError("cannot plot " + c.plot_path + ": " + problem + "; nothing written");
     }
     outputs.commit();
     std::printf("fit_thermal: wrote %s and %s%s\n", c.out_path.c_str(), c.csv_path.c_str(),

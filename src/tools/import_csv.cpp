@@ -50,7 +50,8 @@ imu_lab::io::CsvImportOptions import_options(const CommandLine& c) {
   options.given.accel_unit |= !c.accel_unit.empty();
   options.given.temperature_column |= !c.temperature_column.empty();
   options.given.time_offset |= !c.time_offset_s.empty();
-  if (!c.time_offset_s.empty()) options.time_offset_ns = parse_time_offset_ns(c.time_offset_s, kCommandLine, "--time-offset-s");
+  if (!c.time_offset_s.empty())
+    options.time_offset_ns = parse_time_offset_ns(c.time_offset_s, kCommandLine, "--time-offset-s");
   if (!c.gyro_columns.empty()) options.gyro_columns = triad(c.gyro_columns, "--gyro-columns");
   if (!c.accel_columns.empty()) options.accel_columns = triad(c.accel_columns, "--accel-columns");
   if (!c.gyro_unit.empty()) options.gyro_unit = parse_angular_rate_unit(c.gyro_unit, kCommandLine, "--gyro-unit");
@@ -82,7 +83,8 @@ int main(int argc, char** argv) {
   app.add_option("--temperature-column", c.temperature_column, "temperature column in degC (default: none)");
   app.add_option("--on-bad-row", c.on_bad_row, "refuse: any bad row writes nothing; skip: import the good rows")
       ->capture_default_str();
-  app.add_option("--max-reported-rows", c.max_reported_rows, "bad rows listed (all are counted)")->capture_default_str();
+  app.add_option("--max-reported-rows", c.max_reported_rows, "bad rows listed (all are counted)")
+      ->capture_default_str();
   app.add_option("--imu-topic", c.topics.imu, "sensor_msgs/Imu topic")->capture_default_str();
   app.add_option("--temperature-topic", c.topics.temperature, "sensor_msgs/Temperature topic")->capture_default_str();
   app.add_option("--frame-id", c.topics.frame_id, "frame_id of the messages")->capture_default_str();
@@ -100,14 +102,16 @@ int main(int argc, char** argv) {
     if (!summary.recognised.empty()) std::printf("%s: %s: %s\n", kTool, c.csv_path.c_str(), summary.recognised.c_str());
     if (summary.relative_time_offset_ns != 0) {
       using imu_lab::io::format_stamp_s;
-      std::printf("%s: %s: the time column is relative (it starts at %s s, before any epoch ROS time can hold): "
-                  "%s s added to every stamp (--time-offset-s gives another offset, 0 keeps it)\n",
-                  kTool, c.csv_path.c_str(), format_stamp_s(summary.first_stamp_ns - summary.relative_time_offset_ns).c_str(),
-                  format_stamp_s(summary.relative_time_offset_ns).c_str());
+      std::printf(
+          "%s: %s: the time column is relative (it starts at %s s, before any epoch ROS time can hold): "
+          "%s s added to every stamp (--time-offset-s gives another offset, 0 keeps it)\n",
+          kTool, c.csv_path.c_str(), format_stamp_s(summary.first_stamp_ns - summary.relative_time_offset_ns).c_str(),
+          format_stamp_s(summary.relative_time_offset_ns).c_str());
     }
     std::printf("%s: wrote %s: %zu samples on %s (%s), %.3f s", kTool, c.out_path.c_str(), summary.accepted_rows,
                 c.topics.imu.c_str(), summary.units.c_str(), span_s);
-    if (summary.accepted_rows > 1) std::printf(" at %.6g Hz mean", static_cast<double>(summary.accepted_rows - 1) / span_s);
+    if (summary.accepted_rows > 1)
+      std::printf(" at %.6g Hz mean", static_cast<double>(summary.accepted_rows - 1) / span_s);
     if (!summary.temperature_column.empty()) {
       std::printf(", %zu temperatures on %s (%zu rows without one)", report.temperature_messages,
                   c.topics.temperature.c_str(), summary.rows_without_temperature);

@@ -145,12 +145,11 @@ int main(int argc, char** argv) {
     std::printf("lot_report: %zu units; typical (median) and worst (max) per term, in the field's units:\n",
                 units.size());
     for (const rep::LotTerm& term : summary.terms) {
-      std::string line = term.identified.empty()
-                             ? "absent in every unit"
-                             : "typical " + imu_lab::format_number(term.typical, 4) + ", worst " +
-                                   imu_lab::format_number(term.worst, 4) + " (" +
-                                   std::to_string(term.identified.size()) + " of " + std::to_string(units.size()) +
-                                   " units)";
+      std::string line = term.identified.empty() ? "absent in every unit"
+                                                 : "typical " + imu_lab::format_number(term.typical, 4) + ", worst " +
+                                                       imu_lab::format_number(term.worst, 4) + " (" +
+                                                       std::to_string(term.identified.size()) + " of " +
+                                                       std::to_string(units.size()) + " units)";
       if (std::isfinite(term.absent_upper_bound_max)) {
         line += (term.identified.empty() ? " (< " : "; absent ones < ") +
                 imu_lab::format_number(term.absent_upper_bound_max, 4) + (term.identified.empty() ? ")" : "");
@@ -158,7 +157,8 @@ int main(int argc, char** argv) {
       std::printf("  %-8s %-18s %-24s %s\n", term.channel.c_str(), term.term.c_str(), term.parameter.c_str(),
                   line.c_str());
     }
-    for (const std::string& name : written) std::printf("lot_report: wrote %s/%s\n", out_directory.c_str(), name.c_str());
+    for (const std::string& name : written)
+      std::printf("lot_report: wrote %s/%s\n", out_directory.c_str(), name.c_str());
     return 0;
   });
 }

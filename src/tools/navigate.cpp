@@ -70,8 +70,8 @@ Eigen::Vector3d parse_velocity(const std::string& key, const std::string& text) 
     good = !fields[axis].empty() && end == fields[axis].c_str() + fields[axis].size() && std::isfinite(velocity[axis]);
   }
   if (!good) {
-    throw imu_lab::ConfigError("navigate", key,
-                               "is '" + text + "'; give three finite numbers east,north,up in m/s (e.g. 0,0,0 at rest)");
+    throw imu_lab::ConfigError(
+        "navigate", key, "is '" + text + "'; give three finite numbers east,north,up in m/s (e.g. 0,0,0 at rest)");
   }
   return velocity;
 }
@@ -85,8 +85,10 @@ void add_options(CLI::App& app, CommandLine& c) {
   app.add_option("--input-type", c.input_type, "imu (sensor_msgs/Imu rates) or increment (imu_lab/ImuIncrement)")
       ->capture_default_str();
   app.add_option("--truth-topic", c.bag.truth_topic, "imu_lab/ImuTruth topic to compare with")->capture_default_str();
-  app.add_option("--alignment-duration-s", c.alignment_duration_s, "static alignment length [s]")->capture_default_str();
-  app.add_option("--heading-source", c.heading_source, "gyrocompass or given (--initial-yaw-deg)")->capture_default_str();
+  app.add_option("--alignment-duration-s", c.alignment_duration_s, "static alignment length [s]")
+      ->capture_default_str();
+  app.add_option("--heading-source", c.heading_source, "gyrocompass or given (--initial-yaw-deg)")
+      ->capture_default_str();
   app.add_flag("--no-align", c.no_align,
                "start from a given state at the first sample instead of aligning at rest (default: the truth's)");
   c.attitude_options = {
@@ -142,8 +144,9 @@ void fill_settings(CommandLine& c) {
   const bool truth_wanted = !position_given || (c.no_align && (!attitude_given || !velocity_given));
   const auto truth = truth_wanted ? truth_at_start(c.recording.recording(), c.bag) : std::nullopt;
   if (!position_given && !truth) {
-    throw imu_lab::ConfigError("navigate", "--latitude-deg/--longitude-deg/--height-m",
-                               "the bag has no " + c.bag.truth_topic + " to take the initial position from; give all three");
+    throw imu_lab::ConfigError(
+        "navigate", "--latitude-deg/--longitude-deg/--height-m",
+        "the bag has no " + c.bag.truth_topic + " to take the initial position from; give all three");
   }
   // The truth's own values, not converted to degrees and back.
   s.latitude_rad = std::isnan(c.latitude_deg) ? truth->latitude_rad : c.latitude_deg * kDegToRad;
@@ -182,19 +185,22 @@ std::string predicted_error_text(const imu_lab::pipeline::AlignmentResult& a, bo
   if (a.method == "given_attitude") return "no predicted error (attitude given, not estimated)";
   if (!expected_given) {
     return "no predicted error (give the expected sensor errors: --expected-gyro-bias-rad-s, "
-           "--expected-accel-bias-m-s2, --gyro-noise-density-rad-s-per-sqrt-hz, --accel-noise-density-m-s2-per-sqrt-hz)";
+           "--expected-accel-bias-m-s2, --gyro-noise-density-rad-s-per-sqrt-hz, "
+           "--accel-noise-density-m-s2-per-sqrt-hz)";
   }
   const std::string tilts = imu_lab::format_number(arcsec.x(), 3) + " " + imu_lab::format_number(arcsec.y(), 3);
-  if (!std::isfinite(arcsec.z())) return "predicted 1-sigma tilt error E/N " + tilts + " arcsec (heading given, not estimated)";
+  if (!std::isfinite(arcsec.z()))
+    return "predicted 1-sigma tilt error E/N " + tilts + " arcsec (heading given, not estimated)";
   return "predicted 1-sigma error E/N/U " + tilts + " " + imu_lab::format_number(arcsec.z(), 3) + " arcsec";
 }
 
 void print_summary(const CommandLine& c, const imu_lab::ros_io::BagNavigationResult& result) {
   const auto& n = result.counters;
-  std::printf("navigate: %s, topic %s: %zu messages, %llu used, skipped %llu invalid, %llu unordered, %llu after gaps\n",
-              c.recording.recording().name().c_str(), result.topic.c_str(), result.messages, static_cast<unsigned long long>(n.used),
-              static_cast<unsigned long long>(n.invalid), static_cast<unsigned long long>(n.unordered),
-              static_cast<unsigned long long>(n.gaps));
+  std::printf(
+      "navigate: %s, topic %s: %zu messages, %llu used, skipped %llu invalid, %llu unordered, %llu after gaps\n",
+      c.recording.recording().name().c_str(), result.topic.c_str(), result.messages,
+      static_cast<unsigned long long>(n.used), static_cast<unsigned long long>(n.invalid),
+      static_cast<unsigned long long>(n.unordered), static_cast<unsigned long long>(n.gaps));
   const auto& a = *result.alignment;
   std::printf("alignment (%s, %.1f s, ends %s): roll %.6f pitch %.6f yaw %.6f deg; %s\n", a.method.c_str(),
               a.duration_s, imu_lab::pipeline::format_stamp(a.stamp_ns).c_str(), a.roll_pitch_yaw_rad.x() / kDegToRad,
@@ -218,23 +224,25 @@ void print_summary(const CommandLine& c, const imu_lab::ros_io::BagNavigationRes
     max_attitude = std::max(max_attitude, e.attitude_error_enu_rad.norm());
   }
   const auto& e = result.errors.back();
-  std::printf("error vs truth after %.1f s: horizontal position %.4f m (max %.4f), height %.4f m (max |%.4f|), "
-              "attitude E/N/U %.3f %.3f %.3f arcsec (max |%.3f|)\n",
-              e.time_since_alignment_s, e.horizontal_position_error_m, max_horizontal, e.height_error_m, max_height,
-              e.attitude_error_enu_rad.x() * kArcsecPerRad, e.attitude_error_enu_rad.y() * kArcsecPerRad,
-              e.attitude_error_enu_rad.z() * kArcsecPerRad, max_attitude * kArcsecPerRad);
+  std::printf(
+      "error vs truth after %.1f s: horizontal position %.4f m (max %.4f), height %.4f m (max |%.4f|), "
+      "attitude E/N/U %.3f %.3f %.3f arcsec (max |%.3f|)\n",
+      e.time_since_alignment_s, e.horizontal_position_error_m, max_horizontal, e.height_error_m, max_height,
+      e.attitude_error_enu_rad.x() * kArcsecPerRad, e.attitude_error_enu_rad.y() * kArcsecPerRad,
+      e.attitude_error_enu_rad.z() * kArcsecPerRad, max_attitude * kArcsecPerRad);
 }
 
 std::string default_errors_path(const std::string& out_path) {
   const std::string suffix = ".csv";
-  const bool has_suffix = out_path.size() > suffix.size() &&
-                          out_path.compare(out_path.size() - suffix.size(), suffix.size(), suffix) == 0;
+  const bool has_suffix =
+      out_path.size() > suffix.size() && out_path.compare(out_path.size() - suffix.size(), suffix.size(), suffix) == 0;
   return (has_suffix ? out_path.substr(0, out_path.size() - suffix.size()) : out_path) + "_errors.csv";
 }
 
 void plot(const std::string& errors_path, const std::string& png_path, const std::string& final_png_path) {
   const std::string problem = imu_lab::ros_io::run_plot_script("plot_navigation.py", {errors_path, png_path});
-  if (!problem.empty()) throw imu_lab::OutputError("cannot plot " + final_png_path + ": " + problem + "; nothing written");
+  if (!problem.empty())
+    throw imu_lab::OutputError("cannot plot " + final_png_path + ": " + problem + "; nothing written");
 }
 
 }  // namespace
@@ -251,9 +259,10 @@ int main(int argc, char** argv) {
     const auto result = imu_lab::ros_io::navigate_bag(c.recording.recording(), c.bag, c.settings);
     const auto& n = result.counters;
     if (!c.skip_bad_samples && n.invalid + n.unordered > 0) {
-      throw imu_lab::InputError("bag " + c.recording.recording().name() + ", topic " + result.topic + ": " + std::to_string(n.invalid) +
-                                " samples with NaN/Inf, a value beyond +-1e100 or a bad interval and " + std::to_string(n.unordered) +
-                                " unordered stamps, first " + result.first_problem +
+      throw imu_lab::InputError("bag " + c.recording.recording().name() + ", topic " + result.topic + ": " +
+                                std::to_string(n.invalid) +
+                                " samples with NaN/Inf, a value beyond +-1e100 or a bad interval and " +
+                                std::to_string(n.unordered) + " unordered stamps, first " + result.first_problem +
                                 "; nothing written (repair the bag, or pass --skip-bad-samples to skip them)");
     }
     print_summary(c, result);
@@ -267,7 +276,8 @@ int main(int argc, char** argv) {
       if (!c.plot_path.empty()) plot(staged_errors, outputs.stage(c.plot_path), c.plot_path);
     } else {
       outputs.remove_at_commit(errors_path);  // an earlier run's, which would not belong to this trajectory
-      if (!c.plot_path.empty()) std::cerr << "navigate: no " << c.bag.truth_topic << " in the bag, so no error to plot\n";
+      if (!c.plot_path.empty())
+        std::cerr << "navigate: no " << c.bag.truth_topic << " in the bag, so no error to plot\n";
     }
     outputs.commit();
     std::printf("navigate: wrote %s (%zu rows)\n", c.out_path.c_str(), result.solutions.size());

@@ -30,17 +30,27 @@ int main(int argc, char** argv) {
   imu_lab::ros_io::add_recording_arguments(app, recording, "rate-table bag", true);
   app.add_option("-o,--out", out_directory, "report directory (created)")->capture_default_str();
   app.add_option("--topic", topic, "sensor_msgs/Imu topic (default: the only one in the bag)");
-  app.add_option("--scenario", scenario_name, "rate_table scenario the bag was emulated from (name in config/scenarios or path)");
+  app.add_option("--scenario", scenario_name,
+                 "rate_table scenario the bag was emulated from (name in config/scenarios or path)");
   app.add_option("--table", table_path, "YAML describing a real table's run: site, axis, mount, nominal rates");
-  app.add_option("--window-s", options.plateaus.window_s, "plateau detection window")->capture_default_str()->check(positive());
+  app.add_option("--window-s", options.plateaus.window_s, "plateau detection window")
+      ->capture_default_str()
+      ->check(positive());
   app.add_option("--threshold-sigmas", options.plateaus.threshold_sigmas,
                  "steady: neighbouring window means within this many noise sigmas")
       ->capture_default_str()
       ->check(positive());
-  app.add_option("--threshold-rad-s", options.plateaus.threshold_rad_s, "steady threshold (default: from the noise)")->check(non_negative());
-  app.add_option("--guard-s", options.plateaus.guard_s, "dropped at each end of a plateau")->capture_default_str()->check(non_negative());
-  app.add_option("--min-plateau-s", options.plateaus.min_duration_s, "shortest plateau kept")->capture_default_str()->check(positive());
-  app.add_option("--block-s", options.block_s, "block length for the noise of a plateau mean")->capture_default_str()->check(positive());
+  app.add_option("--threshold-rad-s", options.plateaus.threshold_rad_s, "steady threshold (default: from the noise)")
+      ->check(non_negative());
+  app.add_option("--guard-s", options.plateaus.guard_s, "dropped at each end of a plateau")
+      ->capture_default_str()
+      ->check(non_negative());
+  app.add_option("--min-plateau-s", options.plateaus.min_duration_s, "shortest plateau kept")
+      ->capture_default_str()
+      ->check(positive());
+  app.add_option("--block-s", options.block_s, "block length for the noise of a plateau mean")
+      ->capture_default_str()
+      ->check(positive());
   if (const auto status = imu_lab::parse_tool_options("rate_table", app, argc, argv)) return *status;
 
   imu_lab::ToolInput input = recording.tool_input(topic);
@@ -49,10 +59,9 @@ int main(int argc, char** argv) {
       throw imu_lab::ConfigError("rate_table", "--scenario/--table", "give exactly one of the two");
     }
     const imu_lab::rate_table::RateTableSetup setup =
-        scenario_name.empty()
-            ? imu_lab::rate_table::load_rate_table_setup(table_path)
-            : imu_lab::rate_table::setup_from_scenario(
-                  imu_lab::emulator::load_scenario(imu_lab::ros_io::resolve_config("scenarios", scenario_name)));
+        scenario_name.empty() ? imu_lab::rate_table::load_rate_table_setup(table_path)
+                              : imu_lab::rate_table::setup_from_scenario(imu_lab::emulator::load_scenario(
+                                    imu_lab::ros_io::resolve_config("scenarios", scenario_name)));
 
     const imu_lab::ros_io::BagRecording bag = recording.recording();
     input.topic = topic = imu_lab::ros_io::choose_imu_topic(bag, topic);

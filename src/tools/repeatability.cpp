@@ -69,7 +69,8 @@ std::vector<std::pair<std::string, double>> calibration_parameters(const std::st
   const auto calibration = imu_lab::calib::load_calibration(path);
   std::vector<std::pair<std::string, double>> parameters;
   const char* axes = "xyz";
-  for (const auto& [triad, name] : {std::pair{&calibration.gyro, "gyro"}, std::pair{&calibration.accelerometer, "accel"}}) {
+  for (const auto& [triad, name] :
+       {std::pair{&calibration.gyro, "gyro"}, std::pair{&calibration.accelerometer, "accel"}}) {
     const Eigen::Vector3d ppm = triad->scale_factor_error_ppm();
     const Eigen::Matrix3d arcsec = triad->misalignment_arcsec();
     for (int i = 0; i < 3; ++i) {
@@ -102,7 +103,8 @@ int main(int argc, char** argv) {
   app.add_option("--end-s", window.end_s, "... up to this many seconds after its first stamp");
   app.add_option("--noise-reports", noise_reports, "the runs' noise.yaml (from allan), in the order of the runs");
   app.add_option("--calibrations", calibrations, "several fit_calibration results of the unit");
-  app.add_option("--confidence", confidence, "two-sided confidence of the chi-squared intervals")->capture_default_str();
+  app.add_option("--confidence", confidence, "two-sided confidence of the chi-squared intervals")
+      ->capture_default_str();
   app.add_flag("--no-plot", no_plot, "do not write repeatability.png");
   if (const auto status = imu_lab::parse_tool_options("repeatability", app, argc, argv)) return *status;
 
@@ -130,8 +132,8 @@ int main(int argc, char** argv) {
       for (std::size_t k = 0; k < runs.size(); ++k) {
         summaries.push_back(read_run(runs[k], window, topic));
         if (!noise_reports.empty()) {
-          summaries.back().terms = rep::identified_terms(
-              imu_lab::identify::read_noise_report_values(read_noise_report(noise_reports[k])));
+          summaries.back().terms =
+              rep::identified_terms(imu_lab::identify::read_noise_report_values(read_noise_report(noise_reports[k])));
         }
         std::fprintf(stderr, "repeatability: run %zu/%zu %s: %zu samples\n", k + 1, runs.size(),
                      summaries.back().name.c_str(), summaries.back().sample_count);
@@ -155,7 +157,8 @@ int main(int argc, char** argv) {
         const std::string problem =
             imu_lab::ros_io::run_plot_script("plot_repeatability.py", {csv, staging + "/repeatability.png"});
         if (!problem.empty()) {
-          std::fprintf(stderr, "repeatability: warning: plotting failed (%s); the CSV is the result\n", problem.c_str());
+          std::fprintf(stderr, "repeatability: warning: plotting failed (%s); the CSV is the result\n",
+                       problem.c_str());
         } else {
           written.push_back("repeatability.png");
         }
@@ -175,7 +178,8 @@ int main(int argc, char** argv) {
       written.push_back("calibration_repeatability.csv");
     }
     outputs.commit();
-    for (const std::string& name : written) std::printf("repeatability: wrote %s/%s\n", out_directory.c_str(), name.c_str());
+    for (const std::string& name : written)
+      std::printf("repeatability: wrote %s/%s\n", out_directory.c_str(), name.c_str());
     return 0;
   });
 }

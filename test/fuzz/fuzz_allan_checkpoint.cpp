@@ -49,7 +49,8 @@ void load_and_resume(const std::string& path) {
   std::vector<std::int64_t> stamps_ns(kResumedSampleCount);
   std::vector<double> values(kResumedSampleCount * channel_count);
   for (std::int64_t k = 0; k < kResumedSampleCount; ++k) {
-    stamps_ns[k] = static_cast<std::int64_t>(static_cast<std::uint64_t>(engine.last_stamp_ns()) + (k + 1) * interval_ns);
+    stamps_ns[k] =
+        static_cast<std::int64_t>(static_cast<std::uint64_t>(engine.last_stamp_ns()) + (k + 1) * interval_ns);
     for (std::size_t c = 0; c < channel_count; ++c) values[k * channel_count + c] = 1e-3 * k + static_cast<double>(c);
   }
   engine.push_block(stamps_ns.data(), values.data(), kResumedSampleCount);

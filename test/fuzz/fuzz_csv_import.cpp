@@ -45,7 +45,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // relative time column moved), so the header inference meets every header too.
   mapping.infer_from_file = (data[0] / options.size()) % 2 == 1;
   const std::string text(reinterpret_cast<const char*>(data + 1), size - 1);
-  return imu_lab::fuzz::refusals_allowed([&] {
-    imu_lab::io::parse_imu_csv_text(text, mapping).summary.describe_rejections("fuzz.csv");
-  });
+  return imu_lab::fuzz::refusals_allowed(
+      [&] { imu_lab::io::parse_imu_csv_text(text, mapping).summary.describe_rejections("fuzz.csv"); });
 }

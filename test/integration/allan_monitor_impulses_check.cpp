@@ -20,7 +20,8 @@ constexpr double kKnock_s = 30.0;  // from the first stamp
 // The emulated tactical MEMS at rest, with a knock: accelerometer z rings at 0.5 m/s^2 (some
 // hundreds of its noise) decaying over 0.1 s, gyro x at 0.01 rad/s, and a bias step of 1 mm/s^2.
 std::size_t write_knocked_bag(const std::string& path) {
-  const auto profile = imu_lab::emulator::load_sensor_profile(imu_lab::ros_io::resolve_config("sensors", "tactical_mems"));
+  const auto profile =
+      imu_lab::emulator::load_sensor_profile(imu_lab::ros_io::resolve_config("sensors", "tactical_mems"));
   const auto scenario = imu_lab::emulator::load_scenario(imu_lab::ros_io::resolve_config("scenarios", "static"));
   imu_lab::emulator::EmulatorSettings settings;
   settings.rate_hz = kEmulatedRate_hz;
@@ -122,9 +123,10 @@ TEST(AllanMonitorImpulses, AKnockIsWarnedAboutListedAndSplitsTheRunAsTheToolDoes
             static_cast<std::int64_t>(messages));
   EXPECT_EQ(summary["channels"]["accel_z"]["segments"].as<int>(), 2);
   const double difference = max_relative_difference(report_dir, tool.snapshot);
-  std::printf("allan_monitor vs allan tool on a knocked bag of %zu messages: event at %.3f s, max relative "
-              "difference %.3g over 9 statistics\n",
-              messages, event["onset_from_start_s"].as<double>(), difference);
+  std::printf(
+      "allan_monitor vs allan tool on a knocked bag of %zu messages: event at %.3f s, max relative "
+      "difference %.3g over 9 statistics\n",
+      messages, event["onset_from_start_s"].as<double>(), difference);
   EXPECT_LE(difference, 1e-12);
 }
 

@@ -37,8 +37,8 @@ TEST(AllanMonitorReplay, CurvesEqualTheToolsOnTheSameBag) {
 
   const auto tool = tool_result(bag);
   const double difference = max_relative_difference(report_dir, tool);
-  std::printf("allan_monitor vs allan tool on %zu messages: max relative difference %.3g over 9 statistics\n",
-              messages, difference);
+  std::printf("allan_monitor vs allan tool on %zu messages: max relative difference %.3g over 9 statistics\n", messages,
+              difference);
   EXPECT_LE(difference, 1e-12);
 
   // The published curve is the same as the report's.

@@ -20,8 +20,11 @@ constexpr double kFirstPart_s = 80.0;
 constexpr double kReplayedBeforeCheckpoint_s = 2.0;  // the second node must skip these
 
 std::vector<std::string> monitor_parameters(const std::string& directory, const std::string& report, bool resume) {
-  return {"_checkpoint_path:=" + directory + "/allan.checkpoint", "_checkpoint_period_s:=0.5",
-          "_report_dir:=" + report, "_plot:=false", "_publish_period_s:=0.5",
+  return {"_checkpoint_path:=" + directory + "/allan.checkpoint",
+          "_checkpoint_period_s:=0.5",
+          "_report_dir:=" + report,
+          "_plot:=false",
+          "_publish_period_s:=0.5",
           std::string("_resume:=") + (resume ? "true" : "false")};
 }
 
@@ -81,9 +84,10 @@ TEST(AllanMonitorResume, RestartFromTheCheckpointEndsWithTheUninterruptedResult)
   second.stop(SIGINT);
 
   const double difference = max_relative_difference(report, tool_result(bag));
-  std::printf("allan_monitor resumed from a checkpoint at sample %lld of %zu: max relative difference to the "
-              "uninterrupted result %.3g over 9 statistics\n",
-              static_cast<long long>(checkpoint_samples), messages, difference);
+  std::printf(
+      "allan_monitor resumed from a checkpoint at sample %lld of %zu: max relative difference to the "
+      "uninterrupted result %.3g over 9 statistics\n",
+      static_cast<long long>(checkpoint_samples), messages, difference);
   EXPECT_LE(difference, 1e-12);
 
   const YAML::Node summary = YAML::LoadFile(report + "/allan_summary.yaml");

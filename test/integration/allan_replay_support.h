@@ -96,10 +96,10 @@ class MonitorProcess {
 class LatestCurves {
  public:
   explicit LatestCurves(ros::NodeHandle& node) {
-    subscriber_ = node.subscribe<imu_lab::AllanDeviation>(
-        "/allan/gyro", 100, [this](const imu_lab::AllanDeviation::ConstPtr& message) {
-          if (message->statistic == "oadev") latest_ = *message;
-        });
+    subscriber_ = node.subscribe<imu_lab::AllanDeviation>("/allan/gyro", 100,
+                                                          [this](const imu_lab::AllanDeviation::ConstPtr& message) {
+                                                            if (message->statistic == "oadev") latest_ = *message;
+                                                          });
   }
   // Waits (wall clock, generous for a loaded machine) until the node reports `samples`.
   bool wait_for_samples(std::uint64_t samples, double timeout_s) {

@@ -40,13 +40,16 @@ TEST(CalibrationCorrectorNode, PublishesTheCoreCorrectionOfEverySample) {
 
   ros::NodeHandle node;
   std::map<std::int64_t, sensor_msgs::Imu> outputs;
-  auto subscriber = node.subscribe<sensor_msgs::Imu>("/imu/corrected", 100000, [&](const sensor_msgs::Imu::ConstPtr& m) {
-    outputs[static_cast<std::int64_t>(m->header.stamp.toNSec())] = *m;
-  });
+  auto subscriber = node.subscribe<sensor_msgs::Imu>(
+      "/imu/corrected", 100000,
+      [&](const sensor_msgs::Imu::ConstPtr& m) { outputs[static_cast<std::int64_t>(m->header.stamp.toNSec())] = *m; });
   // The node's output reaches this checker only once their connection exists (registration
   // comes first): the playback waits for it, not for a pause a busy machine could outlast.
   ASSERT_TRUE(imu_lab::connection_check::wait_until(
-      [] { return imu_lab::connection_check::sends("/calibration_corrector", "/imu/corrected", ros::this_node::getName()); }, 60.0))
+      [] {
+        return imu_lab::connection_check::sends("/calibration_corrector", "/imu/corrected", ros::this_node::getName());
+      },
+      60.0))
       << "/calibration_corrector never connected to this checker";
   const std::string play = "rosbag play --clock --wait-for-subscribers --quiet --queue=100000 " + bag + " " +
                            private_string("play_arguments") + " > " + directory + "/play.log 2>&1";
@@ -67,15 +70,17 @@ TEST(CalibrationCorrectorNode, PublishesTheCoreCorrectionOfEverySample) {
     const auto found = outputs.find(stamp_ns);
     ASSERT_NE(found, outputs.end()) << "no corrected sample at " << stamp_ns << " ns";
     const auto expected = calibration.correct(input.angular_rate_rad_s, input.specific_force_m_s2);
-    worst_rate_rad_s = std::max(worst_rate_rad_s,
-                                (vector_of(found->second.angular_velocity) - expected.angular_rate_rad_s).norm());
+    worst_rate_rad_s =
+        std::max(worst_rate_rad_s, (vector_of(found->second.angular_velocity) - expected.angular_rate_rad_s).norm());
     worst_force_m_s2 = std::max(worst_force_m_s2,
                                 (vector_of(found->second.linear_acceleration) - expected.specific_force_m_s2).norm());
-    largest_change_m_s2 = std::max(largest_change_m_s2, (expected.specific_force_m_s2 - input.specific_force_m_s2).norm());
+    largest_change_m_s2 =
+        std::max(largest_change_m_s2, (expected.specific_force_m_s2 - input.specific_force_m_s2).norm());
   }
-  std::printf("[calibration_corrector_check] %zu samples: worst difference from the core %.3g rad/s, %.3g m/s^2 "
-              "(the correction itself moves the force by up to %.3g m/s^2)\n",
-              outputs.size(), worst_rate_rad_s, worst_force_m_s2, largest_change_m_s2);
+  std::printf(
+      "[calibration_corrector_check] %zu samples: worst difference from the core %.3g rad/s, %.3g m/s^2 "
+      "(the correction itself moves the force by up to %.3g m/s^2)\n",
+      outputs.size(), worst_rate_rad_s, worst_force_m_s2, largest_change_m_s2);
   EXPECT_LT(worst_rate_rad_s, 1e-15);
   EXPECT_LT(worst_force_m_s2, 1e-13);
   EXPECT_GT(largest_change_m_s2, 1e-3);  // the calibration really changes the data
@@ -95,7 +100,8 @@ TEST(CalibrationCorrectorNode, DropsDuplicateOutOfOrderAndIncompleteSamples) {
   using imu_lab::connection_check::sends;
   ASSERT_TRUE(imu_lab::connection_check::wait_until(
       [&] {
-        return publisher.getNumSubscribers() > 0 && sends("/calibration_corrector", "/imu/corrected", ros::this_node::getName());
+        return publisher.getNumSubscribers() > 0 &&
+               sends("/calibration_corrector", "/imu/corrected", ros::this_node::getName());
       },
       60.0));
   // After the bag of the test before (the node's stamps only move forward).
@@ -110,9 +116,9 @@ TEST(CalibrationCorrectorNode, DropsDuplicateOutOfOrderAndIncompleteSamples) {
     publisher.publish(message);
   };
   send(start_ns, true);
-  send(start_ns, true);                 // duplicate
-  send(start_ns - 50 * step_ns, true);  // out of order
-  send(start_ns + step_ns, false);      // no gyro data
+  send(start_ns, true);                       // duplicate
+  send(start_ns - 50 * step_ns, true);        // out of order
+  send(start_ns + step_ns, false);            // no gyro data
   send(start_ns + 2 * step_ns, true, 1e308);  // beyond +-1e100
   send(start_ns + 3 * step_ns, true);         // the last: once it is in, everything before it is
   ASSERT_TRUE(imu_lab::connection_check::wait_until(

@@ -41,17 +41,18 @@ Collected collect(std::size_t count) {
   auto raw = node.subscribe<sensor_msgs::Imu>("imu/raw", queue, [&](const sensor_msgs::Imu::ConstPtr& m) {
     if (collected.raw.size() < count) collected.raw.push_back(*m);
   });
-  auto increment = node.subscribe<imu_lab::ImuIncrement>(
-      "imu/increment", queue, [&](const imu_lab::ImuIncrement::ConstPtr& m) {
+  auto increment =
+      node.subscribe<imu_lab::ImuIncrement>("imu/increment", queue, [&](const imu_lab::ImuIncrement::ConstPtr& m) {
         if (collected.increments.size() < count) collected.increments.push_back(*m);
       });
   auto truth = node.subscribe<imu_lab::ImuTruth>("imu/truth", queue, [&](const imu_lab::ImuTruth::ConstPtr& m) {
     if (collected.truth.size() < count) collected.truth.push_back(*m);
   });
-  auto temperature = node.subscribe<sensor_msgs::Temperature>(
-      "imu/temperature", queue, [&](const sensor_msgs::Temperature::ConstPtr& m) {
-        if (collected.temperatures.size() < count) collected.temperatures.push_back(*m);
-      });
+  auto temperature = node.subscribe<sensor_msgs::Temperature>("imu/temperature", queue,
+                                                              [&](const sensor_msgs::Temperature::ConstPtr& m) {
+                                                                if (collected.temperatures.size() < count)
+                                                                  collected.temperatures.push_back(*m);
+                                                              });
   const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(120.0);  // generous for loaded CI
   while (ros::ok() && ros::WallTime::now() < deadline &&
          std::min({collected.raw.size(), collected.increments.size(), collected.truth.size(),
@@ -89,8 +90,9 @@ TEST(ImuEmulatorNode, PublishesAtTheConfiguredRateWithStrictlyIncreasingStamps) 
   for (const auto& m : collected.increments) increment_by_stamp[m.header.stamp] = &m;
   std::map<ros::Time, const imu_lab::ImuTruth*> truth_by_stamp;
   for (const auto& m : collected.truth) truth_by_stamp[m.header.stamp] = &m;
-  const ros::Time common_start = std::max({collected.raw.front().header.stamp, collected.increments.front().header.stamp,
-                                           collected.truth.front().header.stamp});
+  const ros::Time common_start =
+      std::max({collected.raw.front().header.stamp, collected.increments.front().header.stamp,
+                collected.truth.front().header.stamp});
   const ros::Time common_end = std::min({collected.raw.back().header.stamp, collected.increments.back().header.stamp,
                                          collected.truth.back().header.stamp});
   std::size_t matched = 0;

@@ -57,9 +57,7 @@ double private_double(const std::string& name) {
   return value;
 }
 
-void run_or_fail(const std::string& command) {
-  ASSERT_EQ(std::system(command.c_str()), 0) << "failed: " << command;
-}
+void run_or_fail(const std::string& command) { ASSERT_EQ(std::system(command.c_str()), 0) << "failed: " << command; }
 
 // roslaunch in its own process group: SIGINT stops it and its nodes; the group is killed if not.
 pid_t start_launch(const std::string& command) {
@@ -132,8 +130,7 @@ RunError horizontal_error(const std::map<std::int64_t, Eigen::Vector3d>& positio
     const auto found = truth.find(stamp_ns);
     if (found == truth.end()) continue;
     const auto& t = found->second;
-    const double horizontal_m =
-        (position - world.enu_m(t.latitude_rad, t.longitude_rad, t.height_m)).head<2>().norm();
+    const double horizontal_m = (position - world.enu_m(t.latitude_rad, t.longitude_rad, t.height_m)).head<2>().norm();
     error.max_horizontal_m = std::max(error.max_horizontal_m, horizontal_m);
     error.final_horizontal_m = horizontal_m;
     ++error.compared;
@@ -160,8 +157,8 @@ TEST(FullChain, CorrectedNavigationIsTenTimesBetterAndItsNoiseIsTheProfiles) {
               " --out " + navigation_bag + log);
   run_or_fail("rosrun imu_lab fit_thermal " + thermal_bag + " " + private_string("fit_thermal_arguments") + " --out " +
               thermal_model + log);
-  run_or_fail("rosrun imu_lab fit_calibration " + calibration_bag + " " +
-              private_string("fit_calibration_arguments") + " --out " + calibration + log);
+  run_or_fail("rosrun imu_lab fit_calibration " + calibration_bag + " " + private_string("fit_calibration_arguments") +
+              " --out " + calibration + log);
   // replace_thermal_model, replace_calibration: files the chain uses instead of the fitted ones,
   // to check that the test fails (full_chain.test's arguments of the same names).
   const auto replaced = [](const std::string& name, const std::string& fitted) {
@@ -184,13 +181,13 @@ TEST(FullChain, CorrectedNavigationIsTenTimesBetterAndItsNoiseIsTheProfiles) {
   std::vector<CorrectedSample> corrected;
   std::map<std::int64_t, Eigen::Vector3d> chain_positions_enu_m;
   std::size_t allan_messages = 0;
-  auto corrected_subscriber = node.subscribe<sensor_msgs::Imu>(
-      "/imu/corrected", 100000, [&](const sensor_msgs::Imu::ConstPtr& m) {
+  auto corrected_subscriber =
+      node.subscribe<sensor_msgs::Imu>("/imu/corrected", 100000, [&](const sensor_msgs::Imu::ConstPtr& m) {
         const auto record = imu_lab::ros_io::to_imu_record(*m);
         corrected.push_back({record.stamp_ns, record.angular_rate_rad_s, record.specific_force_m_s2});
       });
-  auto odometry_subscriber = node.subscribe<nav_msgs::Odometry>(
-      "/nav/odometry", 100000, [&](const nav_msgs::Odometry::ConstPtr& m) {
+  auto odometry_subscriber =
+      node.subscribe<nav_msgs::Odometry>("/nav/odometry", 100000, [&](const nav_msgs::Odometry::ConstPtr& m) {
         const auto& p = m->pose.pose.position;
         chain_positions_enu_m[static_cast<std::int64_t>(m->header.stamp.toNSec())] = Eigen::Vector3d(p.x, p.y, p.z);
       });
@@ -200,9 +197,9 @@ TEST(FullChain, CorrectedNavigationIsTenTimesBetterAndItsNoiseIsTheProfiles) {
   const std::string site = private_string("site_arguments");
   RunningLaunch launch;
   launch.pid = start_launch("roslaunch imu_lab full_chain.launch rviz:=false bag:=" + navigation_bag +
-                                    " thermal_model:=" + used_thermal_model + " calibration:=" + used_calibration + " " +
-                                    site + " " + private_string("launch_arguments") +
-                                    " allan_report_dir:=" + directory + "/allan_report play_args:='--pause --keep-alive' > " + directory + "/launch.log 2>&1");
+                            " thermal_model:=" + used_thermal_model + " calibration:=" + used_calibration + " " + site +
+                            " " + private_string("launch_arguments") + " allan_report_dir:=" + directory +
+                            "/allan_report play_args:='--pause --keep-alive' > " + directory + "/launch.log 2>&1");
   ASSERT_GT(launch.pid, 0);
 
   // Start the playback once every stage has registered and the checker is connected: a sample
@@ -257,22 +254,25 @@ TEST(FullChain, CorrectedNavigationIsTenTimesBetterAndItsNoiseIsTheProfiles) {
 
   // 4: the raw run through the same navigation, and both against the truth.
   const std::string raw_trajectory = directory + "/raw_trajectory.csv";
-  run_or_fail("rosrun imu_lab navigate " + navigation_bag + " --topic /imu/raw " + private_string("navigate_arguments") +
-              " --out " + raw_trajectory + log);
+  run_or_fail("rosrun imu_lab navigate " + navigation_bag + " --topic /imu/raw " +
+              private_string("navigate_arguments") + " --out " + raw_trajectory + log);
   std::map<std::int64_t, Eigen::Vector3d> raw_positions_enu_m;
   for (const auto& solution : imu_lab::pipeline::read_trajectory_csv(raw_trajectory)) {
-    if (chain_positions_enu_m.count(solution.stamp_ns)) raw_positions_enu_m[solution.stamp_ns] = solution.position_enu_m;
+    if (chain_positions_enu_m.count(solution.stamp_ns))
+      raw_positions_enu_m[solution.stamp_ns] = solution.position_enu_m;
   }
   const imu_lab::nav::LocalEnuFrame world(imu_lab::nav::EarthModelConfig{}, private_double("latitude_deg") * kDegToRad,
-                                             private_double("longitude_deg") * kDegToRad, private_double("height_m"));
+                                          private_double("longitude_deg") * kDegToRad, private_double("height_m"));
   const RunError chain_error = horizontal_error(chain_positions_enu_m, truth, world);
   const RunError raw_error = horizontal_error(raw_positions_enu_m, truth, world);
   ASSERT_EQ(chain_error.compared, raw_error.compared);
   ASSERT_GT(chain_error.compared, 1000u);
   const double improvement = raw_error.max_horizontal_m / chain_error.max_horizontal_m;
-  std::printf("full_chain_check: largest horizontal error over %zu solutions: raw %.1f m, corrected chain %.2f m "
-              "(%.1fx); at the end: %.1f m, %.2f m\n", chain_error.compared, raw_error.max_horizontal_m,
-              chain_error.max_horizontal_m, improvement, raw_error.final_horizontal_m, chain_error.final_horizontal_m);
+  std::printf(
+      "full_chain_check: largest horizontal error over %zu solutions: raw %.1f m, corrected chain %.2f m "
+      "(%.1fx); at the end: %.1f m, %.2f m\n",
+      chain_error.compared, raw_error.max_horizontal_m, chain_error.max_horizontal_m, improvement,
+      raw_error.final_horizontal_m, chain_error.final_horizontal_m);
   EXPECT_GE(improvement, 10.0) << "raw " << raw_error.max_horizontal_m << " m, corrected "
                                << chain_error.max_horizontal_m << " m";
 
@@ -298,18 +298,18 @@ TEST(FullChain, CorrectedNavigationIsTenTimesBetterAndItsNoiseIsTheProfiles) {
   for (int c = 0; c < 6; ++c) {
     const bool gyro = c < 3;
     const auto& triad = gyro ? sensor.gyro : sensor.accelerometer;
-    const Eigen::Matrix3d k_inverse =
-        (gyro ? fitted.gyro : fitted.accelerometer).scale_misalignment.inverse();
+    const Eigen::Matrix3d k_inverse = (gyro ? fitted.gyro : fitted.accelerometer).scale_misalignment.inverse();
     const int axis = c % 3;
     const auto expected_avar = [&](double tau_s) {
       double avar = 0.0;
       for (int j = 0; j < 3; ++j) {
-        avar += k_inverse(axis, j) * k_inverse(axis, j) * imu_lab::emulator::analytic_axis_avar(triad, j, tau_s, tau0_s);
+        avar +=
+            k_inverse(axis, j) * k_inverse(axis, j) * imu_lab::emulator::analytic_axis_avar(triad, j, tau_s, tau0_s);
       }
       return avar;
     };
-    const auto check = imu_lab::test::check_avar(channels[c], tau0_s, expected_avar, 1, largest_factor,
-                                                 family_confidence_per_channel);
+    const auto check =
+        imu_lab::test::check_avar(channels[c], tau0_s, expected_avar, 1, largest_factor, family_confidence_per_channel);
     EXPECT_TRUE(check.passed()) << "channel " << c << " (" << channels[c].size() << " samples)\n" << check.table;
     std::printf("full_chain_check: channel %d: %d points, worst ratio %.3f (%.2f sigma)\n", c, check.point_count,
                 check.worst_ratio, check.worst_normalised_deviation);

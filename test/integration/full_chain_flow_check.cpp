@@ -17,8 +17,8 @@ TEST(FullChainFlow, EveryStagePublishes) {
   ros::NodeHandle node;
   const int min_messages = ros::param::param("~min_messages", 100);
   const double timeout_s = ros::param::param("~timeout_s", 90.0);
-  std::map<std::string, int> received = {{"/imu/thermal", 0}, {"/imu/corrected", 0}, {"/nav/odometry", 0},
-                                         {"/nav/alignment", 0}, {"/allan/gyro", 0}};
+  std::map<std::string, int> received = {
+      {"/imu/thermal", 0}, {"/imu/corrected", 0}, {"/nav/odometry", 0}, {"/nav/alignment", 0}, {"/allan/gyro", 0}};
   auto count = [&](const std::string& topic) { return [&received, topic](const auto&) { ++received[topic]; }; };
   auto thermal = node.subscribe<sensor_msgs::Imu>("/imu/thermal", 10000, count("/imu/thermal"));
   auto corrected = node.subscribe<sensor_msgs::Imu>("/imu/corrected", 10000, count("/imu/corrected"));
@@ -35,7 +35,8 @@ TEST(FullChainFlow, EveryStagePublishes) {
     ros::spinOnce();
     ros::WallDuration(0.01).sleep();
   }
-  for (const auto& [topic, messages] : received) std::printf("full_chain_flow_check: %s: %d messages\n", topic.c_str(), messages);
+  for (const auto& [topic, messages] : received)
+    std::printf("full_chain_flow_check: %s: %d messages\n", topic.c_str(), messages);
   EXPECT_TRUE(done()) << "a stage of the chain published too little within " << timeout_s << " s";
 }
 

@@ -32,9 +32,7 @@ std::string private_string(const std::string& name) {
   return value;
 }
 
-void run_or_fail(const std::string& command) {
-  ASSERT_EQ(std::system(command.c_str()), 0) << "failed: " << command;
-}
+void run_or_fail(const std::string& command) { ASSERT_EQ(std::system(command.c_str()), 0) << "failed: " << command; }
 
 TEST(StrapdownNavigatorNode, PublishesTheNavigateToolsSolutionAndTheTransform) {
   char pattern[] = "/tmp/imu_lab_navigator_check_XXXXXX";
@@ -63,7 +61,10 @@ TEST(StrapdownNavigatorNode, PublishesTheNavigateToolsSolutionAndTheTransform) {
   // The node's output reaches this checker only once their connection exists (registration
   // comes first): the playback waits for it, not for a pause a busy machine could outlast.
   ASSERT_TRUE(imu_lab::connection_check::wait_until(
-      [] { return imu_lab::connection_check::sends("/strapdown_navigator", "/nav/odometry", ros::this_node::getName()); }, 60.0))
+      [] {
+        return imu_lab::connection_check::sends("/strapdown_navigator", "/nav/odometry", ros::this_node::getName());
+      },
+      60.0))
       << "/strapdown_navigator never connected to this checker";
   const std::string play = "rosbag play --clock --wait-for-subscribers --quiet --queue=100000 " + bag + " " +
                            private_string("play_arguments") + " > " + directory + "/play.log 2>&1";
@@ -116,7 +117,8 @@ TEST(StrapdownNavigatorNode, PublishesTheNavigateToolsSolutionAndTheTransform) {
 
   double v0_m_s = 0.0;
   if (!ros::param::get("~single_channel_velocity_east_m_s", v0_m_s)) return;
-  const double w0 = imu_lab::nav::EarthModel(imu_lab::pipeline::parse_earth_model("sphere", "sphere")).schuler_rate_rad_s();
+  const double w0 =
+      imu_lab::nav::EarthModel(imu_lab::pipeline::parse_earth_model("sphere", "sphere")).schuler_rate_rad_s();
   const double peak_m = std::abs(v0_m_s) / w0;
   const ros::Time start = odometry.begin()->first;
   double worst_m = 0.0, last_t = 0.0;
@@ -127,8 +129,9 @@ TEST(StrapdownNavigatorNode, PublishesTheNavigateToolsSolutionAndTheTransform) {
     worst_m = std::max(worst_m, deviation_m);
     ASSERT_LE(deviation_m, 0.02 * peak_m) << "at t = " << last_t << " s";
   }
-  std::printf("[navigator_check] single channel, v0 %.3g m/s: peak %.1f m, worst deviation %.3g m (%.3g %%) over %.0f s\n",
-              v0_m_s, peak_m, worst_m, 100.0 * worst_m / peak_m, last_t);
+  std::printf(
+      "[navigator_check] single channel, v0 %.3g m/s: peak %.1f m, worst deviation %.3g m (%.3g %%) over %.0f s\n",
+      v0_m_s, peak_m, worst_m, 100.0 * worst_m / peak_m, last_t);
   EXPECT_GE(last_t, 0.99 * 2.0 * M_PI / w0);  // at least a whole Schuler period
 }
 

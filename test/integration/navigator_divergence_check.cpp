@@ -114,7 +114,8 @@ TEST(NavigatorDivergence, StopsReportsAndStartsAgainOnlyWhenTold) {
     const DiagnosticStatus& s = feeder.last_status();
     return s.level == DiagnosticStatus::ERROR && s.message.find("navigation stopped") != std::string::npos &&
            std::stoul("0" + Feeder::value_of(s, "samples ignored since")) >= 200;
-  })) << "no ERROR status naming the stop; last: " << feeder.last_status().message;
+  })) << "no ERROR status naming the stop; last: "
+      << feeder.last_status().message;
   const DiagnosticStatus stopped = feeder.last_status();
   EXPECT_NE(stopped.message.find(where), std::string::npos) << stopped.message;
   EXPECT_NE(stopped.message.find("reinitialise"), std::string::npos) << stopped.message;
@@ -132,7 +133,8 @@ TEST(NavigatorDivergence, StopsReportsAndStartsAgainOnlyWhenTold) {
   ASSERT_TRUE(feeder.feed_until([&] {
     const DiagnosticStatus& s = feeder.last_status();
     return Feeder::value_of(s, "re-initialisations") == "1" && s.level != DiagnosticStatus::ERROR;
-  })) << "the ERROR stays after ~reinitialise: " << feeder.last_status().message;
+  })) << "the ERROR stays after ~reinitialise: "
+      << feeder.last_status().message;
 }
 
 }  // namespace

@@ -89,7 +89,8 @@ class StreamFeeder {
     for (const auto& message : outputs_) {
       if (static_cast<std::int64_t>(message.header.stamp.toNSec()) <= stamp_ns) continue;
       ++count;
-      *all_finite = *all_finite && std::isfinite(message.angular_velocity.x) && std::isfinite(message.angular_velocity.y);
+      *all_finite =
+          *all_finite && std::isfinite(message.angular_velocity.x) && std::isfinite(message.angular_velocity.y);
     }
     return count;
   }
@@ -128,7 +129,8 @@ TEST(NodeDiagnostics, ThermalCompensatorReportsBadInputAndKeepsPublishing) {
   feeder.feed(5, std::numeric_limits<double>::quiet_NaN());
   const std::int64_t after_nan_ns = feeder.stamp_ns();
   // The five may fall into two reports: the count is not checked, the words are.
-  EXPECT_NE(feeder.await_status(DiagnosticStatus::WARN, "samples with NaN/Inf"), "") << "no WARN naming the NaN samples";
+  EXPECT_NE(feeder.await_status(DiagnosticStatus::WARN, "samples with NaN/Inf"), "")
+      << "no WARN naming the NaN samples";
   expect_good_samples_after(feeder, after_nan_ns, "the NaN samples");
 
   feeder.skip(0.5);
@@ -139,7 +141,8 @@ TEST(NodeDiagnostics, ThermalCompensatorReportsBadInputAndKeepsPublishing) {
 
   feeder.thermosensor_on = false;
   feeder.feed(250);
-  EXPECT_NE(feeder.await_status(DiagnosticStatus::ERROR, "stale temperature"), "") << "no ERROR for the silent thermosensor";
+  EXPECT_NE(feeder.await_status(DiagnosticStatus::ERROR, "stale temperature"), "")
+      << "no ERROR for the silent thermosensor";
   feeder.thermosensor_on = true;
   const std::int64_t thermosensor_back_ns = feeder.stamp_ns();
   EXPECT_NE(feeder.await_status(DiagnosticStatus::OK, "compensating"), "") << "no OK once the thermosensor is back";

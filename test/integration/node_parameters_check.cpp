@@ -91,7 +91,8 @@ TEST_F(NodeParameters, ParametersOfTheRightTypeAreRead) {
   EXPECT_EQ(parameter(node, "right_seed", 1), 42);
   EXPECT_EQ(parameter(node, "right_flag", true), false);
   EXPECT_EQ(parameter<std::string>(node, "right_frame", "imu_link"), "base_link");
-  EXPECT_EQ(parameter(node, "right_statistics", std::vector<std::string>()), (std::vector<std::string>{"oadev", "mdev"}));
+  EXPECT_EQ(parameter(node, "right_statistics", std::vector<std::string>()),
+            (std::vector<std::string>{"oadev", "mdev"}));
 }
 
 TEST_F(NodeParameters, AnIntWillDoForADouble) {
@@ -107,7 +108,8 @@ TEST_F(NodeParameters, AStringForADoubleIsRefusedNamingTheParameter) {
   EXPECT_TRUE(contains(message, "expected a number")) << message;
   EXPECT_TRUE(contains(message, "the string 'fast'")) << message;
   // The range-checked readers refuse the same way (they read through parameter()).
-  EXPECT_TRUE(contains(config_error_of([&] { positive_parameter(node, "string_rate_hz", 200.0); }), "the string 'fast'"));
+  EXPECT_TRUE(
+      contains(config_error_of([&] { positive_parameter(node, "string_rate_hz", 200.0); }), "the string 'fast'"));
 }
 
 TEST_F(NodeParameters, ADoubleForAnIntIsRefused) {
@@ -185,7 +187,8 @@ ProcessResult finish(FILE* pipe) {
   ProcessResult result;
   if (pipe == nullptr) return result;
   std::array<char, 4096> buffer;
-  while (const std::size_t count = std::fread(buffer.data(), 1, buffer.size(), pipe)) result.output.append(buffer.data(), count);
+  while (const std::size_t count = std::fread(buffer.data(), 1, buffer.size(), pipe))
+    result.output.append(buffer.data(), count);
   const int status = pclose(pipe);
   result.signalled = WIFSIGNALED(status);
   if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
@@ -239,7 +242,8 @@ TEST(NodeBinaries, AWrongTypedOrNegativeParameterStopsTheNodeNamingIt) {
 
 class RosoutWatch {
  public:
-  explicit RosoutWatch(ros::NodeHandle& node) : subscriber_(node.subscribe("/rosout", 1000, &RosoutWatch::on_log, this)) {}
+  explicit RosoutWatch(ros::NodeHandle& node)
+      : subscriber_(node.subscribe("/rosout", 1000, &RosoutWatch::on_log, this)) {}
 
   // Whether a FATAL line containing `words` arrived within timeout_s.
   bool wait_for_fatal(const std::string& words, double timeout_s) {
@@ -276,10 +280,12 @@ TEST(NodeletManager, AWrongTypedParameterRefusesTheNodeletAndTheManagerLivesOn) 
   ASSERT_TRUE(ros::service::waitForService("/parameter_manager/load_nodelet", ros::Duration(60.0)));
   // The manager's log reaches this checker only once its /rosout connection to it exists.
   ASSERT_TRUE(imu_lab::connection_check::wait_until(
-      [] { return imu_lab::connection_check::sends("/parameter_manager", "/rosout", ros::this_node::getName()); }, 60.0));
+      [] { return imu_lab::connection_check::sends("/parameter_manager", "/rosout", ros::this_node::getName()); },
+      60.0));
 
-  const ProcessResult result = finish(start("rosrun nodelet nodelet load imu_lab/ImuEmulatorNodelet /parameter_manager "
-                         "__name:=bad_rate_nodelet _rate_hz:=fast"));
+  const ProcessResult result =
+      finish(start("rosrun nodelet nodelet load imu_lab/ImuEmulatorNodelet /parameter_manager "
+                   "__name:=bad_rate_nodelet _rate_hz:=fast"));
   EXPECT_FALSE(result.signalled) << result.output;
   EXPECT_NE(result.exit_code, 0) << result.output;
   EXPECT_TRUE(rosout.wait_for_fatal("/bad_rate_nodelet/rate_hz", 20.0));
@@ -335,9 +341,11 @@ TEST(NodeTemplates, EachNodeAcceptsItsTemplateAndReadsExactlyItsKeys) {
   const std::vector<NodeTemplate> templates = {
       {"imu_emulator", {}, starts<ImuEmulatorNode>()},
       {"allan_monitor", {{"report_dir", std::string(scratch) + "/allan_report"}}, starts<AllanMonitorNode>()},
-      {"thermal_compensator", {{"model_file", data + "/thermal/model_uncompensated_mems_gyro.yaml"}},
+      {"thermal_compensator",
+       {{"model_file", data + "/thermal/model_uncompensated_mems_gyro.yaml"}},
        starts<ThermalCompensatorNode>()},
-      {"calibration_corrector", {{"calibration_file", data + "/calibration_example.yaml"}},
+      {"calibration_corrector",
+       {{"calibration_file", data + "/calibration_example.yaml"}},
        starts<CalibrationCorrectorNode>()},
       {"strapdown_navigator", {}, starts<StrapdownNavigatorNode>()},
   };

@@ -29,8 +29,8 @@ void run_or_fail(const std::string& command) { ASSERT_EQ(std::system(command.c_s
 
 // The core library's answer: all readings of the bag, fed in header-stamp order.
 std::map<std::int64_t, imu_lab::thermal::CompensatedSample> reference_of(const std::string& bag, double max_age_s) {
-  imu_lab::thermal::ThermalCompensator compensator(
-      imu_lab::thermal::load_thermal_model(private_string("model_file")), max_age_s);
+  imu_lab::thermal::ThermalCompensator compensator(imu_lab::thermal::load_thermal_model(private_string("model_file")),
+                                                   max_age_s);
   std::vector<imu_lab::io::TemperatureRecord> temperatures;
   imu_lab::ros_io::for_each_temperature(bag, "/imu/temperature", [&](const auto& r) { temperatures.push_back(r); });
   std::vector<imu_lab::thermal::CompensatedSample> ready;
@@ -38,10 +38,12 @@ std::map<std::int64_t, imu_lab::thermal::CompensatedSample> reference_of(const s
   std::size_t next_temperature = 0;
   imu_lab::ros_io::for_each_imu(bag, "/imu/raw", [&](const imu_lab::io::ImuRecord& r) {
     while (next_temperature < temperatures.size() && temperatures[next_temperature].stamp_s <= r.stamp_s) {
-      compensator.add_temperature(temperatures[next_temperature].stamp_s, temperatures[next_temperature].temperature_c, &ready);
+      compensator.add_temperature(temperatures[next_temperature].stamp_s, temperatures[next_temperature].temperature_c,
+                                  &ready);
       ++next_temperature;
     }
-    if (compensator.add_imu({r.stamp_s, r.angular_rate_rad_s, r.specific_force_m_s2}, &ready)) stamps_ns.push_back(r.stamp_ns);
+    if (compensator.add_imu({r.stamp_s, r.angular_rate_rad_s, r.specific_force_m_s2}, &ready))
+      stamps_ns.push_back(r.stamp_ns);
   });
   compensator.flush(&ready);
   std::map<std::int64_t, imu_lab::thermal::CompensatedSample> by_stamp;
@@ -75,7 +77,10 @@ TEST(ThermalCompensatorNode, PublishesTheCoreLibrarysCorrectionOfEverySample) {
   // The node's output reaches this checker only once their connection exists (registration
   // comes first): the playback waits for it, not for a pause a busy machine could outlast.
   ASSERT_TRUE(imu_lab::connection_check::wait_until(
-      [] { return imu_lab::connection_check::sends("/thermal_compensator", "/imu/thermal", ros::this_node::getName()); }, 60.0))
+      [] {
+        return imu_lab::connection_check::sends("/thermal_compensator", "/imu/thermal", ros::this_node::getName());
+      },
+      60.0))
       << "/thermal_compensator never connected to this checker";
   const std::string play = "rosbag play --clock --wait-for-subscribers --quiet --queue=100000 " + bag + " " +
                            private_string("play_arguments") + " > " + directory + "/play.log 2>&1";

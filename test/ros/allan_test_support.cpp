@@ -16,7 +16,7 @@ namespace imu_lab {
 namespace test_support {
 
 std::vector<pipeline::AllanSample> white_noise_samples(std::size_t count, std::int64_t interval_ns, unsigned seed,
-                                                     std::int64_t start_ns) {
+                                                       std::int64_t start_ns) {
   std::mt19937_64 generator(seed);
   std::normal_distribution<double> normal(0.0, 1.0);
   std::vector<pipeline::AllanSample> samples(count);
@@ -28,13 +28,15 @@ std::vector<pipeline::AllanSample> white_noise_samples(std::size_t count, std::i
   return samples;
 }
 
-void write_imu_bag(const std::string& path, const std::vector<pipeline::AllanSample>& samples, const std::string& topic) {
+void write_imu_bag(const std::string& path, const std::vector<pipeline::AllanSample>& samples,
+                   const std::string& topic) {
   ImuBagLayout layout;
   layout.imu_topics = {topic};
   write_imu_bag(path, samples, layout);
 }
 
-void write_imu_bag(const std::string& path, const std::vector<pipeline::AllanSample>& samples, const ImuBagLayout& layout) {
+void write_imu_bag(const std::string& path, const std::vector<pipeline::AllanSample>& samples,
+                   const ImuBagLayout& layout) {
   rosbag::Bag bag(path, rosbag::bagmode::Write);
   std::int64_t record_ns = 0;
   for (std::size_t i = 0; i < samples.size(); ++i) {

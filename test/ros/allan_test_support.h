@@ -15,7 +15,7 @@ namespace test_support {
 // `count` samples of white noise (gyro ~1e-3 rad/s, accel ~1e-2 m/s^2 about gravity on z),
 // stamped every interval_ns from start_ns; the same seed gives the same samples.
 std::vector<pipeline::AllanSample> white_noise_samples(std::size_t count, std::int64_t interval_ns, unsigned seed,
-                                                     std::int64_t start_ns = 1'000'000'000'000'000'000LL);
+                                                       std::int64_t start_ns = 1'000'000'000'000'000'000LL);
 
 // Writes the samples as sensor_msgs/Imu messages on `topic`, each recorded at its stamp.
 void write_imu_bag(const std::string& path, const std::vector<pipeline::AllanSample>& samples,
@@ -29,7 +29,8 @@ struct ImuBagLayout {
   bool without_angular_rate = false;
   bool without_specific_force = false;
 };
-void write_imu_bag(const std::string& path, const std::vector<pipeline::AllanSample>& samples, const ImuBagLayout& layout);
+void write_imu_bag(const std::string& path, const std::vector<pipeline::AllanSample>& samples,
+                   const ImuBagLayout& layout);
 
 YAML::Node read_allan_summary(const std::string& report_directory);
 

@@ -45,8 +45,10 @@ class AllanNoiseReport : public ::testing::Test {
     const std::string profile = directory_ + "/white_and_walk.yaml";
     std::ofstream(profile) << white_and_walk_profile();
     bag_ = directory_ + "/white_and_walk.bag";
-    const auto made = run_tool("emulate", "--profile " + profile + " --duration-s 1200 --rate-hz 50 --seed 11 "
-                                              "--no-truth --out " + bag_);
+    const auto made = run_tool("emulate", "--profile " + profile +
+                                              " --duration-s 1200 --rate-hz 50 --seed 11 "
+                                              "--no-truth --out " +
+                                              bag_);
     ASSERT_EQ(made.exit_code, 0) << made.output;
     report_ = directory_ + "/report";
     const auto run = run_tool("allan", bag_ + " --topic /imu/raw --no-plot --out " + report_);

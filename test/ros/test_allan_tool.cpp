@@ -37,7 +37,8 @@ class AllanTool : public ::testing::Test {
     bag_ = directory_ + "/tactical.bag";
     const auto made = run_tool("emulate", "--profile " + std::string(IMU_LAB_CONFIG_DIR) +
                                               "/sensors/tactical_mems.yaml --duration-s 90 --rate-hz 200 --seed 5 "
-                                              "--no-truth --out " + bag_);
+                                              "--no-truth --out " +
+                                              bag_);
     ASSERT_EQ(made.exit_code, 0) << made.output;
   }
 
@@ -50,9 +51,11 @@ class AllanTool : public ::testing::Test {
       engine.push(sample.stamp_ns, sample.values.data(), sample.values.size());
     };
     if (input == AllanInput::kRate) {
-      imu_lab::ros_io::for_each_imu(bag_, topic, [&](const auto& record) { push(imu_lab::pipeline::to_allan_sample(record)); });
+      imu_lab::ros_io::for_each_imu(bag_, topic,
+                                    [&](const auto& record) { push(imu_lab::pipeline::to_allan_sample(record)); });
     } else {
-      imu_lab::ros_io::for_each_increment(bag_, topic, [&](const auto& record) { push(imu_lab::pipeline::to_allan_sample(record)); });
+      imu_lab::ros_io::for_each_increment(
+          bag_, topic, [&](const auto& record) { push(imu_lab::pipeline::to_allan_sample(record)); });
     }
     return engine.snapshot();
   }
@@ -140,11 +143,12 @@ TEST(AllanToolRealBags, BothReferenceBagsGoThroughWithTheirSamplePeriodAndJitter
     const double tau0_s = summary["tau0_s"].as<double>();
     const double rms_s = summary["interval_rms_deviation_s"].as<double>();
     const double max_s = summary["interval_max_deviation_s"].as<double>();
-    std::printf("%s: %lld samples, tau0 %.6g s (%.4g Hz), interval jitter rms %.3g s, max %.3g s; %lld gaps, "
-                "%lld duplicates, %lld out of order\n",
-                name, summary["samples"].as<long long>(), tau0_s, 1.0 / tau0_s, rms_s, max_s,
-                summary["gaps"]["count"].as<long long>(), summary["duplicates"]["count"].as<long long>(),
-                summary["out_of_order"]["count"].as<long long>());
+    std::printf(
+        "%s: %lld samples, tau0 %.6g s (%.4g Hz), interval jitter rms %.3g s, max %.3g s; %lld gaps, "
+        "%lld duplicates, %lld out of order\n",
+        name, summary["samples"].as<long long>(), tau0_s, 1.0 / tau0_s, rms_s, max_s,
+        summary["gaps"]["count"].as<long long>(), summary["duplicates"]["count"].as<long long>(),
+        summary["out_of_order"]["count"].as<long long>());
     EXPECT_GT(tau0_s, 1e-4) << name;
     EXPECT_LT(tau0_s, 0.1) << name;
     EXPECT_GT(rms_s, 0.0) << name << ": real stamps jitter";

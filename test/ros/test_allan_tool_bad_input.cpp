@@ -125,8 +125,7 @@ TEST(AllanToolBadInput, TooFewMessagesFailNamingTheTopic) {
 TEST(AllanToolBadInput, WrongTopicFailsListingTheTopicsThatExist) {
   const ToolRun run = run_allan_on(white_noise_samples(100, kInterval_ns, 6), "--topic /imu/nothing");
   expect_failure_naming_the_bag(run, "/imu/nothing");
-  EXPECT_NE(run.result.output.find("/imu/raw (sensor_msgs/Imu, 100 messages)"), std::string::npos)
-      << run.result.output;
+  EXPECT_NE(run.result.output.find("/imu/raw (sensor_msgs/Imu, 100 messages)"), std::string::npos) << run.result.output;
 }
 
 TEST(AllanToolBadInput, TruncatedBagFailsNamingItAndWritesNothing) {

@@ -119,8 +119,17 @@ Outcomes kill_at_spread_moments(const std::string& tool, const std::vector<std::
 }
 
 std::vector<std::string> emulate_arguments(const std::string& out, int seed, int duration_s) {
-  return {"--profile", std::string(IMU_LAB_CONFIG_DIR) + "/sensors/tactical_mems.yaml", "--duration-s",
-          std::to_string(duration_s), "--rate-hz", "200", "--seed", std::to_string(seed), "--no-truth", "--out", out};
+  return {"--profile",
+          std::string(IMU_LAB_CONFIG_DIR) + "/sensors/tactical_mems.yaml",
+          "--duration-s",
+          std::to_string(duration_s),
+          "--rate-hz",
+          "200",
+          "--seed",
+          std::to_string(seed),
+          "--no-truth",
+          "--out",
+          out};
 }
 
 std::string joined(const std::vector<std::string>& arguments) {
@@ -161,8 +170,8 @@ TEST(AtomicWritesKilled, AllanLeavesEachReportFileOldOrWholeNew) {
   const double run_time_s = seconds_to_run("allan", new_bag + " --no-plot --out " + reference);
   const FileContents new_files = kept_files(reference);
   ASSERT_GE(new_files.size(), 10u);
-  const Outcomes outcomes = kill_at_spread_moments("allan", {new_bag, "--no-plot", "--out", report}, report,
-                                                   run_time_s, kept_files(report), new_files);
+  const Outcomes outcomes = kill_at_spread_moments("allan", {new_bag, "--no-plot", "--out", report}, report, run_time_s,
+                                                   kept_files(report), new_files);
   EXPECT_GE(outcomes.kills, kKillMoments / 4);  // the run time varies with the load: 4-8 land
   EXPECT_GE(outcomes.old_files, 1);
 }
@@ -180,14 +189,15 @@ TEST(AtomicWritesKilled, FitCalibrationLeavesEachFileOldOrWholeNew) {
   }
   const std::string kept = directory + "/kept", reference = directory + "/reference";
   for (const std::string& folder : {kept, reference}) ASSERT_EQ(::mkdir(folder.c_str(), 0755), 0) << folder;
-  ASSERT_EQ(run_tool("fit_calibration", old_bag + " --schedule " + schedule + " --out " + kept + "/imu.yaml").exit_code, 0);
+  ASSERT_EQ(run_tool("fit_calibration", old_bag + " --schedule " + schedule + " --out " + kept + "/imu.yaml").exit_code,
+            0);
   const double run_time_s =
       seconds_to_run("fit_calibration", new_bag + " --schedule " + schedule + " --out " + reference + "/imu.yaml");
   const FileContents new_files = kept_files(reference);
   ASSERT_EQ(new_files.size(), 3u);
-  const Outcomes outcomes = kill_at_spread_moments(
-      "fit_calibration", {new_bag, "--schedule", schedule, "--out", kept + "/imu.yaml"}, kept, run_time_s,
-      kept_files(kept), new_files);
+  const Outcomes outcomes =
+      kill_at_spread_moments("fit_calibration", {new_bag, "--schedule", schedule, "--out", kept + "/imu.yaml"}, kept,
+                             run_time_s, kept_files(kept), new_files);
   EXPECT_GE(outcomes.kills, kKillMoments / 4);  // the run time varies with the load: 4-8 land
   EXPECT_GE(outcomes.old_files, 1);
 }

@@ -35,13 +35,13 @@ TEST(BatchScripts, BatchSlurmArrayAndMergeGiveOneTable) {
   write_imu_bag(directory + "/unit_b_0.bag", {samples.begin(), samples.begin() + 2500});
   write_imu_bag(directory + "/unit_b_1.bag", {samples.begin() + 2500, samples.end()});
   write_imu_bag(directory + "/unit_c.bag", white_noise_samples(4000, 5'000'000, 8));
-  const std::vector<std::string> recordings = {directory + "/unit_a.bag",
-                                               directory + "/unit_b_0.bag," + directory + "/unit_b_1.bag",
-                                               directory + "/unit_c.bag"};
+  const std::vector<std::string> recordings = {
+      directory + "/unit_a.bag", directory + "/unit_b_0.bag," + directory + "/unit_b_1.bag", directory + "/unit_c.bag"};
   std::string list;
   for (const auto& recording : recordings) list += " " + recording;
 
-  const auto batch = run_command(kScripts + "batch -o " + directory + "/batch -j 2" + list + " -- --no-plot --no-identify");
+  const auto batch =
+      run_command(kScripts + "batch -o " + directory + "/batch -j 2" + list + " -- --no-plot --no-identify");
   ASSERT_EQ(batch.exit_code, 0) << batch.output;
   EXPECT_NE(batch.output.find("3/3 done"), std::string::npos) << batch.output;
   for (const char* name : {"unit_a", "unit_b_0", "unit_c"}) {
@@ -58,16 +58,18 @@ TEST(BatchScripts, BatchSlurmArrayAndMergeGiveOneTable) {
     std::ofstream(directory + "/recordings.txt") << lines;
   }
   for (int task = 0; task < 3; ++task) {
-    const auto run = run_command("SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " " + kScripts +
-                                 "slurm_array_example.sh " + directory + "/recordings.txt " + directory +
-                                 "/array -- --no-plot --no-identify");
+    const auto run =
+        run_command("SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " " + kScripts + "slurm_array_example.sh " +
+                    directory + "/recordings.txt " + directory + "/array -- --no-plot --no-identify");
     ASSERT_EQ(run.exit_code, 0) << run.output;
   }
-  const auto merged_batch = run_command(kScripts + "merge_results -o " + directory + "/merged_batch " + directory +
-                                        "/batch/unit_a " + directory + "/batch/unit_b_0 " + directory + "/batch/unit_c");
+  const auto merged_batch =
+      run_command(kScripts + "merge_results -o " + directory + "/merged_batch " + directory + "/batch/unit_a " +
+                  directory + "/batch/unit_b_0 " + directory + "/batch/unit_c");
   ASSERT_EQ(merged_batch.exit_code, 0) << merged_batch.output;
-  const auto merged_array = run_command(kScripts + "merge_results -o " + directory + "/merged_array " + directory +
-                                        "/array/unit_a " + directory + "/array/unit_b_0 " + directory + "/array/unit_c");
+  const auto merged_array =
+      run_command(kScripts + "merge_results -o " + directory + "/merged_array " + directory + "/array/unit_a " +
+                  directory + "/array/unit_b_0 " + directory + "/array/unit_c");
   ASSERT_EQ(merged_array.exit_code, 0) << merged_array.output;
   const std::string table = read_file(directory + "/merged_batch/results.csv");
   EXPECT_EQ(table, read_file(directory + "/merged_array/results.csv"));
@@ -97,9 +99,9 @@ TEST(BatchScripts, ProgressLineGivesTheEtaFromTheThroughput) {
   const std::string program =
       "import importlib.machinery, sys; "
       "batch = importlib.machinery.SourceFileLoader('batch', sys.argv[1]).load_module(); "
-      "print(batch.progress_line(3, 12, 2, 1, 45.0)); "     // 3 jobs in 45 s: 9 left take 135 s
-      "print(batch.progress_line(0, 12, 2, 0, 10.0)); "     // no job done: no rate yet
-      "print(batch.progress_line(1, 50, 4, 0, 300.0)); "    // 49 x 300 s = 4.08 h
+      "print(batch.progress_line(3, 12, 2, 1, 45.0)); "   // 3 jobs in 45 s: 9 left take 135 s
+      "print(batch.progress_line(0, 12, 2, 0, 10.0)); "   // no job done: no rate yet
+      "print(batch.progress_line(1, 50, 4, 0, 300.0)); "  // 49 x 300 s = 4.08 h
       "print(batch.format_eta(42.4), batch.format_eta(725))";
   const auto run = run_command("/usr/bin/python3 -c \"" + program + "\" " + kScripts + "batch");
   ASSERT_EQ(run.exit_code, 0) << run.output;

@@ -23,10 +23,10 @@ constexpr double kStaticDuration_s = 300.0;
 
 // From uncalibrated_mems.yaml, per axis (one sigma or density):
 struct TriadNoise {
-  double turn_on_sigma;      // drawn anew per run: the static run's differs from the calibration run's
-  double bias_instability;   // B: the flicker floor; the bias wanders by about B between runs
-  double white_density;      // N: the mean over T has N / sqrt(T)
-  double random_walk;        // K: the mean over T wanders by K sqrt(T / 3)
+  double turn_on_sigma;     // drawn anew per run: the static run's differs from the calibration run's
+  double bias_instability;  // B: the flicker floor; the bias wanders by about B between runs
+  double white_density;     // N: the mean over T has N / sqrt(T)
+  double random_walk;       // K: the mean over T wanders by K sqrt(T / 3)
 };
 constexpr TriadNoise kGyro{4.8e-6, 4.8e-6, 4.4e-5, 1.0e-7};
 constexpr TriadNoise kAccelerometer{2.0e-3, 2.0e-4, 5.0e-4, 2.0e-6};
@@ -37,8 +37,7 @@ constexpr TriadNoise kAccelerometer{2.0e-3, 2.0e-4, 5.0e-4, 2.0e-6};
 double residual_sigma(const TriadNoise& n) {
   return std::sqrt(2.0 * n.turn_on_sigma * n.turn_on_sigma + 2.0 * n.bias_instability * n.bias_instability +
                    n.white_density * n.white_density / kStaticDuration_s +
-                   n.random_walk * n.random_walk * kStaticDuration_s / 3.0 +
-                   n.white_density * n.white_density / 60.0);
+                   n.random_walk * n.random_walk * kStaticDuration_s / 3.0 + n.white_density * n.white_density / 60.0);
 }
 // The error vector's norm is sigma times a chi with 3 degrees of freedom: P(chi_3 > 4.6) < 1e-4.
 constexpr double kChi3Bound = 4.6;
@@ -79,12 +78,18 @@ TEST(CorrectToolEmulated, StaticBagMeansComeToTheTruthFarCloserThanRaw) {
   const std::string d = scratch_directory();
   const std::string profile = " --profile " + kChainData + "/uncalibrated_mems.yaml";
   // As full_chain.test: the thermal test, the six-position calibration at 20 degC, the fits.
-  run_or_fail("emulate", profile + " --scenario " + kChainData + "/thermal_test.yaml --rate-hz 10 --seed 21 "
-                         "--no-truth --no-increments --out " + d + "/thermal.bag");
-  run_or_fail("emulate", profile + " --scenario multiposition_6 --rate-hz 100 --seed 22 --no-truth --no-increments "
-                         "--out " + d + "/calibration.bag");
-  run_or_fail("fit_thermal", d + "/thermal.bag --rate-term --window-s 20 --reference-temperature-c 20 "
-                             "--latitude-deg 50.45 --height-m 180 --out " + d + "/thermal.yaml");
+  run_or_fail("emulate", profile + " --scenario " + kChainData +
+                             "/thermal_test.yaml --rate-hz 10 --seed 21 "
+                             "--no-truth --no-increments --out " +
+                             d + "/thermal.bag");
+  run_or_fail("emulate", profile +
+                             " --scenario multiposition_6 --rate-hz 100 --seed 22 --no-truth --no-increments "
+                             "--out " +
+                             d + "/calibration.bag");
+  run_or_fail("fit_thermal", d +
+                                 "/thermal.bag --rate-term --window-s 20 --reference-temperature-c 20 "
+                                 "--latitude-deg 50.45 --height-m 180 --out " +
+                                 d + "/thermal.yaml");
   run_or_fail("fit_calibration", d + "/calibration.bag --schedule multiposition_6 --out " + d + "/calibration.yaml");
   // At rest at 45 degC, body x North, at the calibration's site.
   std::ofstream(d + "/static_45c.yaml") << "type: static\nlatitude_deg: 50.45\nlongitude_deg: 30.52\nheight_m: 180.0\n"
@@ -92,9 +97,9 @@ TEST(CorrectToolEmulated, StaticBagMeansComeToTheTruthFarCloserThanRaw) {
                                            "earth_model: wgs84_rotating\nduration_s: 300.0\n";
   run_or_fail("emulate", profile + " --scenario " + d + "/static_45c.yaml --rate-hz 100 --seed 24 --no-increments " +
                              "--out " + d + "/static.bag");
-  const CommandResult corrected = run_tool("correct", d + "/static.bag --thermal-model " + d + "/thermal.yaml " +
-                                                          "--calibration " + d + "/calibration.yaml --out " + d +
-                                                          "/corrected.bag");
+  const CommandResult corrected =
+      run_tool("correct", d + "/static.bag --thermal-model " + d + "/thermal.yaml " + "--calibration " + d +
+                              "/calibration.yaml --out " + d + "/corrected.bag");
   ASSERT_EQ(corrected.exit_code, 0) << corrected.output;
   std::printf("%s", corrected.output.c_str());
 

@@ -180,9 +180,8 @@ TEST(CorrectTool, ThermalThenCalibrationEqualsTheLiveChainBitForBit) {
   const std::string directory = scratch_directory();
   const ChainBag bag(directory);
   const std::string out = directory + "/out.bag";
-  const CommandResult result =
-      run_tool("correct", bag.path + " --thermal-model " + kThermalModel + " --calibration " + kCalibration +
-                              " --out " + out);
+  const CommandResult result = run_tool(
+      "correct", bag.path + " --thermal-model " + kThermalModel + " --calibration " + kCalibration + " --out " + out);
   ASSERT_EQ(result.exit_code, 0) << result.output;
 
   const LiveChain live = run_live_chain(bag.path, true, true);
@@ -195,7 +194,8 @@ TEST(CorrectTool, ThermalThenCalibrationEqualsTheLiveChainBitForBit) {
   const std::string counts = std::to_string(live.published.size()) + " of 20000 IMU messages on /imu/raw corrected";
   EXPECT_NE(result.output.find(counts), std::string::npos) << result.output;
   EXPECT_NE(result.output.find(std::to_string(live.clamped) + " samples outside the thermal model's validity range"),
-            std::string::npos) << result.output;
+            std::string::npos)
+      << result.output;
   EXPECT_NE(result.output.find(std::to_string(live.stale) + " samples skipped"), std::string::npos) << result.output;
 
   // The other topics, byte for byte in content, in the same order.
@@ -298,8 +298,9 @@ TEST(CorrectToolBadInput, NanTemperatureIsRefused) {
 TEST(CorrectToolBadInput, AnOutputTopicThatExistsIsRefused) {
   const std::string inputs = scratch_directory(), outputs = scratch_directory();
   const ChainBag bag(inputs);
-  expect_refused(bag.path + " --calibration " + kCalibration + " --out-topic /board/temperature --out " + outputs +
-                     "/out.bag", 1, {bag.path, "/board/temperature", "already"}, outputs);
+  expect_refused(
+      bag.path + " --calibration " + kCalibration + " --out-topic /board/temperature --out " + outputs + "/out.bag", 1,
+      {bag.path, "/board/temperature", "already"}, outputs);
 }
 
 }  // namespace

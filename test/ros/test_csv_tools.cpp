@@ -59,8 +59,8 @@ TEST(ImportCsvTool, LoggerFileWithAYamlMappingBecomesImuAndTemperatureMessages) 
   const std::string directory = scratch_directory();
   write(directory + "/log.csv", kLoggerCsv);
   write(directory + "/logger.yaml", kLoggerYaml);
-  const auto result =
-      run_tool("import_csv", directory + "/log.csv --config " + directory + "/logger.yaml -o " + directory + "/log.bag");
+  const auto result = run_tool(
+      "import_csv", directory + "/log.csv --config " + directory + "/logger.yaml -o " + directory + "/log.bag");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_TRUE(contains(result.output, "3 samples on /imu/raw (time ms, gyro deg_s, accel g)")) << result.output;
   EXPECT_TRUE(contains(result.output, "2 temperatures on /imu/temperature (1 rows without one)")) << result.output;
@@ -78,10 +78,12 @@ TEST(ImportCsvTool, LoggerFileWithAYamlMappingBecomesImuAndTemperatureMessages) 
   EXPECT_DOUBLE_EQ(temperatures[1].stamp_s, imu[2].stamp_s);
 
   // The same by options alone; an option overrides the YAML.
-  const auto by_options = run_tool(
-      "import_csv", directory + "/log.csv --delimiter ';' --decimal-comma --time-column t_ms --time-unit ms "
-                                "--time-offset-s 1700000000 --gyro-columns gx,gy,gz --gyro-unit deg_s "
-                                "--accel-columns ax,ay,az --accel-unit g -o " + directory + "/options.bag");
+  const auto by_options =
+      run_tool("import_csv", directory +
+                                 "/log.csv --delimiter ';' --decimal-comma --time-column t_ms --time-unit ms "
+                                 "--time-offset-s 1700000000 --gyro-columns gx,gy,gz --gyro-unit deg_s "
+                                 "--accel-columns ax,ay,az --accel-unit g -o " +
+                                 directory + "/options.bag");
   ASSERT_EQ(by_options.exit_code, 0) << by_options.output;
   const auto same = read_imu(directory + "/options.bag");
   ASSERT_EQ(same.size(), 3u);
@@ -92,10 +94,10 @@ TEST(ImportCsvTool, LoggerFileWithAYamlMappingBecomesImuAndTemperatureMessages) 
 const std::string kDamagedCsv =
     "t,gx,gy,gz,ax,ay,az\n"
     "1,0,0,0,0,0,9.8\n"
-    "2,0,0,0,0,0\n"             // line 3: a field missing
+    "2,0,0,0,0,0\n"  // line 3: a field missing
     "3,0,0,0,0,0,9.8\n"
-    "4,0,nan,0,0,0,9.8\n"       // line 5: NaN
-    "2.5,0,0,0,0,0,9.8\n"       // line 6: time goes back
+    "4,0,nan,0,0,0,9.8\n"  // line 5: NaN
+    "2.5,0,0,0,0,0,9.8\n"  // line 6: time goes back
     "5,0,0,0,0,0,9.8\n";
 
 TEST(ImportCsvTool, RefusesABadFileByDefaultListingEveryBadLineAndWritesNothing) {
@@ -115,8 +117,8 @@ TEST(ImportCsvTool, RefusesABadFileByDefaultListingEveryBadLineAndWritesNothing)
 TEST(ImportCsvTool, SkipPolicyImportsTheGoodRowsAndStillReportsEachBadOne) {
   const std::string directory = scratch_directory();
   write(directory + "/damaged.csv", kDamagedCsv);
-  const auto result = run_tool("import_csv", directory + "/damaged.csv --on-bad-row skip --max-reported-rows 2 -o " +
-                                                 directory + "/good.bag");
+  const auto result = run_tool(
+      "import_csv", directory + "/damaged.csv --on-bad-row skip --max-reported-rows 2 -o " + directory + "/good.bag");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_TRUE(contains(result.output, "skipped " + directory + "/damaged.csv: 3 bad rows of 6 data rows"))
       << result.output;
@@ -158,17 +160,18 @@ TEST(ImportCsvTool, AMappingThatDoesNotFitIsABadConfigurationAndWritesNothing) {
 TEST(CsvTools, EmulatedBagExportsImportsAndExportsAgainUnchanged) {
   const std::string directory = scratch_directory();
   const std::string original = directory + "/emulated.bag";
-  const auto emulated = run_tool("emulate", "--profile " + std::string(IMU_LAB_CONFIG_DIR) +
-                                                "/sensors/tactical_mems.yaml --scenario " +
-                                                std::string(IMU_LAB_CONFIG_DIR) +
-                                                "/scenarios/static.yaml --duration-s 5 --rate-hz 100 --seed 2 --out " +
-                                                original);
+  const auto emulated =
+      run_tool("emulate", "--profile " + std::string(IMU_LAB_CONFIG_DIR) + "/sensors/tactical_mems.yaml --scenario " +
+                              std::string(IMU_LAB_CONFIG_DIR) +
+                              "/scenarios/static.yaml --duration-s 5 --rate-hz 100 --seed 2 --out " + original);
   ASSERT_EQ(emulated.exit_code, 0) << emulated.output;
 
   const auto exported = run_tool("export_csv", original + " -o " + directory + "/first.csv");
   ASSERT_EQ(exported.exit_code, 0) << exported.output;
-  EXPECT_TRUE(contains(exported.output, "500 rows of /imu/raw (gyro rad_s, accel m_s2), temperature_c from "
-                                        "/imu/temperature in 500 rows")) << exported.output;
+  EXPECT_TRUE(contains(exported.output,
+                       "500 rows of /imu/raw (gyro rad_s, accel m_s2), temperature_c from "
+                       "/imu/temperature in 500 rows"))
+      << exported.output;
   const std::string first = read_file(directory + "/first.csv");
   EXPECT_EQ(first.substr(0, first.find('\n')),
             "time_s,gyro_x_rad_s,gyro_y_rad_s,gyro_z_rad_s,accel_x_m_s2,accel_y_m_s2,accel_z_m_s2,temperature_c");
@@ -195,14 +198,18 @@ TEST(CsvTools, EmulatedBagExportsImportsAndExportsAgainUnchanged) {
   EXPECT_EQ(temperatures_before.back().temperature_c, temperatures_after.back().temperature_c);
 
   // Field units: deg/s and g, tab-separated, read back with the matching options.
-  const auto field = run_tool("export_csv", original + " --gyro-unit deg_s --accel-unit g --delimiter tab "
-                                            "--no-temperature -o " + directory + "/field.csv");
+  const auto field = run_tool("export_csv", original +
+                                                " --gyro-unit deg_s --accel-unit g --delimiter tab "
+                                                "--no-temperature -o " +
+                                                directory + "/field.csv");
   ASSERT_EQ(field.exit_code, 0) << field.output;
   const std::string field_text = read_file(directory + "/field.csv");
   EXPECT_EQ(field_text.substr(0, field_text.find('\n')),
             "time_s\tgyro_x_deg_s\tgyro_y_deg_s\tgyro_z_deg_s\taccel_x_g\taccel_y_g\taccel_z_g");
-  const auto field_back = run_tool("import_csv", directory + "/field.csv --delimiter tab --gyro-unit deg_s "
-                                                 "--accel-unit g -o " + directory + "/field.bag");
+  const auto field_back = run_tool("import_csv", directory +
+                                                     "/field.csv --delimiter tab --gyro-unit deg_s "
+                                                     "--accel-unit g -o " +
+                                                     directory + "/field.bag");
   ASSERT_EQ(field_back.exit_code, 0) << field_back.output;
   const auto converted = read_imu(directory + "/field.bag");
   ASSERT_EQ(converted.size(), before.size());
@@ -221,8 +228,10 @@ TEST(ExportCsvTool, RefusesAMissingTopicOrUnitAndWritesNothing) {
   ASSERT_EQ(run_tool("import_csv", directory + "/log.csv -o " + directory + "/log.bag").exit_code, 0);
   const auto wrong_topic = run_tool("export_csv", directory + "/log.bag --topic /imu/data -o " + directory + "/x.csv");
   EXPECT_EQ(wrong_topic.exit_code, 1) << wrong_topic.output;
-  EXPECT_TRUE(contains(wrong_topic.output, "has no topic /imu/data; topics in the bag:\n  /imu/raw (sensor_msgs/Imu, 2 "
-                                           "messages)")) << wrong_topic.output;
+  EXPECT_TRUE(contains(wrong_topic.output,
+                       "has no topic /imu/data; topics in the bag:\n  /imu/raw (sensor_msgs/Imu, 2 "
+                       "messages)"))
+      << wrong_topic.output;
   const auto no_temperature =
       run_tool("export_csv", directory + "/log.bag --temperature-topic /imu/temperature -o " + directory + "/x.csv");
   EXPECT_EQ(no_temperature.exit_code, 1) << no_temperature.output;

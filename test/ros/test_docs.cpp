@@ -49,8 +49,8 @@ TEST(DocLinks, EveryRelativeLinkAndAnchorResolvesAndTheReadmeStaysShort) {
 
 TEST(DocLinks, ABrokenLinkOrAnchorIsNamedWithItsLine) {
   const std::string copy = scratch_directory() + "/package";
-  ASSERT_EQ(run_command("mkdir -p " + copy + " && cp -r " + kRoot + "/scripts " + kRoot + "/doc " + kRoot + "/README.md " +
-                        kRoot + "/CHANGELOG.md " + kRoot + "/config " + copy + "/")
+  ASSERT_EQ(run_command("mkdir -p " + copy + " && cp -r " + kRoot + "/scripts " + kRoot + "/doc " + kRoot +
+                        "/README.md " + kRoot + "/CHANGELOG.md " + kRoot + "/config " + copy + "/")
                 .exit_code,
             0);
   ASSERT_EQ(run_command("echo '[gone](doc/no_such_page.md) [bad anchor](doc/testing.md#no-such-heading)' >> " + copy +

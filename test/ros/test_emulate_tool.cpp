@@ -49,9 +49,9 @@ TEST(EmulateTool, SameSeedGivesABitIdenticalBagAndAnotherSeedDoesNot) {
   const auto topics = imu_lab::ros_io::list_topics(directory + "/a.bag");
   std::vector<std::string> names;
   for (const auto& topic : topics) names.push_back(topic.name + " " + topic.datatype);
-  EXPECT_EQ(names, (std::vector<std::string>{"/imu/increment imu_lab/ImuIncrement", "/imu/raw sensor_msgs/Imu",
-                                             "/imu/temperature sensor_msgs/Temperature",
-                                             "/imu/truth imu_lab/ImuTruth"}));
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"/imu/increment imu_lab/ImuIncrement", "/imu/raw sensor_msgs/Imu",
+                                      "/imu/temperature sensor_msgs/Temperature", "/imu/truth imu_lab/ImuTruth"}));
 }
 
 TEST(EmulateTool, BadProfileIsRefusedNamingTheKeyAndWritesNothing) {
@@ -65,8 +65,8 @@ TEST(EmulateTool, BadProfileIsRefusedNamingTheKeyAndWritesNothing) {
   const std::string bad_profile = directory + "/bad.yaml";
   std::ofstream(bad_profile) << profile;
   const std::string out = directory + "/never.bag";
-  const auto result = run_tool("emulate", "--profile " + bad_profile + " --scenario " + kScenario +
-                                              " --duration-s 5 --out " + out);
+  const auto result =
+      run_tool("emulate", "--profile " + bad_profile + " --scenario " + kScenario + " --duration-s 5 --out " + out);
   EXPECT_EQ(result.exit_code, 2) << result.output;
   EXPECT_NE(result.output.find("gyro.noise.white_rate.density_rad_s_per_sqrt_hz"), std::string::npos) << result.output;
   EXPECT_FALSE(file_exists(out));

@@ -29,8 +29,8 @@ const QuickBag& quick_bag() {
     b.directory = scratch_directory();
     b.schedule = write_quick_twelve_position_schedule(b.directory);
     b.bag = b.directory + "/calibration.bag";
-    const auto result = run_tool("emulate", "--profile tactical_mems --scenario " + b.schedule +
-                                                " --rate-hz 100 --seed 2 --out " + b.bag);
+    const auto result = run_tool(
+        "emulate", "--profile tactical_mems --scenario " + b.schedule + " --rate-hz 100 --seed 2 --out " + b.bag);
     EXPECT_EQ(result.exit_code, 0) << result.output;
     return b;
   }();

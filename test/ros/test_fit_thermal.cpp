@@ -24,11 +24,14 @@ std::string emulated_bag(const std::string& name, const std::string& arguments) 
 }
 
 TEST(FitThermalTool, FitsAMultiPositionTestAndWritesModelCsvAndPlot) {
-  const std::string bag = emulated_bag("fit", "--profile " + kData + "/thermal/uncompensated_mems_gyro.yaml --scenario " +
-                                                  kData + "/thermal/fit_multiposition.yaml --rate-hz 2 --seed 11");
+  const std::string bag =
+      emulated_bag("fit", "--profile " + kData + "/thermal/uncompensated_mems_gyro.yaml --scenario " + kData +
+                              "/thermal/fit_multiposition.yaml --rate-hz 2 --seed 11");
   const std::string directory = test_support::scratch_directory();
-  const auto result = run_tool("fit_thermal", bag + " --out " + directory + "/model.yaml --rate-term --latitude-deg 50.45 "
-                                              "--plot " + directory + "/thermal.png");
+  const auto result = run_tool("fit_thermal", bag + " --out " + directory +
+                                                  "/model.yaml --rate-term --latitude-deg 50.45 "
+                                                  "--plot " +
+                                                  directory + "/thermal.png");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_NE(result.output.find("in 6 orientations"), std::string::npos) << result.output;
   const auto model = thermal::load_thermal_model(directory + "/model.yaml");
@@ -62,7 +65,8 @@ TEST(FitThermalTool, RefusesTooSmallASpanAndAMissingTopic) {
   EXPECT_EQ(span.exit_code, 1) << span.output;
   EXPECT_NE(span.output.find("span only 0.0 degC"), std::string::npos) << span.output;
   EXPECT_NE(span.output.find("wider range"), std::string::npos) << span.output;
-  const auto missing = run_tool("fit_thermal", bag + " --out " + out + " --no-scale-factor --temperature-topic /imu/board_temperature");
+  const auto missing =
+      run_tool("fit_thermal", bag + " --out " + out + " --no-scale-factor --temperature-topic /imu/board_temperature");
   EXPECT_EQ(missing.exit_code, 1) << missing.output;
   EXPECT_NE(missing.output.find("has no topic /imu/board_temperature"), std::string::npos) << missing.output;
   EXPECT_NE(missing.output.find("/imu/temperature (sensor_msgs/Temperature"), std::string::npos) << missing.output;
@@ -88,9 +92,12 @@ TEST(FitThermalTool, RefusesATemperatureTopicThatStops) {
       bag.write("/imu/temperature", stamp, temperature);
     }
   }
-  const auto result = run_tool("fit_thermal", bag_path + " --no-scale-factor --out " + test_support::scratch_directory() + "/m.yaml");
+  const auto result =
+      run_tool("fit_thermal", bag_path + " --no-scale-factor --out " + test_support::scratch_directory() + "/m.yaml");
   EXPECT_EQ(result.exit_code, 1) << result.output;
-  EXPECT_NE(result.output.find("temperature is stale at IMU stamp 1101.100 s: the nearest reading is 1.100 s away"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("temperature is stale at IMU stamp 1101.100 s: the nearest reading is 1.100 s away"),
+            std::string::npos)
+      << result.output;
   EXPECT_NE(result.output.find("recorded through the whole test"), std::string::npos) << result.output;
 }
 

@@ -1,6 +1,6 @@
 // The identification on real recordings nobody here generated: three static ADIS16405 units
-// (the reference data's real_static, under IMU_LAB_REFERENCE_DIR; 2.78 h at 100 Hz each), imported and analysed as a user
-// would (`import_csv`, then `allan` with default options). What it must show (doc/identification.md):
+// (the reference data's real_static, under IMU_LAB_REFERENCE_DIR; 2.78 h at 100 Hz each), imported and analysed as a
+// user would (`import_csv`, then `allan` with default options). What it must show (doc/identification.md):
 // - the fitted total inside the measured 95 % band at >= 90 % of the taus pooled over the 18
 //   axes and >= 75 % on each, every excursion named in the warnings;
 // - N present with a sigma on every axis, within 10 % of the record's Welch PSD plateau (median
@@ -49,7 +49,7 @@ struct AxisOutcome {
   std::string n_status;
   double n_value = std::nan("");  // SI
   double n_sigma = std::nan("");
-  double psd_plateau_density = std::nan("");  // sqrt(PSD / 2), SI
+  double psd_plateau_density = std::nan("");    // sqrt(PSD / 2), SI
   std::vector<std::string> partials_over_band;  // "term at tau"
 };
 
@@ -95,7 +95,8 @@ std::vector<std::string> grid_differences(const YAML::Node& coarse, const YAML::
         const bool present_a = a["status"].as<std::string>() == "present";
         const bool present_b = b && b["status"].as<std::string>() == "present";
         const bool borderline = a["borderline"].as<bool>() || (b && b["borderline"].as<bool>());
-        if (present_a != present_b && !borderline) differences.push_back(name + " " + term_name + " present in one grid only");
+        if (present_a != present_b && !borderline)
+          differences.push_back(name + " " + term_name + " present in one grid only");
         if (!present_a || !present_b) continue;
         for (const auto& entry : a) {
           const std::string key = entry.first.as<std::string>();
@@ -130,7 +131,8 @@ UnitOutcome analyse_unit(int unit) {
   const auto unpacked = run_command("xzcat '" + source + "' > '" + csv + "'");
   EXPECT_EQ(unpacked.exit_code, 0) << unpacked.output;
   const std::string bag = directory + "/u" + std::to_string(unit) + ".bag";
-  const auto imported = run_tool("import_csv", csv + " -o " + bag + " --gyro-unit deg_s --accel-unit g --time-offset-s 1");
+  const auto imported =
+      run_tool("import_csv", csv + " -o " + bag + " --gyro-unit deg_s --accel-unit g --time-offset-s 1");
   EXPECT_EQ(imported.exit_code, 0) << imported.output;
   const std::string report = directory + "/report";
   const auto analysed = run_tool("allan", bag + " --no-plot --out " + report);
@@ -139,7 +141,8 @@ UnitOutcome analyse_unit(int unit) {
 
   const YAML::Node noise = YAML::Load(read_file(report + "/noise.yaml"));
   outcome.screened = noise["events"]["screened"].as<bool>();
-  for (const YAML::Node& event : noise["events"]["listed"]) outcome.event_onsets_s.push_back(event["onset_s"].as<double>());
+  for (const YAML::Node& event : noise["events"]["listed"])
+    outcome.event_onsets_s.push_back(event["onset_s"].as<double>());
   const std::array<double, 6> plateaus = psd_plateaus(csv);
   for (int c = 0; c < 6; ++c) {
     const std::string channel = kChannels[c];
@@ -151,7 +154,8 @@ UnitOutcome analyse_unit(int unit) {
     result.band_inside = axis["band_check"]["inside"].as<int>();
     result.excursions = static_cast<int>(axis["band_check"]["outside_ranges"].size());
     for (const YAML::Node& warning : axis["warnings"]) {
-      result.band_warnings += warning.as<std::string>().find("leaves the measured curve's 95 % band") != std::string::npos;
+      result.band_warnings +=
+          warning.as<std::string>().find("leaves the measured curve's 95 % band") != std::string::npos;
     }
     const YAML::Node white = axis["terms"]["white_rate"];
     result.n_status = white["status"].as<std::string>();
@@ -183,7 +187,8 @@ UnitOutcome analyse_unit(int unit) {
   const std::string dense = directory + "/dense";
   const auto dense_run = run_tool("allan", bag + " --no-plot --points-per-decade 30 --out " + dense);
   EXPECT_EQ(dense_run.exit_code, 0) << dense_run.output;
-  if (dense_run.exit_code == 0) outcome.unstable = grid_differences(noise, YAML::Load(read_file(dense + "/noise.yaml")));
+  if (dense_run.exit_code == 0)
+    outcome.unstable = grid_differences(noise, YAML::Load(read_file(dense + "/noise.yaml")));
   run_command("rm -f '" + csv + "' '" + bag + "'");
   return outcome;
 }
@@ -205,7 +210,8 @@ TEST(IdentifyRealData, ThreeAdisUnitsAsAUserRunsThem) {
       EXPECT_EQ(axis.n_status, "present") << where;
       EXPECT_GT(axis.n_sigma, 0.0) << where;
       EXPECT_NEAR(axis.n_value / axis.psd_plateau_density, 1.0, 0.10) << where;
-      EXPECT_TRUE(axis.partials_over_band.empty()) << where << ": " << (axis.partials_over_band.empty() ? "" : axis.partials_over_band[0]);
+      EXPECT_TRUE(axis.partials_over_band.empty())
+          << where << ": " << (axis.partials_over_band.empty() ? "" : axis.partials_over_band[0]);
     }
   }
   EXPECT_GE(pooled_inside, 0.90 * pooled_points) << pooled_inside << " of " << pooled_points;
@@ -221,12 +227,14 @@ TEST(IdentifyRealData, ThreeAdisUnitsAsAUserRunsThem) {
 
   for (int unit : kUnits) {
     EXPECT_TRUE(units[unit].screened) << "unit " << unit;
-    EXPECT_TRUE(units[unit].unstable.empty()) << "unit " << unit << ": " << units[unit].unstable.size()
-                                              << " differences, first " << (units[unit].unstable.empty() ? "" : units[unit].unstable[0]);
+    EXPECT_TRUE(units[unit].unstable.empty())
+        << "unit " << unit << ": " << units[unit].unstable.size() << " differences, first "
+        << (units[unit].unstable.empty() ? "" : units[unit].unstable[0]);
   }
   const auto& onsets = units[4].event_onsets_s;
   for (double knock_s : {4045.0, 5146.0}) {
-    EXPECT_TRUE(std::any_of(onsets.begin(), onsets.end(), [knock_s](double onset) { return std::abs(onset - knock_s) < 1.0; }))
+    EXPECT_TRUE(
+        std::any_of(onsets.begin(), onsets.end(), [knock_s](double onset) { return std::abs(onset - knock_s) < 1.0; }))
         << "unit 4's knock near " << knock_s << " s";
   }
   EXPECT_TRUE(units[5].event_onsets_s.empty());

@@ -92,7 +92,8 @@ TEST(InputHealth, ASampleWithoutATriadIsCountedApartFromNaN) {
   EXPECT_FALSE(stream.health.check_values(imu_lab::ros_io::to_imu_record(message)));
   const auto status = stream.report();
   EXPECT_EQ(status.level, DiagnosticStatus::WARN);
-  EXPECT_EQ(status.message, "1 samples with NaN/Inf; 1 samples without angular rate or specific force (covariance[0] = -1)");
+  EXPECT_EQ(status.message,
+            "1 samples with NaN/Inf; 1 samples without angular rate or specific force (covariance[0] = -1)");
 }
 
 // Finite but absurd values (1e308 rad/s) overflow whatever a node computes from them: the nodes

@@ -27,18 +27,22 @@ TEST(InstallSpace, ToolsAndLaunchFilesWorkFromTheInstallSpace) {
   }
 
   // A user's shell with only the install space: no devel space, no sourced setup.
-  const std::string shell = "env -i PATH=/usr/bin:/bin HOME=" + directory + " ROS_PACKAGE_PATH=" + prefix + "/share:/usr/share ";
-  const auto emulate = run_command(shell + prefix + "/lib/imu_lab/emulate --scenario coning --duration-s 2 --rate-hz 100 --out " +
-                                   directory + "/c.bag");
+  const std::string shell =
+      "env -i PATH=/usr/bin:/bin HOME=" + directory + " ROS_PACKAGE_PATH=" + prefix + "/share:/usr/share ";
+  const auto emulate =
+      run_command(shell + prefix + "/lib/imu_lab/emulate --scenario coning --duration-s 2 --rate-hz 100 --out " +
+                  directory + "/c.bag");
   ASSERT_EQ(emulate.exit_code, 0) << emulate.output;
   const auto allan = run_command(shell + prefix + "/lib/imu_lab/allan " + directory + "/c.bag --no-identify --out " +
                                  directory + "/report");
   EXPECT_EQ(allan.exit_code, 0) << allan.output;
-  EXPECT_TRUE(file_exists(directory + "/report/allan.png")) << "the installed plot script did not run:\n" << allan.output;
+  EXPECT_TRUE(file_exists(directory + "/report/allan.png")) << "the installed plot script did not run:\n"
+                                                            << allan.output;
 
   const auto found = run_command(shell + "rospack find imu_lab");
   EXPECT_EQ(found.output, prefix + "/share/imu_lab\n");
-  const auto launch = run_command(shell + "roslaunch --dump-params " + prefix + "/share/imu_lab/launch/full_chain.launch rviz:=false");
+  const auto launch =
+      run_command(shell + "roslaunch --dump-params " + prefix + "/share/imu_lab/launch/full_chain.launch rviz:=false");
   EXPECT_EQ(launch.exit_code, 0) << launch.output;
   EXPECT_TRUE(contains(launch.output, "/strapdown_navigator/vertical_channel: held")) << launch.output;  // its template
   EXPECT_TRUE(contains(launch.output, "/allan_monitor/statistics:")) << launch.output;

@@ -89,11 +89,10 @@ class NavigateTool : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     directory_ = new std::string(scratch_directory());
-    const auto made = run_tool("emulate", "--profile " + std::string(IMU_LAB_CONFIG_DIR) +
-                                              "/sensors/rlg_navigation.yaml --scenario " + IMU_LAB_CONFIG_DIR +
-                                              "/scenarios/static_latitude_50.yaml --duration-s " +
-                                              std::to_string(kAlignmentS + kNavigationS) +
-                                              " --rate-hz 100 --seed 11 --out " + bag());
+    const auto made = run_tool(
+        "emulate", "--profile " + std::string(IMU_LAB_CONFIG_DIR) + "/sensors/rlg_navigation.yaml --scenario " +
+                       IMU_LAB_CONFIG_DIR + "/scenarios/static_latitude_50.yaml --duration-s " +
+                       std::to_string(kAlignmentS + kNavigationS) + " --rate-hz 100 --seed 11 --out " + bag());
     ASSERT_EQ(made.exit_code, 0) << made.output;
   }
   static std::string bag() { return *directory_ + "/rlg_static.bag"; }
@@ -151,13 +150,12 @@ TEST_F(NavigateTool, AlignmentAndNavigationErrorsStayWithinTheNavCorePrediction)
     EXPECT_LE(row.at("horizontal_position_error_m"), horizontal_bound) << "at t = " << t << " s";
     worst_ratio = std::max(worst_ratio, row.at("horizontal_position_error_m") / horizontal_bound);
     // Held vertical channel (vertical_channel.h): |h error| <= |b| tau^2, b the vertical error.
-    const double height_bound =
-        (std::abs(accel_error_enu.z()) + 3.0 * kAccelBiasInstability_m_s2) * height_time_constant_s * height_time_constant_s;
+    const double height_bound = (std::abs(accel_error_enu.z()) + 3.0 * kAccelBiasInstability_m_s2) *
+                                height_time_constant_s * height_time_constant_s;
     EXPECT_LE(std::abs(row.at("height_error_m")), height_bound) << "at t = " << t << " s";
   }
   std::printf("[navigate] horizontal error %.3f m after %.0f s; worst fraction of its bound %.2f\n",
-              errors.back().at("horizontal_position_error_m"), errors.back().at("time_since_alignment_s"),
-              worst_ratio);
+              errors.back().at("horizontal_position_error_m"), errors.back().at("time_since_alignment_s"), worst_ratio);
   EXPECT_GT(errors.back().at("horizontal_position_error_m"), 0.05);  // the bound is not met trivially
   // Heading drifts only by the up gyro bias: far below the alignment error.
   EXPECT_NEAR(errors.back().at("attitude_error_up_rad"), measured.z(), 5.0 / kArcsecPerRad);
@@ -263,9 +261,11 @@ TEST_F(NavigateTool, RefusesAStartWithoutAlignmentWithoutAVelocity) {
   expect_bad_configuration("--no-align --initial-velocity-enu-m-s 1,nan,0");
   expect_bad_configuration("--no-align --initial-velocity-enu-m-s 1,0,0,0");
   expect_bad_configuration("--initial-velocity-enu-m-s 0.5,0,0");
-  const auto given = run_tool("navigate", bag() + position +
-                                              " --no-align --truth-topic /no_truth_here --initial-velocity-enu-m-s 0,0,0 "
-                                              "--every-s 100 --out " + out);
+  const auto given =
+      run_tool("navigate", bag() + position +
+                               " --no-align --truth-topic /no_truth_here --initial-velocity-enu-m-s 0,0,0 "
+                               "--every-s 100 --out " +
+                               out);
   EXPECT_EQ(given.exit_code, 0) << given.output;
 }
 
@@ -279,8 +279,9 @@ TEST_F(NavigateTool, PrintsThePredictedAlignmentErrorFromTheExpectedErrors) {
   EXPECT_NE(without.output.find("no predicted error (give the expected sensor errors"), std::string::npos)
       << without.output;
   const double accel_bias_m_s2 = 5e-5;
-  const auto with = run_tool("navigate", bag() + " --alignment-duration-s 300 --every-s 100 --expected-accel-bias-m-s2 " +
-                                             std::to_string(accel_bias_m_s2) + " --out " + out);
+  const auto with =
+      run_tool("navigate", bag() + " --alignment-duration-s 300 --every-s 100 --expected-accel-bias-m-s2 " +
+                               std::to_string(accel_bias_m_s2) + " --out " + out);
   ASSERT_EQ(with.exit_code, 0) << with.output;
   const std::string label = "predicted 1-sigma error E/N/U ";
   const auto at = with.output.find(label);
@@ -301,9 +302,9 @@ TEST_F(NavigateTool, PrintsThePredictedAlignmentErrorFromTheExpectedErrors) {
 TEST(NavigateToolStart, StartsFromTheTruthAtTheFirstSampleWithEitherInput) {
   const std::string directory = scratch_directory();
   const std::string coning = directory + "/coning.bag";
-  const auto made = run_tool("emulate", "--profile " + std::string(IMU_LAB_CONFIG_DIR) + "/sensors/ideal.yaml --scenario " +
-                                            IMU_LAB_CONFIG_DIR + "/scenarios/coning.yaml --duration-s 30 --rate-hz 200 --out " +
-                                            coning);
+  const auto made = run_tool("emulate", "--profile " + std::string(IMU_LAB_CONFIG_DIR) +
+                                            "/sensors/ideal.yaml --scenario " + IMU_LAB_CONFIG_DIR +
+                                            "/scenarios/coning.yaml --duration-s 30 --rate-hz 200 --out " + coning);
   ASSERT_EQ(made.exit_code, 0) << made.output;
   for (const std::string input : {"imu", "increment"}) {
     const std::string out = directory + "/" + input + ".csv";
@@ -332,12 +333,15 @@ TEST(NavigateToolStart, StartsFromTheTruthAtTheFirstSampleWithEitherInput) {
 TEST(NavigateToolSchuler, InitialVelocityErrorGivesTheSingleChannelSine) {
   const std::string directory = scratch_directory();
   const std::string at_rest = directory + "/sphere.bag";
-  const auto made = run_tool("emulate", "--profile " + std::string(IMU_LAB_CONFIG_DIR) + "/sensors/ideal.yaml --scenario " +
-                                            IMU_LAB_TEST_DATA_DIR + "/nav/static_sphere.yaml --rate-hz 10 --out " + at_rest);
+  const auto made =
+      run_tool("emulate", "--profile " + std::string(IMU_LAB_CONFIG_DIR) + "/sensors/ideal.yaml --scenario " +
+                              IMU_LAB_TEST_DATA_DIR + "/nav/static_sphere.yaml --rate-hz 10 --out " + at_rest);
   ASSERT_EQ(made.exit_code, 0) << made.output;
   const std::string out = directory + "/trajectory.csv";
-  const auto run = run_tool("navigate", at_rest + " --earth-model sphere --no-align --initial-velocity-enu-m-s 1,0,0 "
-                                                  "--every-s 10 --out " + out);
+  const auto run = run_tool("navigate", at_rest +
+                                            " --earth-model sphere --no-align --initial-velocity-enu-m-s 1,0,0 "
+                                            "--every-s 10 --out " +
+                                            out);
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const auto errors = read_error_csv(directory + "/trajectory_errors.csv");
   const imu_lab::nav::EarthModelConfig sphere = imu_lab::pipeline::parse_earth_model("sphere", "sphere");
@@ -353,9 +357,10 @@ TEST(NavigateToolSchuler, InitialVelocityErrorGivesTheSingleChannelSine) {
     largest_east_m = std::max(largest_east_m, std::abs(row.at("east_error_m")));
     EXPECT_LE(deviation_m, 0.02 * peak_m) << "at t = " << t << " s";
   }
-  std::printf("[navigate] v0 = 1 m/s on the sphere: peak v0/w0 %.1f m, largest east error %.1f m, worst deviation "
-              "from the sine %.3g m (%.3g %% of the peak)\n",
-              peak_m, largest_east_m, worst_m, 100.0 * worst_m / peak_m);
+  std::printf(
+      "[navigate] v0 = 1 m/s on the sphere: peak v0/w0 %.1f m, largest east error %.1f m, worst deviation "
+      "from the sine %.3g m (%.3g %% of the peak)\n",
+      peak_m, largest_east_m, worst_m, 100.0 * worst_m / peak_m);
   EXPECT_GT(largest_east_m, 0.98 * peak_m);  // the sine is really there
 }
 

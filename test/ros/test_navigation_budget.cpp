@@ -37,16 +37,20 @@ class NavigationBudget : public ::testing::Test {
     directory_ = new std::string(imu_lab::test_support::scratch_directory());
     const std::string& d = *directory_;
     ::mkdir((d + "/rlg").c_str(), 0755);
-    run_or_fail("emulate", "--profile rlg_navigation --scenario multiposition_12_thesis --rate-hz 100 --seed 5 "
-                           "--no-truth --no-increments --out " + d + "/calibration.bag");
-    run_or_fail("fit_calibration", d + "/calibration.bag --schedule multiposition_12_thesis --out " + d +
-                                       "/rlg/calibration.yaml");
+    run_or_fail("emulate",
+                "--profile rlg_navigation --scenario multiposition_12_thesis --rate-hz 100 --seed 5 "
+                "--no-truth --no-increments --out " +
+                    d + "/calibration.bag");
+    run_or_fail("fit_calibration",
+                d + "/calibration.bag --schedule multiposition_12_thesis --out " + d + "/rlg/calibration.yaml");
     for (const char* seed : {"5", "6"}) {
       const std::string bag = d + "/rest_" + seed + ".bag";
-      run_or_fail("emulate", std::string("--profile rlg_navigation --scenario static_calibration_site --duration-s 1800 "
-                                         "--rate-hz 10 --no-increments --seed ") + seed + " --out " + bag);
-      run_or_fail("correct", bag + " --calibration " + d + "/rlg/calibration.yaml --out " + d + "/corrected_" + seed +
-                                 ".bag");
+      run_or_fail("emulate",
+                  std::string("--profile rlg_navigation --scenario static_calibration_site --duration-s 1800 "
+                              "--rate-hz 10 --no-increments --seed ") +
+                      seed + " --out " + bag);
+      run_or_fail("correct",
+                  bag + " --calibration " + d + "/rlg/calibration.yaml --out " + d + "/corrected_" + seed + ".bag");
     }
     navigate(d + "/rest_5.bag", d + "/rlg/raw_trajectory.csv");
     navigate(d + "/corrected_5.bag", d + "/rlg/corrected_trajectory.csv");
@@ -60,8 +64,8 @@ class NavigationBudget : public ::testing::Test {
 std::string* NavigationBudget::directory_ = nullptr;
 
 TEST_F(NavigationBudget, RawMinusCorrectedIsWhatTheRemovedTermsGiveAndTheRestIsInsideTheBounds) {
-  const auto budget = run_command("/usr/bin/python3 " + kBudgetScript + " " + *directory_ +
-                                  "/rlg --profile rlg_navigation --check");
+  const auto budget =
+      run_command("/usr/bin/python3 " + kBudgetScript + " " + *directory_ + "/rlg --profile rlg_navigation --check");
   std::printf("%s", budget.output.c_str());
   EXPECT_EQ(budget.exit_code, 0) << budget.output;
   EXPECT_NE(budget.output.find(": explained"), std::string::npos);
@@ -79,12 +83,14 @@ TEST_F(NavigationBudget, ACorrectedRunFromAnotherCalibrationIsNotExplained) {
   // Another calibration: the accelerometer biases doubled (a few hundred micro-g more).
   YAML::Node calibration = YAML::LoadFile(*directory_ + "/rlg/calibration.yaml");
   for (std::size_t axis = 0; axis < 3; ++axis) {
-    calibration["accelerometer"]["bias_m_s2"][axis] = 2.0 * calibration["accelerometer"]["bias_m_s2"][axis].as<double>();
+    calibration["accelerometer"]["bias_m_s2"][axis] =
+        2.0 * calibration["accelerometer"]["bias_m_s2"][axis].as<double>();
   }
   std::ofstream(wrong + "/other_calibration.yaml") << calibration;
   run_or_fail("correct", *directory_ + "/rest_5.bag --calibration " + wrong + "/other_calibration.yaml --out " + wrong +
                              "/corrected.bag");
-  run_or_fail("navigate", wrong + "/corrected.bag --no-align --every-s 10 --out " + wrong + "/corrected_trajectory.csv");
+  run_or_fail("navigate",
+              wrong + "/corrected.bag --no-align --every-s 10 --out " + wrong + "/corrected_trajectory.csv");
   for (const char* file : {"calibration.yaml", "raw_trajectory.csv", "raw_trajectory_errors.csv"}) {
     ASSERT_EQ(run_command("cp " + *directory_ + "/rlg/" + file + " " + wrong + "/").exit_code, 0);
   }

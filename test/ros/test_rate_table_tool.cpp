@@ -28,8 +28,10 @@ const TableBag& table_bag() {
     TableBag b;
     b.directory = scratch_directory();
     b.bag = b.directory + "/table.bag";
-    const auto result = run_tool("emulate", "--profile tactical_mems --scenario rate_table_scale_factor "
-                                            "--rate-hz 100 --seed 3 --no-truth --no-increments --out " + b.bag);
+    const auto result = run_tool("emulate",
+                                 "--profile tactical_mems --scenario rate_table_scale_factor "
+                                 "--rate-hz 100 --seed 3 --no-truth --no-increments --out " +
+                                     b.bag);
     EXPECT_EQ(result.exit_code, 0) << result.output;
     return b;
   }();
@@ -49,7 +51,8 @@ TEST(RateTableTool, WritesBothFilesAndFindsTheProfilesScaleFactor) {
   // nonlinear terms, so the straight lines hold it. Within 4 sigma (one run).
   const auto profile =
       imu_lab::emulator::load_sensor_profile(imu_lab::ros_io::resolve_config("sensors", "tactical_mems"));
-  const double expected_ppm = profile.gyro.scale_factor_error_ppm.z() + profile.gyro.thermal.scale_factor_ppm(20.0, 0.0).z();
+  const double expected_ppm =
+      profile.gyro.scale_factor_error_ppm.z() + profile.gyro.thermal.scale_factor_ppm(20.0, 0.0).z();
   const YAML::Node estimate = report["straight_lines"]["scale_factor_error_ppm"];
   EXPECT_NEAR(estimate["value"].as<double>(), expected_ppm, 4.0 * estimate["sigma"].as<double>()) << result.output;
   EXPECT_FALSE(report["dead_zone"]["found"].as<bool>());
@@ -61,7 +64,8 @@ TEST(RateTableTool, BadOptionsExitTwoNamingTheOption) {
   const auto neither = run_tool("rate_table", b.bag + " --out " + out + "/r");
   EXPECT_EQ(neither.exit_code, 2) << neither.output;
   EXPECT_NE(neither.output.find("--scenario/--table"), std::string::npos) << neither.output;
-  const auto window = run_tool("rate_table", b.bag + " --scenario rate_table_scale_factor --window-s 0 --out " + out + "/r");
+  const auto window =
+      run_tool("rate_table", b.bag + " --scenario rate_table_scale_factor --window-s 0 --out " + out + "/r");
   EXPECT_EQ(window.exit_code, 2) << window.output;
   EXPECT_NE(window.output.find("--window-s"), std::string::npos) << window.output;
   const auto not_a_table = run_tool("rate_table", b.bag + " --scenario static --out " + out + "/r");

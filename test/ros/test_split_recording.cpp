@@ -18,9 +18,9 @@
 
 namespace {
 
+using imu_lab::io::ImuRecord;
 using imu_lab::pipeline::AllanSample;
 using imu_lab::ros_io::BagRecording;
-using imu_lab::io::ImuRecord;
 using imu_lab::test_support::read_allan_summary;
 using imu_lab::test_support::read_file;
 using imu_lab::test_support::run_tool;
@@ -120,7 +120,8 @@ TEST_F(SplitRecording, TheAllanToolTakesTheSplitFilesAndListsThemInItsSummary) {
   const std::string out_whole = directory_ + "/report_whole", out_split = directory_ + "/report_split";
   const auto a = run_tool("allan", whole_ + " --no-plot --no-identify -o " + out_whole);
   ASSERT_EQ(a.exit_code, 0) << a.output;
-  const auto b = run_tool("allan", parts_[2] + " " + parts_[0] + " " + parts_[1] + " --no-plot --no-identify -o " + out_split);
+  const auto b =
+      run_tool("allan", parts_[2] + " " + parts_[0] + " " + parts_[1] + " --no-plot --no-identify -o " + out_split);
   ASSERT_EQ(b.exit_code, 0) << b.output;
   EXPECT_NE(b.output.find("3 split files"), std::string::npos) << b.output;
   EXPECT_EQ(read_file(out_whole + "/oadev.csv"), read_file(out_split + "/oadev.csv"));
@@ -144,8 +145,9 @@ TEST_F(SplitRecording, ALostFileIsAGapThatIsSplitPooledAndReported) {
 TEST_F(SplitRecording, OverlappingFilesAreRefusedNamingBoth) {
   const std::string overlapping = directory_ + "/overlapping.bag";
   write_imu_bag(overlapping, slice(samples_, 6000, 9000));
-  const std::string message =
-      expect_input_error([&] { imu_lab::ros_io::OpenBag bag(BagRecording({parts_[0], overlapping, parts_[1]})); });
+  const std::string message = expect_input_error([&] {
+    imu_lab::ros_io::OpenBag bag(BagRecording({parts_[0], overlapping, parts_[1]}));
+  });
   EXPECT_NE(message.find(parts_[0]), std::string::npos) << message;
   EXPECT_NE(message.find(overlapping), std::string::npos) << message;
   EXPECT_NE(message.find("overlap"), std::string::npos) << message;

@@ -43,8 +43,8 @@ struct Tool {
   }
 };
 
-const std::vector<Tool> kTools = {{"allan"},           {"bag_summary"}, {"fit_thermal"}, {"fit_calibration"},
-                                  {"navigate"},        {"correct"},     {"rate_table"},      {"spectrum"}};
+const std::vector<Tool> kTools = {{"allan"},    {"bag_summary"}, {"fit_thermal"}, {"fit_calibration"},
+                                  {"navigate"}, {"correct"},     {"rate_table"},  {"spectrum"}};
 
 // A scratch directory with inputs, and an empty one for the tools' output.
 struct Scratch {
@@ -69,7 +69,8 @@ void expect_refused(const Tool& tool, const Scratch& scratch, const std::string&
   const CommandResult result = run_tool(tool.name, arguments);
   EXPECT_EQ(result.exit_code, 1) << tool.name << " " << arguments << "\n" << result.output;
   for (const std::string& word : words) {
-    EXPECT_NE(result.output.find(word), std::string::npos) << tool.name << ": no '" << word << "' in\n" << result.output;
+    EXPECT_NE(result.output.find(word), std::string::npos) << tool.name << ": no '" << word << "' in\n"
+                                                           << result.output;
   }
   EXPECT_EQ(list_directory(scratch.outputs), std::vector<std::string>{}) << tool.name << " left a partial output";
 }
@@ -167,7 +168,8 @@ TEST(BagSummaryIrregularStamps, AGapOrARateChangeIsWarnedAbout) {
   EXPECT_EQ(gap.exit_code, 0) << gap.output;
   EXPECT_NE(gap.output.find("rate 100.0000 Hz (median interval)"), std::string::npos) << gap.output;
   EXPECT_NE(gap.output.find("1 intervals off the sample period by over a factor 1.5 (0.01 .. 0.51 s)"),
-            std::string::npos) << gap.output;
+            std::string::npos)
+      << gap.output;
   const CommandResult slower = run_tool("bag_summary", irregular_bag(scratch, 2000, 2 * kInterval_ns, 0));
   EXPECT_EQ(slower.exit_code, 0) << slower.output;
   EXPECT_NE(slower.output.find("1000 intervals off the sample period"), std::string::npos) << slower.output;

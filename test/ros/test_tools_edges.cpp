@@ -67,9 +67,9 @@ ImuBagLayout with_temperature() {
 
 // ---- Options ----
 
-const std::vector<std::string> kTools = {"allan",       "bag_summary", "correct",   "emulate",       "export_csv",
+const std::vector<std::string> kTools = {"allan",           "bag_summary", "correct",    "emulate",  "export_csv",
                                          "fit_calibration", "fit_thermal", "import_csv", "navigate", "rate_table",
-                                         "repeatability", "lot_report", "spectrum"};
+                                         "repeatability",   "lot_report",  "spectrum"};
 
 // CLI11's own codes were 105-114 (navigate with no arguments: 106); the tools document 2.
 TEST(ToolOptionErrors, EveryToolExitsTwoNamingTheProblem) {
@@ -108,8 +108,10 @@ TEST(ToolNumericOptions, NonsenseNumbersAreRefusedNamingTheOptionAndWriteNothing
       {"navigate", bag + " --latitude-deg 50 --longitude-deg 1e6 --height-m 0" + out,
        "longitude_deg: must be in [-180, 360] degrees"},
       {"navigate",
-       bag + " --latitude-deg 50 --longitude-deg 30 --height-m 0 --no-align --initial-velocity-enu-m-s 0,0,0"
-             " --initial-yaw-deg 1e300" + out,
+       bag +
+           " --latitude-deg 50 --longitude-deg 30 --height-m 0 --no-align --initial-velocity-enu-m-s 0,0,0"
+           " --initial-yaw-deg 1e300" +
+           out,
        "initial_yaw_deg: must be in [-360, 360]"},
       {"import_csv", "x.csv --time-offset-s -1e30" + out, "--time-offset-s: '-1e30' is not a number of seconds within"},
       {"fit_thermal", bag + " --latitude-deg 95" + out, "--latitude-deg: must be in [-90, 90], got 95"},
@@ -171,9 +173,9 @@ TEST(ToolsDiskFull, ABagThatCannotBeWrittenIsRefusedNamingItAndTheOldOneIsKept) 
 
   const std::string big = inputs + "/big.bag";
   ASSERT_EQ(run_tool("emulate", "--duration-s 60 --rate-hz 200 --out " + big).exit_code, 0);
-  expect_bag_refused_and_old_kept("correct", big + " --topic /imu/raw --calibration " + kData +
-                                                 "/calibration_example.yaml --out " + out,
-                                  out, old_bytes);
+  expect_bag_refused_and_old_kept(
+      "correct", big + " --topic /imu/raw --calibration " + kData + "/calibration_example.yaml --out " + out, out,
+      old_bytes);
 }
 
 // ---- Sets of outputs ----
@@ -181,7 +183,8 @@ TEST(ToolsDiskFull, ABagThatCannotBeWrittenIsRefusedNamingItAndTheOldOneIsKept) 
 // Runs `tool` once to make the old set, blocks the output `blocked` (written after others), runs
 // it on another input: it must fail naming the blocked path and leave every old file as it was.
 void expect_old_set_kept(const std::string& tool, const std::string& first_arguments,
-                         const std::string& second_arguments, const std::string& directory, const std::string& blocked) {
+                         const std::string& second_arguments, const std::string& directory,
+                         const std::string& blocked) {
   const CommandResult first = run_tool(tool, first_arguments);
   ASSERT_EQ(first.exit_code, 0) << first.output;
   block(directory + "/" + blocked);
@@ -192,7 +195,8 @@ void expect_old_set_kept(const std::string& tool, const std::string& first_argum
   const FileContents after = contents_of(directory);
   EXPECT_EQ(after.size(), old_set.size()) << tool << " added or removed files";
   for (const auto& [name, bytes] : old_set) {
-    EXPECT_TRUE(after.count(name) && after.at(name) == bytes) << tool << ": " << name << " is not the old file any more";
+    EXPECT_TRUE(after.count(name) && after.at(name) == bytes)
+        << tool << ": " << name << " is not the old file any more";
   }
 }
 
@@ -279,10 +283,13 @@ TEST(ToolsTriadNotProvided, AllanAndBagSummaryLeaveItOutTheOthersRefuseNamingIt)
         Refusing{"correct", " --calibration " + kData + "/calibration_example.yaml --out " + outputs + "/c.bag"}}) {
     const CommandResult result = run_tool(tool.tool, bag + tool.arguments);
     EXPECT_EQ(result.exit_code, 1) << tool.tool << ": " << result.output;
-    EXPECT_TRUE(contains(result.output, bag + ", topic /imu/raw: 3000 of 3000 messages without angular rate")) << result.output;
+    EXPECT_TRUE(contains(result.output, bag + ", topic /imu/raw: 3000 of 3000 messages without angular rate"))
+        << result.output;
   }
-  const CommandResult navigate = run_tool("navigate", bag + " --latitude-deg 50 --longitude-deg 10 --height-m 0 "
-                                                          "--alignment-duration-s 10 --out " + outputs + "/t.csv");
+  const CommandResult navigate = run_tool("navigate", bag +
+                                                          " --latitude-deg 50 --longitude-deg 10 --height-m 0 "
+                                                          "--alignment-duration-s 10 --out " +
+                                                          outputs + "/t.csv");
   EXPECT_EQ(navigate.exit_code, 1) << navigate.output;
   EXPECT_TRUE(contains(navigate.output, bag)) << navigate.output;
   EXPECT_EQ(list_directory(outputs), std::vector<std::string>{"report"});
@@ -307,8 +314,10 @@ TEST(ToolsUnusableValues, AllanLeavesExtremeValuesOutAndRefusesABagWithoutAnyUsa
   EXPECT_TRUE(contains(summary.output, extreme + ", topic /imu/raw: 3 samples with NaN/Inf (or beyond +-1e100)"))
       << summary.output;
   // navigate integrated them (exit 0, a trajectory of overflowed numbers); now refused like NaN.
-  const CommandResult navigate = run_tool("navigate", extreme + " --latitude-deg 50 --longitude-deg 30 --height-m 0 "
-                                                      "--alignment-duration-s 1 -o " + outputs + "/trajectory.csv");
+  const CommandResult navigate = run_tool("navigate", extreme +
+                                                          " --latitude-deg 50 --longitude-deg 30 --height-m 0 "
+                                                          "--alignment-duration-s 1 -o " +
+                                                          outputs + "/trajectory.csv");
   EXPECT_EQ(navigate.exit_code, 1) << navigate.output;
   EXPECT_TRUE(contains(navigate.output, "3 samples with NaN/Inf, a value beyond +-1e100")) << navigate.output;
   EXPECT_FALSE(file_exists(outputs + "/trajectory.csv"));
@@ -353,8 +362,10 @@ TEST(FitToolsSite, TheSiteIsRequiredWhereItMattersAndAConflictIsRefused) {
   const CommandResult no_site = run_tool("fit_calibration", bag + " -o " + out);
   EXPECT_EQ(no_site.exit_code, 2) << no_site.output;  // was: latitude 0, height 0, exit 0
   EXPECT_TRUE(contains(no_site.output, "give the site's latitude and height")) << no_site.output;
-  const CommandResult conflict = run_tool("fit_calibration", bag + " --schedule multiposition_12_thesis "
-                                                                   "--latitude-deg 50 -o " + out);
+  const CommandResult conflict = run_tool("fit_calibration", bag +
+                                                                 " --schedule multiposition_12_thesis "
+                                                                 "--latitude-deg 50 -o " +
+                                                                 out);
   EXPECT_EQ(conflict.exit_code, 2) << conflict.output;  // --schedule used to override it silently
   EXPECT_TRUE(contains(conflict.output, "--schedule excludes --latitude-deg")) << conflict.output;
   const CommandResult thermal = run_tool("fit_thermal", bag + " -o " + out);
@@ -368,17 +379,20 @@ TEST(FitToolsSite, TheSiteIsRequiredWhereItMattersAndAConflictIsRefused) {
 TEST(FitToolsSite, AFitFarAboveItsNoiseIsWarnedAbout) {
   const std::string directory = scratch_directory();
   const std::string bag = directory + "/cal.bag";
-  ASSERT_EQ(run_tool("emulate", "--profile tactical_mems --scenario multiposition_12_thesis --rate-hz 100 --seed 3 "
-                                "--no-truth --no-increments --out " + bag)
+  ASSERT_EQ(run_tool("emulate",
+                     "--profile tactical_mems --scenario multiposition_12_thesis --rate-hz 100 --seed 3 "
+                     "--no-truth --no-increments --out " +
+                         bag)
                 .exit_code,
             0);
-  const CommandResult wrong = run_tool("fit_calibration", bag + " --latitude-deg 0 --height-m 0 -o " + directory + "/w.yaml");
+  const CommandResult wrong =
+      run_tool("fit_calibration", bag + " --latitude-deg 0 --height-m 0 -o " + directory + "/w.yaml");
   ASSERT_EQ(wrong.exit_code, 0) << wrong.output;
   EXPECT_TRUE(contains(wrong.output, "fit_calibration: warning: the calibration fit: chi2/dof")) << wrong.output;
   EXPECT_TRUE(contains(wrong.output, "are the latitude and height the site's")) << wrong.output;
   EXPECT_TRUE(contains(read_file(directory + "/w_report.txt"), "WARNING: the calibration fit: chi2/dof"));
-  const CommandResult right = run_tool("fit_calibration", bag + " --latitude-deg 50.45 --height-m 180 -o " +
-                                                              directory + "/r.yaml");
+  const CommandResult right =
+      run_tool("fit_calibration", bag + " --latitude-deg 50.45 --height-m 180 -o " + directory + "/r.yaml");
   ASSERT_EQ(right.exit_code, 0) << right.output;
   EXPECT_FALSE(contains(right.output, "warning")) << right.output;
 }
@@ -398,8 +412,9 @@ std::vector<imu_lab::io::ImuRecord> records_of(const std::string& bag) {
 
 TEST(ImportCsvFormats, EurocHeadersAreRecognisedWithNoOptions) {
   const std::string directory = scratch_directory();
-  std::string text = "#timestamp [ns],w_RS_S_x [rad s^-1],w_RS_S_y [rad s^-1],w_RS_S_z [rad s^-1],"
-                     "a_RS_S_x [m s^-2],a_RS_S_y [m s^-2],a_RS_S_z [m s^-2]\n";
+  std::string text =
+      "#timestamp [ns],w_RS_S_x [rad s^-1],w_RS_S_y [rad s^-1],w_RS_S_z [rad s^-1],"
+      "a_RS_S_x [m s^-2],a_RS_S_y [m s^-2],a_RS_S_z [m s^-2]\n";
   for (int i = 0; i < 50; ++i) {
     text += std::to_string(1403636579758555392LL + 5000000LL * i) + ",-0.0991,0.1403,0.0251,8.1125,-1.9613,-2.6031\n";
   }
@@ -469,7 +484,8 @@ TEST(PackageFiles, ToolsFindTheirConfigurationAndScriptsWithoutASourcedWorkspace
   const CommandResult emulate =
       run_command(unsourced("emulate", "--scenario coning --duration-s 2 --rate-hz 100 --out " + directory + "/c.bag"));
   EXPECT_EQ(emulate.exit_code, 0) << emulate.output;  // was: no shipped configuration /config/scenarios/coning.yaml
-  const CommandResult allan = run_command(unsourced("allan", directory + "/c.bag --no-identify --out " + directory + "/r"));
+  const CommandResult allan =
+      run_command(unsourced("allan", directory + "/c.bag --no-identify --out " + directory + "/r"));
   EXPECT_EQ(allan.exit_code, 0) << allan.output;
   EXPECT_TRUE(file_exists(directory + "/r/allan.png")) << "no plot without a sourced workspace:\n" << allan.output;
 }
@@ -498,9 +514,9 @@ TEST(CorrectSummary, ARateRangeIsPrintedOnlyForAModelWithARateTerm) {
       run_tool("correct", bag + " --thermal-model " + directory + "/static_model.yaml --out " + directory + "/a.bag");
   ASSERT_EQ(without_rate.exit_code, 0) << without_rate.output;
   EXPECT_FALSE(contains(without_rate.output, "degC/s")) << without_rate.output;
-  const CommandResult with_rate = run_tool("correct", bag + " --thermal-model " + kData +
-                                                          "/thermal/model_uncompensated_mems_gyro.yaml --out " +
-                                                          directory + "/b.bag");
+  const CommandResult with_rate =
+      run_tool("correct", bag + " --thermal-model " + kData + "/thermal/model_uncompensated_mems_gyro.yaml --out " +
+                              directory + "/b.bag");
   ASSERT_EQ(with_rate.exit_code, 0) << with_rate.output;
   EXPECT_TRUE(contains(with_rate.output, "degC/s")) << with_rate.output;
 }

@@ -70,8 +70,8 @@ inline double relative_difference(double a, double b) {
 
 // Largest relative difference over deviation, EDF and bounds; m, '#' and alpha must match exactly
 // and both lists must hold the same points. Returns the largest difference seen.
-inline double compare_points(const std::vector<StabilityPoint>& streamed,
-                             const std::vector<StabilityPoint>& reference, const std::string& what) {
+inline double compare_points(const std::vector<StabilityPoint>& streamed, const std::vector<StabilityPoint>& reference,
+                             const std::string& what) {
   EXPECT_EQ(streamed.size(), reference.size()) << what;
   double worst = 0.0;
   for (std::size_t i = 0; i < std::min(streamed.size(), reference.size()); ++i) {
@@ -82,9 +82,9 @@ inline double compare_points(const std::vector<StabilityPoint>& streamed,
     EXPECT_EQ(s.term_count, r.term_count) << where;
     EXPECT_EQ(s.alpha, r.alpha) << where;
     EXPECT_NEAR(s.tau_s, r.tau_s, 1e-12 * r.tau_s) << where;
-    for (const auto& pair : {std::make_pair(s.deviation, r.deviation), std::make_pair(s.edf, r.edf),
-                             std::make_pair(s.deviation_lower, r.deviation_lower),
-                             std::make_pair(s.deviation_upper, r.deviation_upper)}) {
+    for (const auto& pair :
+         {std::make_pair(s.deviation, r.deviation), std::make_pair(s.edf, r.edf),
+          std::make_pair(s.deviation_lower, r.deviation_lower), std::make_pair(s.deviation_upper, r.deviation_upper)}) {
       const double difference = relative_difference(pair.first, pair.second);
       EXPECT_LE(difference, 1e-9) << where << " streamed " << pair.first << " reference " << pair.second;
       worst = std::max(worst, difference);

@@ -36,9 +36,9 @@ inline Attitudes shipped_positions(const std::string& scenario_file) {
 
 // Nine orientations no scheme uses, for the held-out check (the thesis's verification run has nine).
 inline Attitudes held_out_positions() {
-  const double roll_pitch_yaw_deg[9][3] = {{30, 20, 0},     {-60, 35, 45},   {120, -30, 10},
-                                           {15, 70, -80},   {-150, 10, 30},  {75, -60, 120},
-                                           {-20, -15, 200}, {160, 50, -45},  {45, 45, 45}};
+  const double roll_pitch_yaw_deg[9][3] = {{30, 20, 0},     {-60, 35, 45},  {120, -30, 10},
+                                           {15, 70, -80},   {-150, 10, 30}, {75, -60, 120},
+                                           {-20, -15, 200}, {160, 50, -45}, {45, 45, 45}};
   Attitudes attitudes;
   for (const auto& rpy : roll_pitch_yaw_deg) {
     attitudes.push_back(emulator::attitude_from_roll_pitch_yaw(rpy[0] * kDeg, rpy[1] * kDeg, rpy[2] * kDeg));
@@ -80,10 +80,10 @@ inline emulator::SensorProfile tactical_test_profile(bool with_g_sensitivity = f
   profile.gyro.scale_factor_error_ppm = Eigen::Vector3d(500.0, -1200.0, 2000.0);
   profile.accelerometer.scale_factor_error_ppm = Eigen::Vector3d(-800.0, 1500.0, 1900.0);
   profile.gyro.misalignment_rad << 0.0, 3.0 * kArcmin, -2.5 * kArcmin,  //
-      -3.2 * kArcmin, 0.0, 2.8 * kArcmin,                                //
+      -3.2 * kArcmin, 0.0, 2.8 * kArcmin,                               //
       3.5 * kArcmin, -2.0 * kArcmin, 0.0;
   profile.accelerometer.misalignment_rad << 0.0, -2.8 * kArcmin, 3.1 * kArcmin,  //
-      2.6 * kArcmin, 0.0, -3.4 * kArcmin,                                         //
+      2.6 * kArcmin, 0.0, -3.4 * kArcmin,                                        //
       -3.0 * kArcmin, 2.2 * kArcmin, 0.0;
   return profile;
 }

@@ -17,27 +17,24 @@ namespace imu_lab {
 namespace identify_test {
 
 // Rate samples (interval averages) of the three axes of a triad at rest.
-inline std::array<std::vector<double>, 3> emulate_triad_rates(const emulator::TriadErrorModel& model,
-                                                             double rate_hz, double duration_s,
-                                                             std::uint64_t seed) {
+inline std::array<std::vector<double>, 3> emulate_triad_rates(const emulator::TriadErrorModel& model, double rate_hz,
+                                                              double duration_s, std::uint64_t seed) {
   emulator::TriadChannel channel(model, "gyro", seed);
   const double interval_s = 1.0 / rate_hz;
   const long long count = static_cast<long long>(duration_s * rate_hz);
   std::array<std::vector<double>, 3> rates;
   for (auto& axis : rates) axis.resize(count);
   for (long long k = 0; k < count; ++k) {
-    const Eigen::Vector3d sample = channel.measure(Eigen::Vector3d::Zero(),
-                                                   Eigen::Vector3d::Zero(), k * interval_s,
-                                                   interval_s);
+    const Eigen::Vector3d sample =
+        channel.measure(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), k * interval_s, interval_s);
     for (int axis = 0; axis < 3; ++axis) rates[axis][k] = sample[axis];
   }
   return rates;
 }
 
 // Rate samples of axis x of a gyro triad at rest carrying `noise` on x only.
-inline std::vector<double> emulate_axis_rates(const std::vector<noise::ProcessParameters>& noise,
-                                              double rate_hz, double duration_s,
-                                              std::uint64_t seed, double bandwidth_hz = 0.0) {
+inline std::vector<double> emulate_axis_rates(const std::vector<noise::ProcessParameters>& noise, double rate_hz,
+                                              double duration_s, std::uint64_t seed, double bandwidth_hz = 0.0) {
   emulator::TriadErrorModel model;
   model.noise_per_axis[0] = noise;
   model.bandwidth_hz = bandwidth_hz;
@@ -45,16 +42,15 @@ inline std::vector<double> emulate_axis_rates(const std::vector<noise::ProcessPa
 }
 
 // Overlapping Allan deviation of the rates at octave averaging factors.
-inline std::vector<allan::StabilityPoint> octave_oadev(const std::vector<double>& rates,
-                                                       double rate_hz) {
+inline std::vector<allan::StabilityPoint> octave_oadev(const std::vector<double>& rates, double rate_hz) {
   return allan::evaluate_frequency(allan::Statistic::kOverlappingAllan, rates, 1.0 / rate_hz,
                                    identify::octave_averaging_factors(rates.size()));
 }
 
 // A noise-free overlapping-Allan curve of `model` at octave factors for a record of length_s,
 // with white-FM-like EDFs (1.5 length / tau).
-inline std::vector<allan::StabilityPoint> exact_octave_curve(const identify::NoiseModel& model,
-                                                             double tau0_s, double length_s) {
+inline std::vector<allan::StabilityPoint> exact_octave_curve(const identify::NoiseModel& model, double tau0_s,
+                                                             double length_s) {
   std::vector<allan::StabilityPoint> points;
   for (int m : identify::octave_averaging_factors(static_cast<long long>(length_s / tau0_s))) {
     allan::StabilityPoint point;

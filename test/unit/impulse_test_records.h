@@ -31,8 +31,8 @@ struct Record {
 };
 
 // A triad carrying the same noise on every axis, its output quantised to `step` in rate.
-inline emulator::TriadErrorModel mems_triad(double white_density, double random_walk, double bandwidth_hz,
-                                            double step, double rate_hz) {
+inline emulator::TriadErrorModel mems_triad(double white_density, double random_walk, double bandwidth_hz, double step,
+                                            double rate_hz) {
   emulator::TriadErrorModel model;
   for (auto& axis : model.noise_per_axis) {
     axis.push_back(noise::WhiteRateParameters{white_density});

@@ -17,10 +17,9 @@ namespace imu_lab {
 namespace allan {
 namespace {
 
-const Statistic kAllStatistics[] = {
-    Statistic::kAllan,    Statistic::kOverlappingAllan,    Statistic::kModifiedAllan,
-    Statistic::kHadamard, Statistic::kOverlappingHadamard, Statistic::kTime,
-    Statistic::kTotal,    Statistic::kAllanKrobka,         Statistic::kHadamardKrobka};
+const Statistic kAllStatistics[] = {Statistic::kAllan,    Statistic::kOverlappingAllan,    Statistic::kModifiedAllan,
+                                    Statistic::kHadamard, Statistic::kOverlappingHadamard, Statistic::kTime,
+                                    Statistic::kTotal,    Statistic::kAllanKrobka,         Statistic::kHadamardKrobka};
 
 std::vector<double> ramp_phase(std::size_t count) {
   std::vector<double> phase(count);
@@ -72,8 +71,7 @@ TEST(AllanBatchInput, EvaluateSkipsTausTheRecordCannotSupport) {
       EXPECT_NE(point.averaging_factor, 1000) << statistic_name(statistic);
       EXPECT_DOUBLE_EQ(point.tau_s, 0.5 * point.averaging_factor);
     }
-    EXPECT_TRUE(evaluate(statistic, ramp_phase(3), 1.0, {2, 5}).empty())
-        << statistic_name(statistic);
+    EXPECT_TRUE(evaluate(statistic, ramp_phase(3), 1.0, {2, 5}).empty()) << statistic_name(statistic);
   }
 }
 
@@ -106,8 +104,7 @@ TEST(AllanBatchInput, NonFiniteSamplesAreRefused) {
   std::vector<double> frequency(50, 1.0);
   frequency[3] = std::numeric_limits<double>::infinity();
   expect_refused([&] { phase_from_frequency(frequency, 1.0); }, "sample 3");
-  expect_refused([&] { evaluate_frequency(Statistic::kAllan, frequency, 1.0, {1}); },
-                 "not finite");
+  expect_refused([&] { evaluate_frequency(Statistic::kAllan, frequency, 1.0, {1}); }, "not finite");
 }
 
 TEST(AllanBatchInput, AveragingFactorBelowOneAndBadConfidenceAreRefused) {

@@ -23,8 +23,7 @@ std::vector<double> drifting_rate(std::size_t count, double ramp_rad_s2, double 
   for (std::size_t k = 0; k < count; ++k) {
     const double start_s = k * kTau0S, end_s = (k + 1) * kTau0S;
     rate[k] = ramp_rad_s2 * 0.5 * (start_s + end_s) +
-              quadratic_rad_s3 * (end_s * end_s * end_s - start_s * start_s * start_s) /
-                  (3.0 * kTau0S);
+              quadratic_rad_s3 * (end_s * end_s * end_s - start_s * start_s * start_s) / (3.0 * kTau0S);
   }
   return rate;
 }
@@ -43,8 +42,7 @@ DeviationBounds white_fm_bounds(Statistic statistic, double deviation, int m, st
 
 TEST(AllanBatchKrobka, RateRampGivesAvarRSquaredTauSquaredOverTwoAndNoDispersion) {
   const double ramp_rad_s2 = 2e-3;
-  const std::vector<double> phase =
-      phase_from_frequency(drifting_rate(20000, ramp_rad_s2, 0.0), kTau0S);
+  const std::vector<double> phase = phase_from_frequency(drifting_rate(20000, ramp_rad_s2, 0.0), kTau0S);
   for (int m : {1, 10, 100, 1000, 5000}) {
     const double tau_s = m * kTau0S;
     const double expected = ramp_rad_s2 * ramp_rad_s2 * tau_s * tau_s / 2.0;
@@ -67,10 +65,8 @@ TEST(AllanBatchKrobka, RampPlusWhiteNoiseLeavesTheWhiteLevel) {
     const double ramp = ramp_rad_s2 * ramp_rad_s2 * tau_s * tau_s / 2.0;
     const double allan = std::sqrt(overlapping_allan_variance(phase, kTau0S, m));
     const double krobka = std::sqrt(allan_krobka_variance(phase, kTau0S, m));
-    const DeviationBounds allan_bounds =
-        white_fm_bounds(Statistic::kOverlappingAllan, allan, m, phase.size());
-    const DeviationBounds krobka_bounds =
-        white_fm_bounds(Statistic::kAllanKrobka, krobka, m, phase.size());
+    const DeviationBounds allan_bounds = white_fm_bounds(Statistic::kOverlappingAllan, allan, m, phase.size());
+    const DeviationBounds krobka_bounds = white_fm_bounds(Statistic::kAllanKrobka, krobka, m, phase.size());
     // AVAR carries ramp + white; AKVAR only the white part, each within its 99 % interval.
     EXPECT_LE(allan_bounds.lower, std::sqrt(ramp + white)) << m;
     EXPECT_GE(allan_bounds.upper, std::sqrt(ramp + white)) << m;
@@ -79,8 +75,7 @@ TEST(AllanBatchKrobka, RampPlusWhiteNoiseLeavesTheWhiteLevel) {
   }
   // Where the ramp dominates, removing it changes the answer by more than the noise can.
   const double tau_s = 1000 * kTau0S;
-  EXPECT_LT(allan_krobka_variance(phase, kTau0S, 1000),
-            0.1 * overlapping_allan_variance(phase, kTau0S, 1000))
+  EXPECT_LT(allan_krobka_variance(phase, kTau0S, 1000), 0.1 * overlapping_allan_variance(phase, kTau0S, 1000))
       << "at tau = " << tau_s << " s";
 }
 
@@ -94,11 +89,9 @@ TEST(AllanBatchKrobka, OnWhiteNoiseTheDispersionMatchesTheVariance) {
           std::pair{Statistic::kOverlappingHadamard, Statistic::kHadamardKrobka}}) {
       const double parent = std::sqrt(variance(variance_statistic, phase, kTau0S, m));
       const double dispersion = std::sqrt(variance(dispersion_statistic, phase, kTau0S, m));
-      const DeviationBounds parent_bounds =
-          white_fm_bounds(variance_statistic, parent, m, phase.size());
+      const DeviationBounds parent_bounds = white_fm_bounds(variance_statistic, parent, m, phase.size());
       EXPECT_LE(dispersion, parent) << statistic_name(dispersion_statistic) << " m = " << m;
-      EXPECT_GE(dispersion, parent_bounds.lower)
-          << statistic_name(dispersion_statistic) << " m = " << m;
+      EXPECT_GE(dispersion, parent_bounds.lower) << statistic_name(dispersion_statistic) << " m = " << m;
     }
   }
 }
@@ -120,8 +113,7 @@ TEST(AllanBatchKrobka, HadamardKrobkaRemovesAQuadraticRateThatHadamardKeeps) {
     }
     const double white = sigma_rad_s * sigma_rad_s * kTau0S / tau_s;
     const double dispersion = std::sqrt(hadamard_krobka_variance(noisy_phase, kTau0S, m));
-    const DeviationBounds bounds =
-        white_fm_bounds(Statistic::kHadamardKrobka, dispersion, m, noisy_phase.size());
+    const DeviationBounds bounds = white_fm_bounds(Statistic::kHadamardKrobka, dispersion, m, noisy_phase.size());
     EXPECT_LE(bounds.lower, std::sqrt(white)) << m;
     EXPECT_GE(bounds.upper, std::sqrt(white)) << m;
   }
@@ -131,11 +123,9 @@ TEST(AllanBatchKrobka, EdfIsTheParentsMinusOne) {
   for (int alpha : {2, 1, 0, -1, -2}) {
     for (int m : {1, 8, 64}) {
       EXPECT_DOUBLE_EQ(equivalent_degrees_of_freedom(Statistic::kAllanKrobka, alpha, m, 5000),
-                       equivalent_degrees_of_freedom(Statistic::kOverlappingAllan, alpha, m,
-                                                     5000) - 1.0);
-      EXPECT_DOUBLE_EQ(
-          equivalent_degrees_of_freedom(Statistic::kHadamardKrobka, alpha, m, 5000),
-          equivalent_degrees_of_freedom(Statistic::kOverlappingHadamard, alpha, m, 5000) - 1.0);
+                       equivalent_degrees_of_freedom(Statistic::kOverlappingAllan, alpha, m, 5000) - 1.0);
+      EXPECT_DOUBLE_EQ(equivalent_degrees_of_freedom(Statistic::kHadamardKrobka, alpha, m, 5000),
+                       equivalent_degrees_of_freedom(Statistic::kOverlappingHadamard, alpha, m, 5000) - 1.0);
     }
   }
 }

@@ -37,18 +37,16 @@ struct Case {
 
 std::vector<Case> pure_noises() {
   const std::size_t n = 20000;
-  return {{"WPM", 2, white(n, 1)},
-          {"WFM", 0, cumulative(white(n, 2))},
-          {"RWFM", -2, cumulative(cumulative(white(n, 3)))}};
+  return {
+      {"WPM", 2, white(n, 1)}, {"WFM", 0, cumulative(white(n, 2))}, {"RWFM", -2, cumulative(cumulative(white(n, 3)))}};
 }
 
 TEST(AllanBatchNoiseType, Lag1MethodIdentifiesPureNoises) {
   for (const Case& noise : pure_noises()) {
     for (int m : {1, 4, 16, 64}) {  // >= 300 decimated points: the lag-1 method
-      for (Statistic statistic : {Statistic::kOverlappingAllan, Statistic::kModifiedAllan,
-                                  Statistic::kOverlappingHadamard}) {
-        EXPECT_EQ(estimate_noise_alpha(statistic, noise.phase, 1.0, m, SampleKind::kPhase),
-                  noise.alpha)
+      for (Statistic statistic :
+           {Statistic::kOverlappingAllan, Statistic::kModifiedAllan, Statistic::kOverlappingHadamard}) {
+        EXPECT_EQ(estimate_noise_alpha(statistic, noise.phase, 1.0, m, SampleKind::kPhase), noise.alpha)
             << noise.name << " " << statistic_name(statistic) << " m = " << m;
       }
     }
@@ -62,8 +60,7 @@ TEST(AllanBatchNoiseType, B1AndRnFallbackIdentifiesPureNoises) {
   for (const Case& noise : pure_noises()) {
     for (int m : {700, 1000}) {  // 28 and 19 averages: too few for lag-1
       for (Statistic statistic : {Statistic::kAllan, Statistic::kHadamard}) {
-        EXPECT_EQ(estimate_noise_alpha(statistic, noise.phase, 1.0, m, SampleKind::kPhase),
-                  noise.alpha)
+        EXPECT_EQ(estimate_noise_alpha(statistic, noise.phase, 1.0, m, SampleKind::kPhase), noise.alpha)
             << noise.name << " " << statistic_name(statistic) << " m = " << m;
       }
     }
@@ -71,8 +68,8 @@ TEST(AllanBatchNoiseType, B1AndRnFallbackIdentifiesPureNoises) {
 }
 
 TEST(AllanBatchNoiseType, ExpectedB1RatiosMatchTheirClosedForms) {
-  EXPECT_DOUBLE_EQ(expected_b1_ratio(10, -1), 1.0);           // WFM: B1 = 1
-  EXPECT_DOUBLE_EQ(expected_b1_ratio(10, 1), 5.0);            // RWFM: N / 2
+  EXPECT_DOUBLE_EQ(expected_b1_ratio(10, -1), 1.0);             // WFM: B1 = 1
+  EXPECT_DOUBLE_EQ(expected_b1_ratio(10, 1), 5.0);              // RWFM: N / 2
   EXPECT_NEAR(expected_b1_ratio(10, -2), 99.0 / 135.0, 1e-15);  // PM: (N^2-1)/(1.5 N (N-1))
   EXPECT_NEAR(expected_b1_ratio(10, 0), 10 * std::log(10.0) / (18 * std::log(2.0)), 1e-15);
 }

@@ -43,8 +43,7 @@ inline std::vector<Stable32Row> read_stable32_table(const std::string& path) {
     std::istringstream fields(line);
     Stable32Row row;
     std::string lower, upper;
-    fields >> row.averaging_factor >> row.tau_s >> row.term_count >> row.alpha >> lower >>
-        row.sigma_text >> upper;
+    fields >> row.averaging_factor >> row.tau_s >> row.term_count >> row.alpha >> lower >> row.sigma_text >> upper;
     if (!fields) throw std::runtime_error("malformed Stable32 row in " + path + ": " + line);
     row.lower = std::stod(lower);
     row.sigma = std::stod(row.sigma_text);

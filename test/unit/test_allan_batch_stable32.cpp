@@ -70,11 +70,9 @@ TEST(AllanBatchPhaseDat, ReproducesStable32SigmaCountAlphaAndBounds) {
   ASSERT_EQ(phase.size(), 1001u);
   for (Statistic statistic : kStable32Statistics) {
     const std::string name = statistic_name(statistic);
-    const auto rows =
-        read_stable32_table(stable32_path("phase_dat/phase_dat_" + name + "_octave.txt"));
+    const auto rows = read_stable32_table(stable32_path("phase_dat/phase_dat_" + name + "_octave.txt"));
     ASSERT_GE(rows.size(), 8u) << name;
-    const std::vector<StabilityPoint> points =
-        evaluate(statistic, phase, 1.0, averaging_factors_of(rows), 0.683);
+    const std::vector<StabilityPoint> points = evaluate(statistic, phase, 1.0, averaging_factors_of(rows), 0.683);
     ASSERT_EQ(points.size(), rows.size()) << name;
     double worst_value = 0.0, worst_bound = 0.0;
     for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -92,8 +90,8 @@ TEST(AllanBatchPhaseDat, ReproducesStable32SigmaCountAlphaAndBounds) {
       worst_bound = std::max({worst_bound, std::fabs(point.deviation_lower / row.lower - 1.0),
                               std::fabs(point.deviation_upper / row.upper - 1.0)});
     }
-    std::printf("PHASE.DAT %-6s worst relative error: sigma %.1e, bounds %.1e\n", name.c_str(),
-                worst_value, worst_bound);
+    std::printf("PHASE.DAT %-6s worst relative error: sigma %.1e, bounds %.1e\n", name.c_str(), worst_value,
+                worst_bound);
   }
 }
 
@@ -121,8 +119,8 @@ TEST(AllanBatchOcxo, ReproducesStable32SigmaCountAndNoiseTypeAtAllTaus) {
       worst_value = std::max(worst_value, std::fabs(point.deviation / row.sigma - 1.0));
     }
     const double share = static_cast<double>(alpha_agreements) / rows.size();
-    std::printf("OCXO %-6s %zu taus, worst sigma error %.1e, alpha agrees on %.1f %%\n",
-                name.c_str(), rows.size(), worst_value, 100.0 * share);
+    std::printf("OCXO %-6s %zu taus, worst sigma error %.1e, alpha agrees on %.1f %%\n", name.c_str(), rows.size(),
+                worst_value, 100.0 * share);
     if (statistic == Statistic::kTotal) {
       // Stable32 1.60 leaves TOTDEV's Alpha column at 0 in this run (it is 0 even at m = 1, 2,
       // where every other statistic reads FPM): it did not identify a noise type, so there is

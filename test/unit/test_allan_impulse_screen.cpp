@@ -21,8 +21,8 @@ using allan::ImpulseScreenOptions;
 using impulse_test::emulate_static_record;
 using impulse_test::inject;
 using impulse_test::kChannels;
-using impulse_test::kStartNs;
 using impulse_test::Knock;
+using impulse_test::kStartNs;
 using impulse_test::Record;
 using impulse_test::sample_noise;
 using impulse_test::screen;
@@ -189,8 +189,9 @@ TEST_F(KnockedRecord, TheEngineStartsASegmentAtEveryEvent) {
 // put the knocked curve outside the clean curve's interval of the same confidence (same data,
 // same EDF) at many taus, so the agreement is the screen's doing.
 TEST_F(KnockedRecord, AllanCurveAfterScreeningAgreesWithTheCleanRecord) {
-  const std::size_t points =
-      kChannels * impulse_test::engine_snapshot(clean_->stamps_ns, clean_->values).curve(allan::Statistic::kOverlappingAllan, 0).size();
+  const std::size_t points = kChannels * impulse_test::engine_snapshot(clean_->stamps_ns, clean_->values)
+                                             .curve(allan::Statistic::kOverlappingAllan, 0)
+                                             .size();
   const double confidence = 1.0 - 0.01 / static_cast<double>(points);
   const auto clean = impulse_test::engine_snapshot(clean_->stamps_ns, clean_->values, confidence);
   const auto result = screen(*knocked_);

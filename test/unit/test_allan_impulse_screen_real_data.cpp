@@ -1,7 +1,7 @@
 // The impulse screen and the output-step detector on real static recordings of three ADIS16405
-// units (the reference data's real_static, under IMU_LAB_REFERENCE_DIR; imported as the CSV importer does: deg/s and g to SI):
-// the knocked unit's two large knocks are found where they happened, the other two units raise no
-// event with the default threshold, and the output steps are the parts' LSBs.
+// units (the reference data's real_static, under IMU_LAB_REFERENCE_DIR; imported as the CSV importer does: deg/s and g
+// to SI): the knocked unit's two large knocks are found where they happened, the other two units raise no event with
+// the default threshold, and the output steps are the parts' LSBs.
 #include <gtest/gtest.h>
 
 #include <cmath>

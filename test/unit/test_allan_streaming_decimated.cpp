@@ -33,8 +33,8 @@ TEST(AllanStreamingDecimated, BeyondTheExactLimitEqualsTheDecimatedBatchEstimato
       const std::vector<StabilityPoint>& curve = snapshot.curve(statistic, c);
       for (const PlannedLevel& level : plan.levels) {
         if (level.level == 0) continue;
-        const auto reference = evaluate_decimated_frequency(statistic, rates[c], 1e-3, level.level,
-                                                            level.level_averaging_factors);
+        const auto reference =
+            evaluate_decimated_frequency(statistic, rates[c], 1e-3, level.level, level.level_averaging_factors);
         std::vector<StabilityPoint> streamed;
         for (const StabilityPoint& point : curve) {
           for (const StabilityPoint& expected : reference) {
@@ -66,7 +66,7 @@ TEST(AllanStreamingDecimated, LevelsCoverOneOctaveEachAndReportMultiplesOfTheirB
       previous_largest = factor << level.level;
     }
   }
-  EXPECT_EQ(plan.levels.size(), 11u);  // 100 * 2^10 >= 1e5
+  EXPECT_EQ(plan.levels.size(), 11u);                             // 100 * 2^10 >= 1e5
   EXPECT_EQ(plan.levels[1].level_averaging_factors.front(), 51);  // m = 101 rounds up to 102
   EXPECT_EQ(previous_largest, 98 * 1024);  // 1e5 rounded up to a whole block: within one block of max_tau
 }
@@ -94,7 +94,8 @@ TEST(AllanStreamingDecimated, EveryMPlanHoldsEveryFactorEachLevelTellsApart) {
       for (const PlannedLevel& level : plan.levels) {
         planned[level.level].insert(level.level_averaging_factors.begin(), level.level_averaging_factors.end());
       }
-      EXPECT_EQ(planned, every_m_plan_by_brute_force(static_cast<std::int64_t>(std::floor(max_tau_s / 1e-3)), exact_limit))
+      EXPECT_EQ(planned,
+                every_m_plan_by_brute_force(static_cast<std::int64_t>(std::floor(max_tau_s / 1e-3)), exact_limit))
           << "exact limit " << exact_limit << ", max tau " << max_tau_s << " s";
     }
   }
@@ -109,7 +110,7 @@ TEST(AllanStreamingDecimated, EveryMPlanForNanosecondStampsIsQuick) {
   const TauPlan plan = plan_taus(options, 1e-9);
   std::size_t factors = 0;
   for (const PlannedLevel& level : plan.levels) factors += level.level_averaging_factors.size();
-  EXPECT_EQ(plan.levels.size(), 26u);     // 32 * 2^25 >= 2^30 - 1
+  EXPECT_EQ(plan.levels.size(), 26u);   // 32 * 2^25 >= 2^30 - 1
   EXPECT_EQ(factors, 32u + 25u * 16u);  // 1..32 on level 0, 17..32 on each level above
 }
 

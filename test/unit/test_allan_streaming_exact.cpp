@@ -25,7 +25,8 @@ TEST(AllanStreamingExact, EveryStatisticEqualsBatchUpToTheExactLimit) {
       const auto streamed = points_up_to(snapshot.curve(statistic, c), options.exact_max_averaging_factor);
       ASSERT_GE(streamed.size(), 20u) << statistic_name(statistic);
       const auto reference = evaluate_frequency(statistic, rates[c], 1e-3, factors_of(streamed));
-      worst = std::max(worst, compare_points(streamed, reference, statistic_name(statistic) + " ch" + std::to_string(c)));
+      worst =
+          std::max(worst, compare_points(streamed, reference, statistic_name(statistic) + " ch" + std::to_string(c)));
     }
   }
   RecordProperty("max_relative_difference", std::to_string(worst));

@@ -99,8 +99,10 @@ TEST(AllanStreamingIrregularInput, NonFiniteValuesAreExcludedAndSplitOnlyTheirCh
   }
   clean_pieces.emplace_back(rates[1].begin() + begin, rates[1].end());
   for (const Statistic statistic : kStreamingStatistics) {
-    expect_pooled_batch(points_up_to(snapshot.curve(statistic, 1), kExactLimit), clean_pieces, statistic, "NaN channel");
-    expect_pooled_batch(points_up_to(snapshot.curve(statistic, 0), kExactLimit), {rates[0]}, statistic, "clean channel");
+    expect_pooled_batch(points_up_to(snapshot.curve(statistic, 1), kExactLimit), clean_pieces, statistic,
+                        "NaN channel");
+    expect_pooled_batch(points_up_to(snapshot.curve(statistic, 0), kExactLimit), {rates[0]}, statistic,
+                        "clean channel");
   }
   const ChannelReport& report = snapshot.channels[1];
   EXPECT_EQ(report.non_finite_count, 3);
@@ -138,7 +140,8 @@ TEST(AllanStreamingIrregularInput, ExtremeFiniteValuesAreExcludedLikeNaN) {
   }
   clean_pieces.emplace_back(rates[1].begin() + begin, rates[1].end());
   for (const Statistic statistic : kStreamingStatistics) {
-    expect_pooled_batch(points_up_to(snapshot.curve(statistic, 1), kExactLimit), clean_pieces, statistic, "1e308 channel");
+    expect_pooled_batch(points_up_to(snapshot.curve(statistic, 1), kExactLimit), clean_pieces, statistic,
+                        "1e308 channel");
     for (const StabilityPoint& point : snapshot.curve(statistic, 1)) {
       EXPECT_TRUE(std::isfinite(point.deviation) && std::isfinite(point.edf)) << statistic_name(statistic);
     }

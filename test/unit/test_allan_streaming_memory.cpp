@@ -63,7 +63,7 @@ std::size_t resident_bytes() {
 }
 
 TEST(AllanStreamingMemory, FootprintStaysFlatOverTwentyFourHoursOfSixChannels) {
-  StreamingOptions options;  // six channels, tau up to 1e4 s: the whole pyramid exists
+  StreamingOptions options;                 // six channels, tau up to 1e4 s: the whole pyramid exists
   options.exact_max_averaging_factor = 64;  // few taus per level keeps the test fast
   options.points_per_decade = 2;
   StreamingAllan engine(options);
@@ -95,10 +95,11 @@ TEST(AllanStreamingMemory, FootprintStaysFlatOverTwentyFourHoursOfSixChannels) {
   const auto& curve = snapshot.curve(Statistic::kOverlappingAllan, 5);
   ASSERT_FALSE(curve.empty());
   EXPECT_GE(curve.back().tau_s, 1000.0);  // the longest taus really were reached
-  std::printf("%d h of 6 channels at 1 kHz (%lld samples): engine state %zu bytes after warm-up and every hour;\n"
-              "resident set after hour 1 %.1f MB, hour %zu %.1f MB, hour %d %.1f MB; longest tau %.0f s\n",
-              kRunHours, kRunHours * kSamplesPerHour, state_after_warm_up, resident_hourly.front() / 1e6, half,
-              resident_hourly[half - 1] / 1e6, kRunHours, resident_hourly.back() / 1e6, curve.back().tau_s);
+  std::printf(
+      "%d h of 6 channels at 1 kHz (%lld samples): engine state %zu bytes after warm-up and every hour;\n"
+      "resident set after hour 1 %.1f MB, hour %zu %.1f MB, hour %d %.1f MB; longest tau %.0f s\n",
+      kRunHours, kRunHours * kSamplesPerHour, state_after_warm_up, resident_hourly.front() / 1e6, half,
+      resident_hourly[half - 1] / 1e6, kRunHours, resident_hourly.back() / 1e6, curve.back().tau_s);
   EXPECT_LT(state_after_warm_up, 100u * 1000 * 1000);
 }
 

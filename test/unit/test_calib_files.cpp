@@ -33,9 +33,7 @@ calib::ImuCalibration example_calibration() {
   return calibration;
 }
 
-std::string scratch_file(const std::string& name) {
-  return testing::TempDir() + "/calib_files_" + name;
-}
+std::string scratch_file(const std::string& name) { return testing::TempDir() + "/calib_files_" + name; }
 
 TEST(CalibFiles, YamlRoundTrip) {
   const calib::ImuCalibration written = example_calibration();

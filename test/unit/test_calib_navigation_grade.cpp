@@ -39,12 +39,15 @@ TEST(CalibNavigationGrade, HeldOutGravityAndEarthRateSpreadsAtTheNoiseFloor) {
   const auto& g = result.held_out.gravity_m_s2;
   const auto& w = result.held_out.earth_rate_rad_s;
   constexpr double kDegPerHour = calib::kDegPerRad * 3600.0;
-  std::printf("[rlg] |g| spread over %zu held-out rests: raw %.3e, corrected %.3e, floor %.3e, expected %.3e m/s^2 "
-              "(thesis 3e-4)\n", g.rests, g.raw_spread, g.corrected_spread, floor.gravity_m_s2.corrected_spread,
-              g.expected_spread);
-  std::printf("[rlg] |Earth rate| spread: raw %.5f, corrected %.5f, floor %.5f, expected %.5f deg/h (thesis 0.001 "
-              "measured, 0.015 allowed)\n", w.raw_spread * kDegPerHour, w.corrected_spread * kDegPerHour,
-              floor.earth_rate_rad_s.corrected_spread * kDegPerHour, w.expected_spread * kDegPerHour);
+  std::printf(
+      "[rlg] |g| spread over %zu held-out rests: raw %.3e, corrected %.3e, floor %.3e, expected %.3e m/s^2 "
+      "(thesis 3e-4)\n",
+      g.rests, g.raw_spread, g.corrected_spread, floor.gravity_m_s2.corrected_spread, g.expected_spread);
+  std::printf(
+      "[rlg] |Earth rate| spread: raw %.5f, corrected %.5f, floor %.5f, expected %.5f deg/h (thesis 0.001 "
+      "measured, 0.015 allowed)\n",
+      w.raw_spread * kDegPerHour, w.corrected_spread * kDegPerHour,
+      floor.earth_rate_rad_s.corrected_spread * kDegPerHour, w.expected_spread * kDegPerHour);
   std::printf("[rlg] gyro scale factor sigma %.2f %.2f %.2f ppm; condition %.3g, chi2/dof %.2f\n",
               result.sigmas[calib::parameter_offset::kGyroK] * 1e6,
               result.sigmas[calib::parameter_offset::kGyroK + 4] * 1e6,

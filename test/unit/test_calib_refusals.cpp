@@ -36,8 +36,8 @@ std::string refusal(const std::vector<ImuSample>& samples, const calib::Calibrat
 }
 
 TEST(CalibRefusals, TooFewKnownPositionsSaysHowManyMore) {
-  const auto run = calib_test::emulate_table_run(calib_test::tactical_test_profile(),
-                                                 from_roll_pitch_yaw({{0, 0, 0}, {0, -90, 0}, {90, 0, 0}}), short_run());
+  const auto run = calib_test::emulate_table_run(
+      calib_test::tactical_test_profile(), from_roll_pitch_yaw({{0, 0, 0}, {0, -90, 0}, {90, 0, 0}}), short_run());
   calib::CalibrationOptions options;
   options.schedule = run.schedule;
   const std::string message = refusal(run.samples, options);
@@ -57,9 +57,9 @@ TEST(CalibRefusals, UnknownOrientationsNeedNineRests) {
 
 TEST(CalibRefusals, RankDeficientScheduleNamesWhatItCannotObserve) {
   // Always z up: gravity never excites the accelerometers' x and y inputs.
-  const auto run = calib_test::emulate_table_run(
-      calib_test::tactical_test_profile(), from_roll_pitch_yaw({{0, 0, 0}, {0, 0, 90}, {0, 0, 180}, {0, 0, 270}}),
-      short_run());
+  const auto run = calib_test::emulate_table_run(calib_test::tactical_test_profile(),
+                                                 from_roll_pitch_yaw({{0, 0, 0}, {0, 0, 90}, {0, 0, 180}, {0, 0, 270}}),
+                                                 short_run());
   calib::CalibrationOptions options;
   options.schedule = run.schedule;
   const std::string message = refusal(run.samples, options);
@@ -84,7 +84,8 @@ TEST(CalibRefusals, NoStaticIntervalsInAContinuousRotation) {
   imu.next();  // the table starts at rest: skip past the first instant
   for (int k = 0; k < 3000; ++k) {
     const auto sample = imu.next();
-    if (sample.stamp_s > 1.0) samples.push_back({sample.stamp_s, sample.angular_rate_rad_s, sample.specific_force_m_s2});
+    if (sample.stamp_s > 1.0)
+      samples.push_back({sample.stamp_s, sample.angular_rate_rad_s, sample.specific_force_m_s2});
   }
   calib::CalibrationOptions options;
   options.site.latitude_rad = scenario.latitude_rad;
@@ -95,11 +96,11 @@ TEST(CalibRefusals, NoStaticIntervalsInAContinuousRotation) {
 }
 
 TEST(CalibRefusals, ScheduleThatDoesNotMatchTheRecording) {
-  const auto run = calib_test::emulate_table_run(calib_test::tactical_test_profile(),
-                                                 calib_test::shipped_positions("multiposition_12_thesis.yaml"), short_run());
+  const auto run = calib_test::emulate_table_run(
+      calib_test::tactical_test_profile(), calib_test::shipped_positions("multiposition_12_thesis.yaml"), short_run());
   calib::CalibrationOptions options;
-  options.schedule = calib::schedule_from_scenario(
-      emulator::load_scenario(test::config_path("scenarios/multiposition_6.yaml")));
+  options.schedule =
+      calib::schedule_from_scenario(emulator::load_scenario(test::config_path("scenarios/multiposition_6.yaml")));
   const std::string message = refusal(run.samples, options);
   EXPECT_NE(message.find("found 12 static intervals but the schedule"), std::string::npos) << message;
   EXPECT_NE(message.find("has 6 positions"), std::string::npos) << message;

@@ -23,8 +23,8 @@ struct TacticalRuns {
 const TacticalRuns& runs() {
   static const TacticalRuns runs = [] {
     TacticalRuns r;
-    const auto positions =
-        calib_test::concatenated(calib_test::shipped_positions("multiposition_24.yaml"), calib_test::held_out_positions());
+    const auto positions = calib_test::concatenated(calib_test::shipped_positions("multiposition_24.yaml"),
+                                                    calib_test::held_out_positions());
     calib_test::TableRun table;
     table.dwell_s = 10.0;
     table.move_rate_deg_s = 200.0;
@@ -108,10 +108,11 @@ TEST(CalibTactical, HeldOutGravitySpreadShrinksTenfoldToTheNoiseFloor) {
   const auto& r = runs();
   for (const auto* result : {&r.known, &r.unknown}) {
     const auto& g = result->held_out.gravity_m_s2;
-    std::printf("[held-out |g|, %s] %zu rests: raw spread %.3e, corrected %.3e, expected %.3e, noise floor (true "
-                "calibration) %.3e m/s^2, mean error %.2e\n",
-                result->known_orientations ? "known" : "unknown", g.rests, g.raw_spread, g.corrected_spread,
-                g.expected_spread, r.noise_floor_spread_m_s2, g.corrected_mean_error);
+    std::printf(
+        "[held-out |g|, %s] %zu rests: raw spread %.3e, corrected %.3e, expected %.3e, noise floor (true "
+        "calibration) %.3e m/s^2, mean error %.2e\n",
+        result->known_orientations ? "known" : "unknown", g.rests, g.raw_spread, g.corrected_spread, g.expected_spread,
+        r.noise_floor_spread_m_s2, g.corrected_mean_error);
     EXPECT_EQ(g.rests, 9u);
     EXPECT_GE(g.raw_spread / g.corrected_spread, 10.0);
     EXPECT_LT(g.corrected_spread, 2.0 * r.noise_floor_spread_m_s2);

@@ -106,7 +106,8 @@ TEST(OutputSet, ABlockedPathLeavesTheWholeOldSet) {
     set.commit();
     FAIL() << "expected an OutputError";
   } catch (const imu_lab::OutputError& error) {
-    EXPECT_NE(std::string(error.what()).find(directory + "/residuals.csv: a directory is in the way"), std::string::npos)
+    EXPECT_NE(std::string(error.what()).find(directory + "/residuals.csv: a directory is in the way"),
+              std::string::npos)
         << error.what();
   }
   EXPECT_EQ(read_all(directory + "/model.yaml"), "old model\n");

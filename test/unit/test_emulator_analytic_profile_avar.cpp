@@ -89,8 +89,8 @@ TEST(AnalyticProfileAvar, ShippedProfilesAgreeWithTheirEmulatedData) {
   };
   for (const Shipped shipped : {Shipped{"tactical_mems", 200.0, 1 << 14}, Shipped{"consumer_mems", 200.0, 1 << 14},
                                 Shipped{"mems_front_end", 100.0, 1 << 13}}) {
-    const auto profile =
-        imu_lab::emulator::load_sensor_profile(imu_lab::test::config_path(std::string("sensors/") + shipped.name + ".yaml"));
+    const auto profile = imu_lab::emulator::load_sensor_profile(
+        imu_lab::test::config_path(std::string("sensors/") + shipped.name + ".yaml"));
     const auto scenario = imu_lab::emulator::load_scenario(imu_lab::test::config_path("scenarios/static.yaml"));
     imu_lab::emulator::EmulatorSettings settings;
     settings.rate_hz = shipped.rate_hz;
@@ -109,12 +109,12 @@ TEST(AnalyticProfileAvar, ShippedProfilesAgreeWithTheirEmulatedData) {
     for (int c = 0; c < 6; ++c) {
       const auto& triad = c < 3 ? profile.gyro : profile.accelerometer;
       const auto expected = [&](double tau_s) { return analytic_axis_avar(triad, c % 3, tau_s, tau0_s); };
-      const auto check = imu_lab::test::check_avar(channels[c], tau0_s, expected, 1, shipped.max_factor, 0.997,
-                                                    channel_edf(triad.noise_per_axis[c % 3], expected, tau0_s,
-                                                                shipped.max_factor));
+      const auto check =
+          imu_lab::test::check_avar(channels[c], tau0_s, expected, 1, shipped.max_factor, 0.997,
+                                    channel_edf(triad.noise_per_axis[c % 3], expected, tau0_s, shipped.max_factor));
       EXPECT_TRUE(check.passed()) << shipped.name << " channel " << c << "\n" << check.table;
-      std::printf("[profile avar] %-14s channel %d: worst normalised deviation %.2f, rejected %d of %d\n",
-                  shipped.name, c, check.worst_normalised_deviation, check.rejected_points, check.point_count);
+      std::printf("[profile avar] %-14s channel %d: worst normalised deviation %.2f, rejected %d of %d\n", shipped.name,
+                  c, check.worst_normalised_deviation, check.rejected_points, check.point_count);
     }
   }
 }

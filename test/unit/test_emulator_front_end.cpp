@@ -91,15 +91,14 @@ TEST(EmulatorOutputLsb, AvarIsTheFilteredWhiteNoisePlusTheRoundingNoise) {
   const auto unrounded = test::check_avar(
       rates, tau0, [&](double tau) { return analytic_axis_avar(without.gyro, 0, tau, tau0); }, 1, 1 << 14);
   EXPECT_FALSE(unrounded.passed()) << unrounded.table;
-  std::printf("[lsb] without the rounding term: rejected %d of %d (worst ratio %.4f)\n",
-              unrounded.rejected_points, unrounded.point_count, unrounded.worst_ratio);
+  std::printf("[lsb] without the rounding term: rejected %d of %d (worst ratio %.4f)\n", unrounded.rejected_points,
+              unrounded.point_count, unrounded.worst_ratio);
   // One sample's variance includes LSB^2 / 12 (relative standard error of the estimate about
   // sqrt(2 / N) times the ~2 samples the filter correlates; 5 of them allowed).
   double mean = 0.0, square = 0.0;
   for (double e : errors) mean += e / count;
   for (double e : errors) square += (e - mean) * (e - mean) / count;
-  EXPECT_NEAR(square / emulator.gyro_channel().sample_variance(tau0).x(), 1.0,
-              5.0 * std::sqrt(4.0 / count));
+  EXPECT_NEAR(square / emulator.gyro_channel().sample_variance(tau0).x(), 1.0, 5.0 * std::sqrt(4.0 / count));
 }
 
 TEST(EmulatorOutputLsb, RoundingErrorIsWhiteRateNoise) {
@@ -128,10 +127,11 @@ TEST(EmulatorOutputLsb, RoundingErrorIsWhiteRateNoise) {
   const auto white_angle = test::check_avar(
       errors, tau0, [&](double tau) { return noise::pulse_quantization_avar(lsb * tau0, tau); }, 1, 1 << 14);
   EXPECT_FALSE(white_angle.passed()) << white_angle.table;
-  std::printf("[lsb] rounding error: max |e| %.4f LSB; as white rate noise worst normalised deviation "
-              "%.2f, rejected %d of %d; as white angle noise rejected %d of %d\n",
-              worst / lsb, white.worst_normalised_deviation, white.rejected_points, white.point_count,
-              white_angle.rejected_points, white_angle.point_count);
+  std::printf(
+      "[lsb] rounding error: max |e| %.4f LSB; as white rate noise worst normalised deviation "
+      "%.2f, rejected %d of %d; as white angle noise rejected %d of %d\n",
+      worst / lsb, white.worst_normalised_deviation, white.rejected_points, white.point_count,
+      white_angle.rejected_points, white_angle.point_count);
 }
 
 // ---- Rate-dependent scale-factor errors on the rate table ----
@@ -161,7 +161,8 @@ TEST(EmulatorScaleFactorNonlinearity, RateTablePlateausAgainstHandComputedValues
   // +-10 deg/s: 2.908882e-6, -/+1.551404e-7, 8.726646e-5. +-1 deg/s: inside the dead zone, the
   // output is 0, the error -w with w = +-0.01745329 + 5.62427e-5 (Earth rate 7.292115e-5 rad/s
   // times sin(50.45 deg)).
-  const Plateau plateaus[] = {{1.0, -(0.01745329 + 5.62427e-5)}, {-1.0, 0.01745329 - 5.62427e-5},
+  const Plateau plateaus[] = {{1.0, -(0.01745329 + 5.62427e-5)},
+                              {-1.0, 0.01745329 - 5.62427e-5},
                               {10.0, 2.908882e-6 - 1.551404e-7 + 8.726646e-5},
                               {-10.0, 2.908882e-6 + 1.551404e-7 + 8.726646e-5},
                               {100.0, 2.908882e-4 - 1.551404e-4 + 8.726646e-4},
@@ -216,8 +217,7 @@ TEST(EmulatorScaleFactorNonlinearity, ProfileKeysInPpmOfFullScale) {
 // The axes' correlation as the spectrum tool estimates it (spectrum/axis_correlation.h) against
 // the profile's matrix: the truth inside each pair's Fisher interval at 99.9 % (a false failure
 // one run in 1000 per pair), and the samples independent in time as that interval assumes.
-void expect_correlation(const std::vector<Eigen::Vector3d>& noise, const Eigen::Matrix3d& truth,
-                        const char* what) {
+void expect_correlation(const std::vector<Eigen::Vector3d>& noise, const Eigen::Matrix3d& truth, const char* what) {
   const spectrum::AxisCorrelation estimate = spectrum::axis_correlation(noise, 0.005, 1, 0.999);
   for (int a = 0; a < 3; ++a) {
     for (int b = a + 1; b < 3; ++b) {
@@ -236,8 +236,8 @@ TEST(EmulatorCrossAxisCorrelation, WhiteRateNoiseCarriesTheProfileMatrix) {
   for (double bandwidth_hz : {0.0, 40.0}) {
     SensorProfile profile = ideal_profile();
     profile.gyro.bandwidth_hz = bandwidth_hz;
-    profile.gyro.noise_per_axis = {{{noise::WhiteRateParameters{1e-4}}, {noise::WhiteRateParameters{3e-4}},
-                                    {noise::WhiteRateParameters{2e-4}}}};
+    profile.gyro.noise_per_axis = {
+        {{noise::WhiteRateParameters{1e-4}}, {noise::WhiteRateParameters{3e-4}}, {noise::WhiteRateParameters{2e-4}}}};
     profile.gyro.white_rate_correlation = correlation;
     ImuEmulator emulator(profile, static_scenario(), {200.0, 0.0, 9});
     // Filtered samples are correlated in time (T_c = 4 ms at 5 ms spacing); every 10th is
@@ -251,8 +251,8 @@ TEST(EmulatorCrossAxisCorrelation, WhiteRateNoiseCarriesTheProfileMatrix) {
     expect_correlation(noise, correlation, bandwidth_hz > 0.0 ? "40 Hz filtered" : "white");
     // The per-axis variance is unchanged (unit diagonal).
     EXPECT_NEAR(emulator.gyro_channel().sample_variance(0.005).y(),
-                bandwidth_hz > 0.0 ? emulator.gyro_channel().processes(1)[0]->sample_variance(0.005)
-                                   : 9e-8 / 0.005, 1e-20);
+                bandwidth_hz > 0.0 ? emulator.gyro_channel().processes(1)[0]->sample_variance(0.005) : 9e-8 / 0.005,
+                1e-20);
   }
 }
 
@@ -303,15 +303,14 @@ test::EdfOfFactor front_end_edf(const FrontEnd& f, double tau0, int max_factor) 
   const long correlation_samples = static_cast<long>(std::ceil(8.0 / tau0));  // e^{-pi 1.5 u}: 4e-17 at 8 s
   const double time_constant = 1.0 / (kTwoPi * f.bandwidth_hz);
   const double angle_variance = std::pow(f.mode.rms / (kTwoPi * f.mode.natural_frequency_hz), 2);
-  auto structure = std::make_shared<std::vector<double>>(4 * static_cast<std::size_t>(max_factor) +
-                                                         correlation_samples + 1);
+  auto structure =
+      std::make_shared<std::vector<double>>(4 * static_cast<std::size_t>(max_factor) + correlation_samples + 1);
   for (std::size_t j = 0; j < structure->size(); ++j) {
     const double u = j * tau0;
-    (*structure)[j] =
-        f.density * f.density * (u + time_constant * std::expm1(-u / time_constant)) +
-        2.0 * angle_variance *
-            (1.0 - noise::resonance_angle_correlation(f.mode.natural_frequency_hz, f.mode.width_hz, u)) +
-        f.lsb * f.lsb / 12.0 * tau0 * u;
+    (*structure)[j] = f.density * f.density * (u + time_constant * std::expm1(-u / time_constant)) +
+                      2.0 * angle_variance *
+                          (1.0 - noise::resonance_angle_correlation(f.mode.natural_frequency_hz, f.mode.width_hz, u)) +
+                      f.lsb * f.lsb / 12.0 * tau0 * u;
   }
   return [structure, correlation_samples](int m, std::size_t count) {
     return test::exact_overlapping_edf([&](long j) { return (*structure)[j]; }, m, count, correlation_samples);
@@ -332,30 +331,31 @@ TEST(EmulatorFrontEnd, LowPassedWhiteResonanceAndLsbMatchTheProfilesAnalyticAvar
   std::vector<double> rates(count);
   for (auto& rate : rates) rate = emulator.next().angular_rate_rad_s.z();
   const double sigma = std::sqrt(emulator.gyro_channel().sample_variance(tau0).z());
-  std::printf("[front end] per-sample sigma %.2f LSB; the rounding is %.1f %% of the AVAR at tau0\n",
-              sigma / f.lsb, 100.0 * noise::output_quantization_avar(f.lsb, tau0, tau0) /
-                                 analytic_axis_avar(profile.gyro, 2, tau0, tau0));
+  std::printf(
+      "[front end] per-sample sigma %.2f LSB; the rounding is %.1f %% of the AVAR at tau0\n", sigma / f.lsb,
+      100.0 * noise::output_quantization_avar(f.lsb, tau0, tau0) / analytic_axis_avar(profile.gyro, 2, tau0, tau0));
   const test::EdfOfFactor edf = front_end_edf(f, tau0, kMaxFactor);
   auto judge = [&](const TriadErrorModel& model) {
     return test::check_avar(
-        rates, tau0, [&](double tau) { return analytic_axis_avar(model, 2, tau, tau0); }, 1, kMaxFactor,
-        0.997, edf);
+        rates, tau0, [&](double tau) { return analytic_axis_avar(model, 2, tau, tau0); }, 1, kMaxFactor, 0.997, edf);
   };
   const auto check = judge(profile.gyro);
   EXPECT_TRUE(check.passed()) << check.table;
-  std::printf("[front end] against the profile's analytic AVAR: worst normalised deviation %.2f "
-              "(ratio %.4f), rejected %d of %d\n",
-              check.worst_normalised_deviation, check.worst_ratio, check.rejected_points, check.point_count);
+  std::printf(
+      "[front end] against the profile's analytic AVAR: worst normalised deviation %.2f "
+      "(ratio %.4f), rejected %d of %d\n",
+      check.worst_normalised_deviation, check.worst_ratio, check.rejected_points, check.point_count);
   TriadErrorModel without_lsb = profile.gyro, without_low_pass = profile.gyro, without_mode = profile.gyro;
   without_lsb.output_lsb.setZero();
   without_low_pass.bandwidth_hz = 0.0;
   without_mode.noise_per_axis[2].pop_back();
   for (const auto& [model, what] : {std::pair<const TriadErrorModel*, const char*>{&without_lsb, "the LSB"},
-                                    {&without_low_pass, "the low-pass"}, {&without_mode, "the mode"}}) {
+                                    {&without_low_pass, "the low-pass"},
+                                    {&without_mode, "the mode"}}) {
     const auto wrong = judge(*model);
     EXPECT_FALSE(wrong.passed()) << "without " << what << "\n" << wrong.table;
-    std::printf("[front end] without %-12s rejected %2d of %d (worst ratio %.4f)\n", what,
-                wrong.rejected_points, wrong.point_count, wrong.worst_ratio);
+    std::printf("[front end] without %-12s rejected %2d of %d (worst ratio %.4f)\n", what, wrong.rejected_points,
+                wrong.point_count, wrong.worst_ratio);
   }
 }
 

@@ -10,9 +10,7 @@
 namespace imu_lab {
 namespace test {
 
-inline std::string config_path(const std::string& relative) {
-  return std::string(IMU_LAB_CONFIG_DIR) + "/" + relative;
-}
+inline std::string config_path(const std::string& relative) { return std::string(IMU_LAB_CONFIG_DIR) + "/" + relative; }
 
 }  // namespace test
 }  // namespace imu_lab

@@ -12,7 +12,6 @@
 #include "imu_lab/emulator/sensor_channel.h"
 #include "test_emulator_paths.h"
 
-
 namespace imu_lab {
 namespace emulator {
 namespace {
@@ -60,16 +59,16 @@ TEST(EmulatorProfiles, ValidProfileLoads) {
 TEST(EmulatorProfiles, MissingKeyNamed) {
   EXPECT_EQ(refused_key([](YAML::Node& r) { r["gyro"].remove("scale_factor_error_ppm"); }),
             "gyro.scale_factor_error_ppm");
-  EXPECT_EQ(refused_key([](YAML::Node& r) { r["accelerometer"]["noise"]["white_rate"].remove("density_m_s2_per_sqrt_hz"); }),
-            "accelerometer.noise.white_rate.density_m_s2_per_sqrt_hz");
+  EXPECT_EQ(
+      refused_key([](YAML::Node& r) { r["accelerometer"]["noise"]["white_rate"].remove("density_m_s2_per_sqrt_hz"); }),
+      "accelerometer.noise.white_rate.density_m_s2_per_sqrt_hz");
   EXPECT_EQ(refused_key([](YAML::Node& r) { r.remove("name"); }), "name");
 }
 
 TEST(EmulatorProfiles, WrongTypeNamed) {
   EXPECT_EQ(refused_key([](YAML::Node& r) { r["gyro"]["noise"]["white_rate"]["density_rad_s_per_sqrt_hz"] = "loud"; }),
             "gyro.noise.white_rate.density_rad_s_per_sqrt_hz");
-  EXPECT_EQ(refused_key([](YAML::Node& r) { r["gyro"]["misalignment_rad"][1] = 3.0; }),
-            "gyro.misalignment_rad[1]");
+  EXPECT_EQ(refused_key([](YAML::Node& r) { r["gyro"]["misalignment_rad"][1] = 3.0; }), "gyro.misalignment_rad[1]");
   EXPECT_EQ(refused_key([](YAML::Node& r) { r["gyro"]["noise"] = "none"; }), "gyro.noise");
 }
 
@@ -95,20 +94,19 @@ TEST(EmulatorProfiles, UnknownKeysNamed) {
 }
 
 TEST(EmulatorProfiles, InconsistentValuesNamed) {
-  EXPECT_EQ(refused_key([](YAML::Node& r) { r["gyro"]["misalignment_rad"][0][0] = 1e-3; }),
-            "gyro.misalignment_rad");
+  EXPECT_EQ(refused_key([](YAML::Node& r) { r["gyro"]["misalignment_rad"][0][0] = 1e-3; }), "gyro.misalignment_rad");
   EXPECT_EQ(refused_key([](YAML::Node& r) { r["gyro"]["noise"]["markov"][0]["correlation_time_s"] = 0.0; }),
             "gyro.noise.markov[0].correlation_time_s");
   EXPECT_EQ(refused_key([](YAML::Node& r) {
-              r["gyro"]["noise"]["bias_instability"] = YAML::Load(
-                  "{coefficient_rad_s: 1e-5, cutoff_frequency_hz: 1.0, valid_tau_range_s: [0.01, 100]}");
+              r["gyro"]["noise"]["bias_instability"] =
+                  YAML::Load("{coefficient_rad_s: 1e-5, cutoff_frequency_hz: 1.0, valid_tau_range_s: [0.01, 100]}");
             }),
             "gyro.noise.bias_instability.valid_tau_range_s");
   EXPECT_EQ(refused_key([](YAML::Node& r) { r["gyro"]["quantization"] = YAML::Load("{model: rounding}"); }),
             "gyro.quantization.model");
   EXPECT_EQ(refused_key([](YAML::Node& r) {
-              r["gyro"]["noise"]["zero_dc_family"] = YAML::Load(
-                  "{exponent_n: 1, alpha_rad2_s2_per_hz_n_plus_1: 1e-6, beta_s: 0.1}");
+              r["gyro"]["noise"]["zero_dc_family"] =
+                  YAML::Load("{exponent_n: 1, alpha_rad2_s2_per_hz_n_plus_1: 1e-6, beta_s: 0.1}");
             }),
             "gyro.noise.zero_dc_family.exponent_n");
 }
@@ -118,15 +116,13 @@ TEST(EmulatorProfiles, FrontEndAndNoiseFamilyKeysLoad) {
   root["gyro"]["noise"]["resonance"] = YAML::Load(
       "[{rms_rad_s: [0, 0, 1e-3], natural_frequency_hz: 20, width_hz: 1.5},"
       " {rms_rad_s: 2e-4, natural_frequency_hz: 140, width_hz: 6}]");
-  root["gyro"]["noise"]["high_pass_white"] =
-      YAML::Load("{density_rad_s_per_sqrt_hz: 1e-4, corner_frequency_hz: 0.5}");
+  root["gyro"]["noise"]["high_pass_white"] = YAML::Load("{density_rad_s_per_sqrt_hz: 1e-4, corner_frequency_hz: 0.5}");
   root["gyro"]["noise"]["zero_dc_family"] = YAML::Load(
       "{exponent_n: 3, alpha_rad2_s2_per_hz_n_plus_1: 1e-8, beta_s: 0.05, cosine_s: 0.6,"
       " cosine_weight: -0.5}");
   root["gyro"]["noise"]["zero_dc_gaussian"] =
       YAML::Load("{exponent_n: 3, alpha_rad2_s2_per_hz_n_plus_1: [1e-8, 0, 1e-8], beta_s2: 4e-4}");
-  root["gyro"]["noise"]["white_rate"]["axis_correlation"] =
-      YAML::Load("[[1, 0.2, 0], [0.2, 1, -0.1], [0, -0.1, 1]]");
+  root["gyro"]["noise"]["white_rate"]["axis_correlation"] = YAML::Load("[[1, 0.2, 0], [0.2, 1, -0.1], [0, -0.1, 1]]");
   root["gyro"]["output_lsb_rad_s"] = 8.7e-4;
   root["accelerometer"]["output_lsb_m_s2"] = YAML::Load("[0.0327, 0.0327, 0]");
   const SensorProfile profile = sensor_profile_from_yaml(root, "test.yaml");
@@ -157,7 +153,8 @@ TEST(EmulatorProfiles, FrontEndAndNoiseFamilyRefusalsNamed) {
   } noise_refusals[] = {
       {"resonance", "{rms_rad_s: 1e-3, natural_frequency_hz: 20, width_hz: 40}", "gyro.noise.resonance.width_hz"},
       {"resonance",
-       "[{rms_rad_s: 1e-3, natural_frequency_hz: 20, width_hz: 1}, {rms_rad_s: 1e-3, natural_frequency_hz: -5, width_hz: 1}]",
+       "[{rms_rad_s: 1e-3, natural_frequency_hz: 20, width_hz: 1}, {rms_rad_s: 1e-3, natural_frequency_hz: -5, "
+       "width_hz: 1}]",
        "gyro.noise.resonance[1].natural_frequency_hz"},
       {"resonance", "{rms_rad_s: -1e-3, natural_frequency_hz: 20, width_hz: 1}", "gyro.noise.resonance.rms_rad_s"},
       {"resonance", "{rms_m_s2: 1e-3, natural_frequency_hz: 20, width_hz: 1}", "gyro.noise.resonance.rms_m_s2"},
@@ -194,20 +191,19 @@ TEST(EmulatorProfiles, FrontEndAndNoiseFamilyRefusalsNamed) {
             }),
             "gyro.scale_factor_nonlinearity.quadratic_ppm_fs");
   auto correlation = [](const char* matrix) {
-    return refused_key([&](YAML::Node& r) {
-      r["gyro"]["noise"]["white_rate"]["axis_correlation"] = YAML::Load(matrix);
-    });
+    return refused_key(
+        [&](YAML::Node& r) { r["gyro"]["noise"]["white_rate"]["axis_correlation"] = YAML::Load(matrix); });
   };
   EXPECT_EQ(correlation("[[1, 0.2, 0], [0.3, 1, 0], [0, 0, 1]]"), "gyro.noise.white_rate.axis_correlation");
   EXPECT_EQ(correlation("[[2, 0, 0], [0, 1, 0], [0, 0, 1]]"), "gyro.noise.white_rate.axis_correlation");
-  EXPECT_EQ(correlation("[[1, 0.9, -0.9], [0.9, 1, 0.9], [-0.9, 0.9, 1]]"),
-            "gyro.noise.white_rate.axis_correlation");
+  EXPECT_EQ(correlation("[[1, 0.9, -0.9], [0.9, 1, 0.9], [-0.9, 0.9, 1]]"), "gyro.noise.white_rate.axis_correlation");
   EXPECT_EQ(correlation("[[1, 0, 0], [0, 1, 0]]"), "gyro.noise.white_rate.axis_correlation");
-  EXPECT_EQ(refused_key([](YAML::Node& r) {
-              r["gyro"]["noise"]["white_rate"] = YAML::Load(
-                  "{density_rad_s_per_sqrt_hz: [1e-4, 0, 1e-4], axis_correlation: [[1, 0.5, 0], [0.5, 1, 0], [0, 0, 1]]}");
-            }),
-            "gyro.noise.white_rate.axis_correlation");
+  EXPECT_EQ(
+      refused_key([](YAML::Node& r) {
+        r["gyro"]["noise"]["white_rate"] = YAML::Load(
+            "{density_rad_s_per_sqrt_hz: [1e-4, 0, 1e-4], axis_correlation: [[1, 0.5, 0], [0.5, 1, 0], [0, 0, 1]]}");
+      }),
+      "gyro.noise.white_rate.axis_correlation");
 }
 
 TEST(EmulatorProfiles, MissingFileNamed) {

@@ -33,7 +33,8 @@ TEST(EmulatorScenarioFiles, EveryShippedScenarioLoadsAndRuns) {
     auto motion = make_motion_source(scenario);
     const TruthState end = motion->truth_at(scenario.duration_s);
     EXPECT_TRUE(end.angular_rate_body_rad_s.allFinite() && end.specific_force_body_m_s2.allFinite() &&
-                std::isfinite(end.latitude_rad)) << entry.path();
+                std::isfinite(end.latitude_rad))
+        << entry.path();
     std::printf("[files] %s (%s): ran 2 s, truth at %.0f s finite\n", entry.path().filename().c_str(),
                 scenario.type.c_str(), scenario.duration_s);
   }
@@ -65,7 +66,8 @@ TEST(EmulatorScenarioFiles, MissingKeyNamed) {
 }
 
 TEST(EmulatorScenarioFiles, WrongTypeNamed) {
-  EXPECT_EQ(refused_key("multiposition_6.yaml", [](YAML::Node& r) { r["multi_position"]["positions"][1]["dwell_s"] = "long"; }),
+  EXPECT_EQ(refused_key("multiposition_6.yaml",
+                        [](YAML::Node& r) { r["multi_position"]["positions"][1]["dwell_s"] = "long"; }),
             "multi_position.positions[1].dwell_s");
   EXPECT_EQ(refused_key("rate_table.yaml", [](YAML::Node& r) { r["rate_table"]["steps"] = 3; }), "rate_table.steps");
 }
@@ -75,13 +77,15 @@ TEST(EmulatorScenarioFiles, UnknownTypeNamed) {
 }
 
 TEST(EmulatorScenarioFiles, NegativeDwellNamed) {
-  EXPECT_EQ(refused_key("multiposition_6.yaml", [](YAML::Node& r) { r["multi_position"]["positions"][2]["dwell_s"] = -5.0; }),
-            "multi_position.positions[2].dwell_s");
+  EXPECT_EQ(
+      refused_key("multiposition_6.yaml", [](YAML::Node& r) { r["multi_position"]["positions"][2]["dwell_s"] = -5.0; }),
+      "multi_position.positions[2].dwell_s");
 }
 
 TEST(EmulatorScenarioFiles, RampWithoutRateNamed) {
-  EXPECT_EQ(refused_key("thermal_chamber.yaml", [](YAML::Node& r) { r["thermal"]["segments"][1].remove("rate_c_per_min"); }),
-            "thermal.segments[1].rate_c_per_min");
+  EXPECT_EQ(
+      refused_key("thermal_chamber.yaml", [](YAML::Node& r) { r["thermal"]["segments"][1].remove("rate_c_per_min"); }),
+      "thermal.segments[1].rate_c_per_min");
 }
 
 TEST(EmulatorScenarioFiles, SoakAndRampInOneSegmentNamed) {
@@ -114,12 +118,18 @@ TEST(EmulatorScenarioFiles, UnknownKeyInBlockNamed) {
 TEST(EmulatorScenarioFiles, InconsistentValuesNamed) {
   EXPECT_EQ(refused_key("sculling.yaml", [](YAML::Node& r) { r["sculling"]["vibration_axis"] = "x"; }),
             "sculling.vibration_axis");
-  EXPECT_EQ(refused_key("trajectory.yaml", [](YAML::Node& r) { r["trajectory"]["legs"][6]["acceleration_m_s2"] = -5.0; }),
-            "trajectory.legs[6].acceleration_m_s2");
-  EXPECT_EQ(refused_key("rate_table.yaml", [](YAML::Node& r) { r["rate_table"]["axis_enu"] = std::vector<double>{0, 0, 0}; }),
+  EXPECT_EQ(
+      refused_key("trajectory.yaml", [](YAML::Node& r) { r["trajectory"]["legs"][6]["acceleration_m_s2"] = -5.0; }),
+      "trajectory.legs[6].acceleration_m_s2");
+  EXPECT_EQ(refused_key("rate_table.yaml",
+                        [](YAML::Node& r) {
+                          r["rate_table"]["axis_enu"] = std::vector<double>{0, 0, 0};
+                        }),
             "rate_table.axis_enu");
-  EXPECT_EQ(refused_key("coning.yaml", [](YAML::Node& r) { r["coning"]["half_angle_deg"] = 95.0; }), "coning.half_angle_deg");
-  EXPECT_EQ(refused_key("multiposition_6.yaml", [](YAML::Node& r) { r["multi_position"]["positions"] = YAML::Node(YAML::NodeType::Sequence); }),
+  EXPECT_EQ(refused_key("coning.yaml", [](YAML::Node& r) { r["coning"]["half_angle_deg"] = 95.0; }),
+            "coning.half_angle_deg");
+  EXPECT_EQ(refused_key("multiposition_6.yaml",
+                        [](YAML::Node& r) { r["multi_position"]["positions"] = YAML::Node(YAML::NodeType::Sequence); }),
             "multi_position.positions");
 }
 

@@ -64,8 +64,8 @@ inline std::vector<std::pair<double, double>> pieces(double a, double b, const s
 inline double inside(double t, double b, double a) { return t >= b ? std::nextafter(b, a) : t; }
 
 // Composite Simpson of the truth's rate (first) and force (second) over [a, b].
-inline std::pair<Eigen::Vector3d, Eigen::Vector3d> simpson_increment(const MotionSource& motion, double a,
-                                                                     double b, const std::vector<double>& cuts,
+inline std::pair<Eigen::Vector3d, Eigen::Vector3d> simpson_increment(const MotionSource& motion, double a, double b,
+                                                                     const std::vector<double>& cuts,
                                                                      int steps_per_piece) {
   Eigen::Vector3d rate = Eigen::Vector3d::Zero(), force = Eigen::Vector3d::Zero();
   for (const auto& [p0, p1] : pieces(a, b, cuts)) {
@@ -122,8 +122,8 @@ inline IntegrationErrors integrate_against_truth(const MotionSource& motion, Ear
     const Eigen::Vector3d earth_rate = enu_frame_rate(here, earth);
     const Eigen::Vector3d transport = frame_rate - earth_rate;
     const Eigen::Vector3d gravity(0.0, 0.0, -normal_gravity_m_s2(earth, s.latitude, s.height));
-    const Eigen::Vector3d v_dot = s.attitude * truth.specific_force_body_m_s2 + gravity -
-                                  (2.0 * earth_rate + transport).cross(s.velocity);
+    const Eigen::Vector3d v_dot =
+        s.attitude * truth.specific_force_body_m_s2 + gravity - (2.0 * earth_rate + transport).cross(s.velocity);
     const double e2 = sphere ? 0.0 : wgs84::kEccentricitySquared;
     const double a = sphere ? textbook_sphere::kRadius_m : wgs84::kSemiMajorAxis_m;
     const double sl = std::sin(s.latitude);
@@ -162,10 +162,10 @@ inline IntegrationErrors integrate_against_truth(const MotionSource& motion, Ear
       const double radius = textbook_sphere::kRadius_m;
       worst.attitude_rad = std::max(worst.attitude_rad, state.attitude.angularDistance(truth.attitude_body_to_enu));
       worst.velocity_m_s = std::max(worst.velocity_m_s, (state.velocity - truth.velocity_enu_m_s).norm());
-      worst.position_m = std::max(
-          worst.position_m, radius * std::hypot(state.latitude - truth.latitude_rad,
-                                                (state.longitude - truth.longitude_rad) * std::cos(truth.latitude_rad)) +
-                                std::abs(state.height - truth.height_m));
+      worst.position_m = std::max(worst.position_m, radius * std::hypot(state.latitude - truth.latitude_rad,
+                                                                        (state.longitude - truth.longitude_rad) *
+                                                                            std::cos(truth.latitude_rad)) +
+                                                        std::abs(state.height - truth.height_m));
     }
   }
   return worst;

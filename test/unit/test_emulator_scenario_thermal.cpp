@@ -56,7 +56,8 @@ TEST(EmulatorScenarioThermal, SensorsLagTheChamberAsTheFirstOrderSolution) {
     worst_sensor = std::max(worst_sensor, std::abs(truth.temperature_c - (x + heating(t + h))));
     worst_second = std::max(worst_second, std::abs(*truth.second_temperature_c - y));
     if (k % 97 == 0) {
-      const double rate = (motion->truth_at(t + h + 1e-3).temperature_c - motion->truth_at(t + h - 1e-3).temperature_c) / 2e-3;
+      const double rate =
+          (motion->truth_at(t + h + 1e-3).temperature_c - motion->truth_at(t + h - 1e-3).temperature_c) / 2e-3;
       worst_rate = std::max(worst_rate, std::abs(truth.temperature_rate_c_s - rate));
     }
   }
@@ -65,9 +66,10 @@ TEST(EmulatorScenarioThermal, SensorsLagTheChamberAsTheFirstOrderSolution) {
   const TruthState at_ramp_end = motion->truth_at(ramp_end);
   const double lag = at_ramp_end.temperature_c - heating(ramp_end) - (-20.0);
   const double expected_lag = (1.0 / 60.0) * tau1 * (1.0 - std::exp(-2400.0 / tau1));
-  std::printf("[thermal] 6 h chamber run vs RK4: sensor %.1e degC, second sensor %.1e degC, rate %.1e degC/s; "
-              "lag at the end of the ramp %.4f degC (first order: %.4f)\n",
-              worst_sensor, worst_second, worst_rate, lag, expected_lag);
+  std::printf(
+      "[thermal] 6 h chamber run vs RK4: sensor %.1e degC, second sensor %.1e degC, rate %.1e degC/s; "
+      "lag at the end of the ramp %.4f degC (first order: %.4f)\n",
+      worst_sensor, worst_second, worst_rate, lag, expected_lag);
   EXPECT_LT(worst_sensor, 1e-8);
   EXPECT_LT(worst_second, 1e-8);
   EXPECT_LT(worst_rate, 1e-7);
@@ -137,11 +139,11 @@ thermal:
     Eigen::Vector3d gyro_thermal = Eigen::Vector3d::Zero(), accel_thermal = Eigen::Vector3d::Zero();
     for (int k = 0; k < window; ++k) {
       const EmulatedSample s = emulator.next();
-      const double dt_c = s.temperature_c - 20.0;  // the interval's mean temperature
+      const double dt_c = s.temperature_c - 20.0;                 // the interval's mean temperature
       const Eigen::Vector3d force = s.truth.specific_force_m_s2;  // static: constant
       const Eigen::Vector3d gyro_model = polynomial(g.bias_polynomial, dt_c);
-      const Eigen::Vector3d accel_model =
-          polynomial(a.bias_polynomial, dt_c) + 1e-6 * polynomial(a.scale_factor_polynomial_ppm, dt_c).cwiseProduct(force);
+      const Eigen::Vector3d accel_model = polynomial(a.bias_polynomial, dt_c) +
+                                          1e-6 * polynomial(a.scale_factor_polynomial_ppm, dt_c).cwiseProduct(force);
       gyro_thermal += gyro_model / window;
       accel_thermal += accel_model / window;
       gyro_residual += (s.angular_rate_rad_s - s.truth.angular_rate_rad_s - gyro_model) / window;
@@ -149,18 +151,21 @@ thermal:
     }
     // Rate terms: the window's mean rate of change is (T_end - T_start) / window, exactly.
     const double mean_rate = (temperatures->truth_at((w + 1) * window_s).temperature_c -
-                              temperatures->truth_at(w * window_s).temperature_c) / window_s;
+                              temperatures->truth_at(w * window_s).temperature_c) /
+                             window_s;
     const Eigen::Vector3d force = temperatures->truth_at(0.0).specific_force_body_m_s2;
     gyro_residual -= g.bias_per_temperature_rate * mean_rate;
     accel_residual -= 1e-6 * a.scale_factor_ppm_per_temperature_rate.cwiseProduct(force) * mean_rate;
     gyro_thermal += g.bias_per_temperature_rate * mean_rate;
-    worst_z = std::max({worst_z, gyro_residual.cwiseAbs().maxCoeff() / sigma[0],
-                        accel_residual.cwiseAbs().maxCoeff() / sigma[1]});
+    worst_z = std::max(
+        {worst_z, gyro_residual.cwiseAbs().maxCoeff() / sigma[0], accel_residual.cwiseAbs().maxCoeff() / sigma[1]});
     largest_thermal_z = std::max({largest_thermal_z, gyro_thermal.cwiseAbs().maxCoeff() / sigma[0],
                                   accel_thermal.cwiseAbs().maxCoeff() / sigma[1]});
   }
-  std::printf("[thermal] %d windows of 10 s x 6 channels: worst |residual| = %.2f standard errors; "
-              "the thermal terms reach %.0f standard errors\n", windows, worst_z, largest_thermal_z);
+  std::printf(
+      "[thermal] %d windows of 10 s x 6 channels: worst |residual| = %.2f standard errors; "
+      "the thermal terms reach %.0f standard errors\n",
+      windows, worst_z, largest_thermal_z);
   // 900 near-independent z-scores: 4.9 sigma keeps the family-wise false alarm below 0.1 %.
   EXPECT_LT(worst_z, 4.9);
   EXPECT_GT(largest_thermal_z, 50.0);  // so the check could see a wrong model

@@ -32,9 +32,9 @@ TEST(EmulatorScenarioTruth, QuadratureExactForDegree15AndSplitsAtBreakpoints) {
 struct TruthCase {
   const char* file;
   EarthShape earth;
-  double window_s;              // run this long from the start
-  std::vector<double> cuts_s;   // instants where the rate or force jumps (known from the file)
-  double max_step_s;            // reference integrator step
+  double window_s;             // run this long from the start
+  std::vector<double> cuts_s;  // instants where the rate or force jumps (known from the file)
+  double max_step_s;           // reference integrator step
 };
 
 class EmulatorScenarioTruthCases : public ::testing::TestWithParam<TruthCase> {};
@@ -50,8 +50,7 @@ TEST_P(EmulatorScenarioTruthCases, IncrementsEqualFineIntegralsOfTheTruth) {
     const double start = k * interval_s;
     const TruthIncrement increment = motion->increment(start, interval_s);
     if (k % stride) continue;
-    const auto [angle, velocity] =
-        scenario_test::simpson_increment(*motion, start, start + interval_s, c.cuts_s, 2000);
+    const auto [angle, velocity] = scenario_test::simpson_increment(*motion, start, start + interval_s, c.cuts_s, 2000);
     worst_angle = std::max(worst_angle, (increment.delta_angle_rad - angle).norm());
     worst_velocity = std::max(worst_velocity, (increment.delta_velocity_m_s - velocity).norm());
   }
@@ -64,11 +63,10 @@ TEST_P(EmulatorScenarioTruthCases, IncrementsEqualFineIntegralsOfTheTruth) {
 TEST_P(EmulatorScenarioTruthCases, StrapdownEquationsReproduceTheTruth) {
   const TruthCase& c = GetParam();
   auto motion = make_motion_source(scenario_test::shipped_scenario(c.file, c.earth));
-  const auto errors =
-      scenario_test::integrate_against_truth(*motion, c.earth, c.window_s, c.cuts_s, c.max_step_s);
-  std::printf("[truth] %s (%s): RK4 over %.0f s: attitude %.2e rad, velocity %.2e m/s, position %.2e m\n",
-              c.file, c.earth == EarthShape::kWgs84Rotating ? "wgs84" : "sphere", c.window_s,
-              errors.attitude_rad, errors.velocity_m_s, errors.position_m);
+  const auto errors = scenario_test::integrate_against_truth(*motion, c.earth, c.window_s, c.cuts_s, c.max_step_s);
+  std::printf("[truth] %s (%s): RK4 over %.0f s: attitude %.2e rad, velocity %.2e m/s, position %.2e m\n", c.file,
+              c.earth == EarthShape::kWgs84Rotating ? "wgs84" : "sphere", c.window_s, errors.attitude_rad,
+              errors.velocity_m_s, errors.position_m);
   EXPECT_LT(errors.attitude_rad, 1e-9);
   EXPECT_LT(errors.velocity_m_s, 1e-7);
   EXPECT_LT(errors.position_m, 1e-5);
@@ -114,18 +112,20 @@ TEST(EmulatorScenarioTruth, DwellsSeeExactlyGravityAndEarthRateThroughTheirOrien
                              (truth.angular_rate_body_rad_s - enu_to_body * earth_rate).norm()});
       worst_force = std::max({worst_force, (increment.delta_velocity_m_s / 0.01 - enu_to_body * up_force).norm(),
                               (truth.specific_force_body_m_s2 - enu_to_body * up_force).norm()});
-      worst_attitude = std::max(worst_attitude, truth.attitude_body_to_enu.angularDistance(position.attitude_body_to_enu));
+      worst_attitude =
+          std::max(worst_attitude, truth.attitude_body_to_enu.angularDistance(position.attitude_body_to_enu));
       if (i + 1 == config.positions.size()) break;
       // The move to the next position, timed by the test: trapezoid (or triangle) over the angle.
       const double angle = position.attitude_body_to_enu.angularDistance(config.positions[i + 1].attitude_body_to_enu);
       const double rate = config.move_rate_rad_s, acceleration = config.move_acceleration_rad_s2;
       const double move_s = angle >= rate * rate / acceleration ? angle / rate + rate / acceleration
-                                                                 : 2.0 * std::sqrt(angle / acceleration);
+                                                                : 2.0 * std::sqrt(angle / acceleration);
       dwell_start += position.dwell_s + move_s;
     }
-    std::printf("[dwell] 12-position thesis scheme (%s): worst |rate - C^T w_ie| %.1e rad/s, "
-                "|force - C^T g| %.1e m/s^2, attitude %.1e rad\n",
-                earth == EarthShape::kWgs84Rotating ? "wgs84" : "sphere", worst_rate, worst_force, worst_attitude);
+    std::printf(
+        "[dwell] 12-position thesis scheme (%s): worst |rate - C^T w_ie| %.1e rad/s, "
+        "|force - C^T g| %.1e m/s^2, attitude %.1e rad\n",
+        earth == EarthShape::kWgs84Rotating ? "wgs84" : "sphere", worst_rate, worst_force, worst_attitude);
     EXPECT_LT(worst_rate, 1e-18);
     EXPECT_LT(worst_force, 2e-14);
     EXPECT_LT(worst_attitude, 1e-12);
@@ -160,8 +160,8 @@ TEST(EmulatorScenarioTruth, ConingIsTheClosedFormSolution) {
       const TruthState truth = motion->truth_at(t);
       const Eigen::Quaterniond attitude = mount * cone;
       worst_attitude = std::max(worst_attitude, truth.attitude_body_to_enu.angularDistance(attitude));
-      worst_rate = std::max(worst_rate, (truth.angular_rate_body_rad_s - cone_rate -
-                                         attitude.conjugate() * earth_rate).norm());
+      worst_rate =
+          std::max(worst_rate, (truth.angular_rate_body_rad_s - cone_rate - attitude.conjugate() * earth_rate).norm());
     }
     // The coning drift: over whole cycles the z increments sum to -2 W sin^2(a/2) T.
     const double cycles_s = 20.0 / scenario.coning->frequency_hz;
@@ -171,9 +171,10 @@ TEST(EmulatorScenarioTruth, ConingIsTheClosedFormSolution) {
     }
     double z_expected = -2.0 * w * std::sin(a / 2) * std::sin(a / 2) * cycles_s;
     if (earth == EarthShape::kWgs84Rotating) z_expected = std::nan("");  // Earth rate adds to z
-    std::printf("[coning] %s: attitude %.1e rad, rate %.1e rad/s from the closed form; z drift %.6e rad "
-                "over %.0f s\n", earth == EarthShape::kWgs84Rotating ? "wgs84" : "sphere", worst_attitude,
-                worst_rate, z_sum, cycles_s);
+    std::printf(
+        "[coning] %s: attitude %.1e rad, rate %.1e rad/s from the closed form; z drift %.6e rad "
+        "over %.0f s\n",
+        earth == EarthShape::kWgs84Rotating ? "wgs84" : "sphere", worst_attitude, worst_rate, z_sum, cycles_s);
     EXPECT_LT(worst_attitude, 1e-15);
     EXPECT_LT(worst_rate, 1e-14);
     if (earth == EarthShape::kSphereNonRotating) {
@@ -192,8 +193,8 @@ TEST(EmulatorScenarioTruth, RateTableHoldsItsConfiguredRates) {
     rate = step.rate_rad_s;
     const double middle = t + 0.5 * step.hold_s;
     const TruthState truth = motion->truth_at(middle);
-    const Eigen::Vector3d earth_in_body = truth.attitude_body_to_enu.conjugate() *
-                                          earth_rate_enu_rad_s(scenario.earth_model, scenario.latitude_rad);
+    const Eigen::Vector3d earth_in_body =
+        truth.attitude_body_to_enu.conjugate() * earth_rate_enu_rad_s(scenario.earth_model, scenario.latitude_rad);
     const Eigen::Vector3d axis_in_body = truth.attitude_body_to_enu.conjugate() * table.axis_enu;
     worst = std::max(worst, (truth.angular_rate_body_rad_s - earth_in_body - rate * axis_in_body).norm());
     t += step.hold_s;

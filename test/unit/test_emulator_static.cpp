@@ -12,7 +12,6 @@
 #include "imu_lab/emulator/sensor_channel.h"
 #include "imu_lab/emulator/static_motion.h"
 
-
 namespace imu_lab {
 namespace emulator {
 namespace {
@@ -54,11 +53,10 @@ SensorProfile white_only_profile() {
   return profile;
 }
 
-Eigen::Vector3d expected_output(const TriadErrorModel& model, const TriadChannel& channel,
-                                const Eigen::Vector3d& input, const Eigen::Vector3d& force) {
+Eigen::Vector3d expected_output(const TriadErrorModel& model, const TriadChannel& channel, const Eigen::Vector3d& input,
+                                const Eigen::Vector3d& force) {
   return channel.total_bias() + model.scale_misalignment_matrix() * input +
-         model.quadratic_nonlinearity_per_unit.cwiseProduct(input.cwiseProduct(input)) +
-         model.g_sensitivity * force;
+         model.quadratic_nonlinearity_per_unit.cwiseProduct(input.cwiseProduct(input)) + model.g_sensitivity * force;
 }
 
 struct RecordMeans {
@@ -114,17 +112,16 @@ TEST(EmulatorStatic, MeansEqualGravityAndEarthRateThroughBiasAndK) {
   const EmulatedSample& sample = means.last;
   const Eigen::Vector3d true_rate = sample.truth.angular_rate_rad_s;
   const Eigen::Vector3d true_force = sample.truth.specific_force_m_s2;
-  const Eigen::Vector3d gyro_expected =
-      expected_output(profile.gyro, emulator.gyro_channel(), true_rate, true_force);
-  const Eigen::Vector3d accel_expected = expected_output(
-      profile.accelerometer, emulator.accelerometer_channel(), true_force, Eigen::Vector3d::Zero());
+  const Eigen::Vector3d gyro_expected = expected_output(profile.gyro, emulator.gyro_channel(), true_rate, true_force);
+  const Eigen::Vector3d accel_expected =
+      expected_output(profile.accelerometer, emulator.accelerometer_channel(), true_force, Eigen::Vector3d::Zero());
   // White noise only: the mean's standard error is N / sqrt(T).
   const double duration = count / settings.rate_hz;
   const double gyro_se = 1e-5 / std::sqrt(duration), accel_se = 1e-3 / std::sqrt(duration);
   const Eigen::Vector3d gyro_z = (means.angular_rate_rad_s - gyro_expected) / gyro_se;
   const Eigen::Vector3d accel_z = (means.specific_force_m_s2 - accel_expected) / accel_se;
-  std::printf("[static] white only, 1000 s: gyro z = %.2f %.2f %.2f, accel z = %.2f %.2f %.2f\n",
-              gyro_z[0], gyro_z[1], gyro_z[2], accel_z[0], accel_z[1], accel_z[2]);
+  std::printf("[static] white only, 1000 s: gyro z = %.2f %.2f %.2f, accel z = %.2f %.2f %.2f\n", gyro_z[0], gyro_z[1],
+              gyro_z[2], accel_z[0], accel_z[1], accel_z[2]);
   // 6 means, 99.7 % family-wise: |z| < 3.4.
   EXPECT_LT(gyro_z.cwiseAbs().maxCoeff(), 3.4);
   EXPECT_LT(accel_z.cwiseAbs().maxCoeff(), 3.4);
@@ -153,14 +150,13 @@ TEST(EmulatorStatic, TacticalProfileMeansWithinTheBoundFromItsNoise) {
   };
   const Eigen::Vector3d gyro_expected = expected_output(
       profile.gyro, emulator.gyro_channel(), sample.truth.angular_rate_rad_s, sample.truth.specific_force_m_s2);
-  const Eigen::Vector3d accel_expected =
-      expected_output(profile.accelerometer, emulator.accelerometer_channel(),
-                      sample.truth.specific_force_m_s2, Eigen::Vector3d::Zero());
+  const Eigen::Vector3d accel_expected = expected_output(profile.accelerometer, emulator.accelerometer_channel(),
+                                                         sample.truth.specific_force_m_s2, Eigen::Vector3d::Zero());
   for (int axis = 0; axis < 3; ++axis) {
-    const double gz = (means.angular_rate_rad_s[axis] - gyro_expected[axis]) /
-                      mean_sigma(emulator.gyro_channel(), axis);
-    const double az = (means.specific_force_m_s2[axis] - accel_expected[axis]) /
-                      mean_sigma(emulator.accelerometer_channel(), axis);
+    const double gz =
+        (means.angular_rate_rad_s[axis] - gyro_expected[axis]) / mean_sigma(emulator.gyro_channel(), axis);
+    const double az =
+        (means.specific_force_m_s2[axis] - accel_expected[axis]) / mean_sigma(emulator.accelerometer_channel(), axis);
     std::printf("[static] tactical_mems axis %d, 300 s: gyro z = %.2f, accel z = %.2f\n", axis, gz, az);
     EXPECT_LT(std::abs(gz), 3.4);
     EXPECT_LT(std::abs(az), 3.4);
@@ -202,9 +198,8 @@ std::vector<double> run_bits(std::uint64_t seed, const std::string& profile_file
   std::vector<double> values;
   for (int k = 0; k < 2000; ++k) {
     const EmulatedSample s = emulator.next();
-    values.insert(values.end(), {s.angular_rate_rad_s.x(), s.angular_rate_rad_s.y(),
-                                 s.angular_rate_rad_s.z(), s.specific_force_m_s2.x(),
-                                 s.specific_force_m_s2.y(), s.specific_force_m_s2.z()});
+    values.insert(values.end(), {s.angular_rate_rad_s.x(), s.angular_rate_rad_s.y(), s.angular_rate_rad_s.z(),
+                                 s.specific_force_m_s2.x(), s.specific_force_m_s2.y(), s.specific_force_m_s2.z()});
   }
   return values;
 }
@@ -218,8 +213,8 @@ TEST(EmulatorStatic, SameSeedBitIdenticalDifferentSeedDifferent) {
     for (std::size_t i = 0; i < first.size(); ++i) differing += first[i] != other[i];
     // Pulse-quantized outputs often coincide (same pulse count), so ask for 10 %, not all.
     EXPECT_GT(differing, first.size() / 10) << file;
-    std::printf("[determinism] %s: seed 42 twice identical; seed 43 differs in %zu of %zu values\n",
-                file, differing, first.size());
+    std::printf("[determinism] %s: seed 42 twice identical; seed 43 differs in %zu of %zu values\n", file, differing,
+                first.size());
   }
 }
 

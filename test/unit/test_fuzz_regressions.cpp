@@ -136,7 +136,8 @@ TEST(FuzzRegressions, CheckpointWhosePhaseHistoryDisagreesWithItsCountIsRefused)
 
 // `bytes` with the eight bytes at `offset` (an offset from the end when negative) replaced.
 std::string with_int64_at(std::string bytes, std::ptrdiff_t offset, std::int64_t value) {
-  const std::size_t at = offset < 0 ? bytes.size() - static_cast<std::size_t>(-offset) : static_cast<std::size_t>(offset);
+  const std::size_t at =
+      offset < 0 ? bytes.size() - static_cast<std::size_t>(-offset) : static_cast<std::size_t>(offset);
   std::memcpy(&bytes[at], &value, sizeof value);
   return bytes;
 }
@@ -180,8 +181,11 @@ TEST(FuzzRegressions, CheckpointWhoseNextNonOverlappingEndLagsTheProcessedPoints
   allan_sums.save(out);
   // The next ends are the last vector of the state; m = 4's is the last of them, legitimately 200.
   expect_only_the_tampered_state_refused(
-      [](allan::BinaryReader& in) { allan::DifferenceAccumulator(2, {1, 2, 4}).load(in, 200); }, out.bytes(),
-      with_int64_at(out.bytes(), -8, 12), "next non-overlapping difference out of step with the processed points");
+      [](allan::BinaryReader& in) {
+        allan::DifferenceAccumulator(2, {1, 2, 4}).load(in, 200);
+      },
+      out.bytes(), with_int64_at(out.bytes(), -8, 12),
+      "next non-overlapping difference out of step with the processed points");
 }
 
 TEST(FuzzRegressions, CheckpointWhoseNextBlockMeanLagsTheProcessedPointsIsRefused) {
@@ -192,8 +196,10 @@ TEST(FuzzRegressions, CheckpointWhoseNextBlockMeanLagsTheProcessedPointsIsRefuse
   allan::BinaryWriter out;
   block_means.save(out);
   expect_only_the_tampered_state_refused(
-      [](allan::BinaryReader& in) { allan::BlockMeanAutocorrelation({1, 2, 4}).load(in, 200); }, out.bytes(),
-      with_int64_at(out.bytes(), -8, 12), "next block mean out of step with the processed points");
+      [](allan::BinaryReader& in) {
+        allan::BlockMeanAutocorrelation({1, 2, 4}).load(in, 200);
+      },
+      out.bytes(), with_int64_at(out.bytes(), -8, 12), "next block mean out of step with the processed points");
 }
 
 // A level that has moved its window's history at least once (5000 points through a 4096 block).
@@ -229,7 +235,8 @@ TEST(FuzzRegressions, CheckpointWhoseClosedSegmentsOverflowTheTermCountIsRefused
   // Was accepted; the total deviation's normaliser (length times count) then overflowed int64.
   const allan::BinaryWriter out = saved_level(true);
   // The map of closed segments ends the state: its one entry is (5000 points, 1 segment).
-  const std::string huge = with_int64_at(with_int64_at(out.bytes(), -16, std::int64_t{1} << 40), -8, std::int64_t{1} << 40);
+  const std::string huge =
+      with_int64_at(with_int64_at(out.bytes(), -16, std::int64_t{1} << 40), -8, std::int64_t{1} << 40);
   expect_only_the_tampered_state_refused(load_level, out.bytes(), huge, "closed segment length or count out of range");
 }
 
@@ -262,7 +269,8 @@ TEST(FuzzRegressions, SamplesThatOverflowTheSumsGiveNoPointsInsteadOfAnException
   ASSERT_NO_THROW(snapshot = engine.snapshot());
   for (const allan::Statistic statistic : allan::kStreamingStatistics) {
     for (const allan::StabilityPoint& point : snapshot.curve(statistic, 0)) {
-      EXPECT_TRUE(std::isfinite(point.deviation)) << allan::statistic_name(statistic) << " m " << point.averaging_factor;
+      EXPECT_TRUE(std::isfinite(point.deviation))
+          << allan::statistic_name(statistic) << " m " << point.averaging_factor;
     }
     EXPECT_FALSE(snapshot.curve(statistic, 1).empty()) << "the other channel keeps its curve";
   }

@@ -21,10 +21,14 @@ std::vector<double> phase_of(const std::vector<double>& rates) { return allan::p
 std::vector<NoiseModel> models_of_every_kind() {
   std::vector<NoiseModel> models(4);
   models[0].terms = {{TermKind::kWhiteRate, 7e-4, 40.0}, {TermKind::kRandomWalk, 2e-6}, {TermKind::kMarkov, 1e-4, 0.5}};
-  models[1].terms = {{TermKind::kWhiteRate, 7e-4, 0.0}, {TermKind::kBiasInstability, 1e-4, 50.0},
-                     {TermKind::kWhiteAngle, 1e-5}, {TermKind::kRateRamp, 1e-7}};
-  models[2].terms = {{TermKind::kWhiteRate, 7e-4, 30.0}, {TermKind::kResonance, 3e-3, 20.0, 1.5},
-                     {TermKind::kZeroDcFamily, 1e-3, 0.5}, {TermKind::kSinusoid, 2e-4, 0.7}};
+  models[1].terms = {{TermKind::kWhiteRate, 7e-4, 0.0},
+                     {TermKind::kBiasInstability, 1e-4, 50.0},
+                     {TermKind::kWhiteAngle, 1e-5},
+                     {TermKind::kRateRamp, 1e-7}};
+  models[2].terms = {{TermKind::kWhiteRate, 7e-4, 30.0},
+                     {TermKind::kResonance, 3e-3, 20.0, 1.5},
+                     {TermKind::kZeroDcFamily, 1e-3, 0.5},
+                     {TermKind::kSinusoid, 2e-4, 0.7}};
   models[3].terms = {{TermKind::kWhiteRate, 7e-4, 30.0}};
   models[3].output_quantization_density = 1e-4;
   return models;
@@ -34,13 +38,14 @@ std::vector<NoiseModel> models_of_every_kind() {
 // elsewhere; the brute force sums every lag. 2e-4 is ten times the largest difference seen.
 TEST(IdentifyAvarCovariance, LagSumsMatchTheSumOverEveryLag) {
   const long long samples = 20000;
-  const std::vector<std::pair<int, int>> pairs = {{1, 1}, {3, 5}, {10, 13}, {100, 200}, {1000, 1000}, {3000, 5000}, {9000, 9999}};
+  const std::vector<std::pair<int, int>> pairs = {{1, 1},       {3, 5},       {10, 13},    {100, 200},
+                                                  {1000, 1000}, {3000, 5000}, {9000, 9999}};
   for (const NoiseModel& model : models_of_every_kind()) {
     for (const auto& pair : pairs) {
       const double direct = oavar_covariance_by_direct_sum(model, pair.first, pair.second, kTau0S, samples);
       const Eigen::MatrixXd quadrature = oavar_covariance(model, {pair.first, pair.second}, kTau0S, samples);
-      EXPECT_NEAR(quadrature(0, 1) / direct, 1.0, 2e-4) << "m " << pair.first << " n " << pair.second << " model of "
-                                                       << model.terms.size() << " terms";
+      EXPECT_NEAR(quadrature(0, 1) / direct, 1.0, 2e-4)
+          << "m " << pair.first << " n " << pair.second << " model of " << model.terms.size() << " terms";
       EXPECT_NEAR(quadrature(1, 0), quadrature(0, 1), 1e-12 * std::abs(direct));
     }
   }
@@ -98,8 +103,7 @@ TEST(IdentifyAvarCovariance, SharedLagSumsAreThoseACovarianceAloneMakes) {
 // The lag sums are held to 2e-4 of the brute force unless a caller's form is an approximation.
 template <class Record>
 void expect_formula_matches_simulation(const NoiseModel& model, const std::vector<int>& factors, long long samples,
-                                       int records, const Record& simulate_record,
-                                       double quadrature_tolerance = 2e-4) {
+                                       int records, const Record& simulate_record, double quadrature_tolerance = 2e-4) {
   std::vector<std::vector<double>> estimates(factors.size());
   std::vector<double> rates(samples);
   for (int record = 0; record < records; ++record) {

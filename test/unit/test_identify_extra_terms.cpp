@@ -38,9 +38,7 @@ TEST(IdentifyExtraTerms, SinusoidIsFoundWithItsFrequency) {
 
 TEST(IdentifyExtraTerms, TwoMarkovProcessesAreSeparated) {
   NoiseModel truth;
-  truth.terms = {{TermKind::kWhiteRate, 1e-5, 0.0},
-                 {TermKind::kMarkov, 3e-4, 0.05},
-                 {TermKind::kMarkov, 1e-3, 20.0}};
+  truth.terms = {{TermKind::kWhiteRate, 1e-5, 0.0}, {TermKind::kMarkov, 3e-4, 0.05}, {TermKind::kMarkov, 1e-3, 20.0}};
   const FitResult fit = fit_noise_model(exact_curve(truth), kTau0, kLength);
   EXPECT_NEAR(expect_present(fit, "markov_1").shape.value, 0.05, 0.005);
   EXPECT_NEAR(expect_present(fit, "markov_2").shape.value, 20.0, 2.0);

@@ -16,20 +16,18 @@ namespace {
 
 constexpr double kRateHz = 2000.0;
 constexpr double kDurationS = 600.0;
-constexpr double kN_rad_per_sqrt_s = 2.9e-7;          // 0.001 deg/sqrt(h)
+constexpr double kN_rad_per_sqrt_s = 2.9e-7;             // 0.001 deg/sqrt(h)
 constexpr double kMarkovFlank_rad_per_sqrt_s = 1.16e-5;  // q_c T_c = 0.04 deg/sqrt(h)
 constexpr double kCorrelationTime_s = 0.01;
-constexpr double kB_rad_s = 1.5e-8;                    // 0.003 deg/h, hidden under the flank
+constexpr double kB_rad_s = 1.5e-8;  // 0.003 deg/h, hidden under the flank
 
 TEST(IdentifyFogHump, FindsTheWhiteNoiseUnderTheMarkovHump) {
   const std::vector<noise::ProcessParameters> truth = {
       noise::WhiteRateParameters{kN_rad_per_sqrt_s},
-      noise::MarkovParameters{kMarkovFlank_rad_per_sqrt_s / kCorrelationTime_s,
-                              kCorrelationTime_s},
+      noise::MarkovParameters{kMarkovFlank_rad_per_sqrt_s / kCorrelationTime_s, kCorrelationTime_s},
       noise::BiasInstabilityParameters{kB_rad_s, 100.0, 0.01, kDurationS}};
   const auto rates = identify_test::emulate_axis_rates(truth, kRateHz, kDurationS, 3);
-  FitResult fit =
-      fit_noise_model(identify_test::octave_oadev(rates, kRateHz), 1.0 / kRateHz, kDurationS);
+  FitResult fit = fit_noise_model(identify_test::octave_oadev(rates, kRateHz), 1.0 / kRateHz, kDurationS);
   apply_bootstrap(bootstrap_uncertainty(fit, BootstrapOptions{12, 8}), &fit);
 
   // The slope reading at 1 s is off by at least 10x.
@@ -47,8 +45,7 @@ TEST(IdentifyFogHump, FindsTheWhiteNoiseUnderTheMarkovHump) {
   ASSERT_NE(markov, nullptr);
   EXPECT_EQ(markov->status, TermStatus::kPresent);
   EXPECT_LT(std::abs(markov->shape.value - kCorrelationTime_s), 3.0 * markov->shape.sigma);
-  EXPECT_LT(std::abs(markov->amplitude.value - kMarkovFlank_rad_per_sqrt_s),
-            3.0 * markov->amplitude.sigma);
+  EXPECT_LT(std::abs(markov->amplitude.value - kMarkovFlank_rad_per_sqrt_s), 3.0 * markov->amplitude.sigma);
   EXPECT_EQ(fit.find("markov_2"), nullptr);
 
   // B is far below the flank in 10 min: reported absent, with a bound that holds the truth.
@@ -59,8 +56,7 @@ TEST(IdentifyFogHump, FindsTheWhiteNoiseUnderTheMarkovHump) {
 
   bool warned = false;
   for (const auto& warning : fit.warnings) {
-    warned |= warning.find("slope reading of N") != std::string::npos &&
-              warning.find("markov_1") != std::string::npos;
+    warned |= warning.find("slope reading of N") != std::string::npos && warning.find("markov_1") != std::string::npos;
   }
   EXPECT_TRUE(warned);
 }

@@ -56,8 +56,8 @@ TEST(IdentifyGraphical, MixtureMinimumOverstatesB) {
 // keeps it. Without the front end in the model, N would come out low or sit in a Markov term.
 TEST(IdentifyGraphical, AntiAliasFilterIsFittedOrTaken) {
   constexpr double kRateHz = 100.0, kDurationS = 1800.0, kN = 1.75e-4, kCornerHz = 30.0;
-  const auto rates = identify_test::emulate_axis_rates({noise::WhiteRateParameters{kN}}, kRateHz,
-                                                       kDurationS, 21, kCornerHz);
+  const auto rates =
+      identify_test::emulate_axis_rates({noise::WhiteRateParameters{kN}}, kRateHz, kDurationS, 21, kCornerHz);
   const auto curve = identify_test::octave_oadev(rates, kRateHz);
   const FitResult blind = fit_noise_model(curve, 1.0 / kRateHz, kDurationS);
   const TermEstimate* white = blind.find("white_rate");

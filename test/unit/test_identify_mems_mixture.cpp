@@ -29,14 +29,12 @@ FitResult fit_case_one(std::uint64_t seed, bool with_bootstrap) {
       noise::BiasInstabilityParameters{kB_rad_s, kRateHz / 2.0, 2.0 / kRateHz, kDurationS},
       noise::RandomWalkParameters{kK_rad_s_per_sqrt_s}, noise::WhiteAngleParameters{kQ_rad, 0.0}};
   const auto rates = identify_test::emulate_axis_rates(truth, kRateHz, kDurationS, seed);
-  FitResult fit = fit_noise_model(identify_test::octave_oadev(rates, kRateHz), 1.0 / kRateHz,
-                                  kDurationS);
+  FitResult fit = fit_noise_model(identify_test::octave_oadev(rates, kRateHz), 1.0 / kRateHz, kDurationS);
   if (with_bootstrap) apply_bootstrap(bootstrap_uncertainty(fit, BootstrapOptions{20, 5}), &fit);
   return fit;
 }
 
-void expect_recovered(const FitResult& fit, const std::string& name, double truth,
-                      double max_relative_sigma) {
+void expect_recovered(const FitResult& fit, const std::string& name, double truth, double max_relative_sigma) {
   const TermEstimate* term = fit.find(name);
   ASSERT_NE(term, nullptr) << name;
   ASSERT_EQ(term->status, TermStatus::kPresent) << name;

@@ -25,8 +25,7 @@ TriadFit exact_triad(SensorKind sensor, double n, double k) {
   std::array<std::vector<allan::StabilityPoint>, 3> curves;
   for (int axis = 0; axis < 3; ++axis) {
     NoiseModel model;
-    model.terms = {{TermKind::kWhiteRate, n * (1.0 + 0.5 * axis), 0.0},
-                   {TermKind::kRandomWalk, k, 0.0}};
+    model.terms = {{TermKind::kWhiteRate, n * (1.0 + 0.5 * axis), 0.0}, {TermKind::kRandomWalk, k, 0.0}};
     curves[axis] = identify_test::exact_octave_curve(model, 0.01, 7200.0);
   }
   return fit_triad(sensor, curves, 0.01, 7200.0);
@@ -40,8 +39,8 @@ TEST(IdentifyReport, NumbersRoundTripThroughTheYaml) {
   for (const TriadFit& triad : triads) {
     for (int axis = 0; axis < 3; ++axis) {
       const FitResult& fit = triad.axes[axis];
-      const std::string base = "triads." + sensor_prefix(triad.sensor) + ".axes." +
-                               axis_name(triad.sensor, axis) + ".terms.";
+      const std::string base =
+          "triads." + sensor_prefix(triad.sensor) + ".axes." + axis_name(triad.sensor, axis) + ".terms.";
       for (const TermEstimate& term : fit.terms) {
         for (const UnitScale& unit : amplitude_units(triad.sensor, term.kind)) {
           const std::string key = base + term.name + "." + parameter_key(amplitude_symbol(term.kind), unit.key);
@@ -57,8 +56,8 @@ TEST(IdentifyReport, NumbersRoundTripThroughTheYaml) {
           EXPECT_DOUBLE_EQ(values.at(key + "_sigma"), term.amplitude.sigma * unit.per_si) << key;
         }
       }
-      EXPECT_DOUBLE_EQ(values.at("triads." + sensor_prefix(triad.sensor) + ".axes." +
-                                 axis_name(triad.sensor, axis) + ".fit_quality.p_value"),
+      EXPECT_DOUBLE_EQ(values.at("triads." + sensor_prefix(triad.sensor) + ".axes." + axis_name(triad.sensor, axis) +
+                                 ".fit_quality.p_value"),
                        fit.quality.p_value);
     }
   }
@@ -85,8 +84,7 @@ TEST(IdentifyReport, WrittenAtomicallyToAFile) {
 }
 
 // A triad fit made by hand: per axis, N present and K either present or absent with a bound.
-TriadFit hand_triad(SensorKind sensor, const std::array<double, 3>& n,
-                    const std::array<double, 3>& k, bool k_present) {
+TriadFit hand_triad(SensorKind sensor, const std::array<double, 3>& n, const std::array<double, 3>& k, bool k_present) {
   TriadFit triad;
   triad.sensor = sensor;
   for (int axis = 0; axis < 3; ++axis) {
@@ -106,10 +104,8 @@ TriadFit hand_triad(SensorKind sensor, const std::array<double, 3>& n,
 }
 
 TEST(IdentifyKalibr, KeysAndConversionsForAKnownModel) {
-  const TriadFit gyro = hand_triad(SensorKind::kGyroscope, {1e-4, 3e-4, 2e-4}, {1e-6, 4e-6, 2e-6},
-                                   false);
-  const TriadFit accel = hand_triad(SensorKind::kAccelerometer, {2e-3, 1e-3, 1.5e-3},
-                                    {3e-5, 1e-5, 2e-5}, true);
+  const TriadFit gyro = hand_triad(SensorKind::kGyroscope, {1e-4, 3e-4, 2e-4}, {1e-6, 4e-6, 2e-6}, false);
+  const TriadFit accel = hand_triad(SensorKind::kAccelerometer, {2e-3, 1e-3, 1.5e-3}, {3e-5, 1e-5, 2e-5}, true);
   const double rate_hz = 400.0;
   const KalibrImuNoise noise = kalibr_noise(gyro, accel, rate_hz, "/imu/raw");
   const YAML::Node yaml = YAML::Load(format_kalibr_imu_yaml(noise));
@@ -180,8 +176,7 @@ TEST(IdentifyPartialCurves, EachTermsCurveAndTheTotal) {
   const double n = fit.model.terms[0].amplitude, k = fit.model.terms[1].amplitude;
   EXPECT_DOUBLE_EQ(curves.term_deviations[0][1], n / 10.0);
   EXPECT_NEAR(curves.term_deviations[1][1], k * std::sqrt(100.0 / 3.0), 1e-18);
-  EXPECT_NEAR(curves.total_deviation[1],
-              std::hypot(curves.term_deviations[0][1], curves.term_deviations[1][1]), 1e-18);
+  EXPECT_NEAR(curves.total_deviation[1], std::hypot(curves.term_deviations[0][1], curves.term_deviations[1][1]), 1e-18);
   const std::string csv = format_partial_curves_csv(curves, "rad_s");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "tau_s,measured_dev_rad_s,fit_total_dev_rad_s,white_rate_dev_rad_s,"

@@ -15,8 +15,7 @@ TEST(IdentifyTriad, FitsEachAxisAndFlagsTheNoisiest) {
   const std::array<double, 3> white = {1e-4, 3e-4, 1.5e-4};
   emulator::TriadErrorModel model;
   for (int axis = 0; axis < 3; ++axis) {
-    model.noise_per_axis[axis] = {noise::WhiteRateParameters{white[axis]},
-                                  noise::RandomWalkParameters{2e-6}};
+    model.noise_per_axis[axis] = {noise::WhiteRateParameters{white[axis]}, noise::RandomWalkParameters{2e-6}};
   }
   const auto rates = identify_test::emulate_triad_rates(model, kRateHz, kDurationS, 9);
   std::array<std::vector<allan::StabilityPoint>, 3> curves;

@@ -142,8 +142,9 @@ TEST(IdentifyFitPoints, EngineGridsBeyondTheExactRangeGiveTheSameLadder) {
   const std::vector<int> at_ten = factors(select_fit_points(engine_grid(10.0)));
   EXPECT_EQ(factors(select_fit_points(engine_grid(30.0))), at_ten);
   // round(10^(k / 5)) for k = 0 .. 26, the ten beyond 1000 as the engine reports them
-  EXPECT_EQ(at_ten, (std::vector<int>{1, 2, 3, 4, 6, 10, 16, 25, 40, 63, 100, 158, 251, 398, 631, 1000, 1586, 2512,
-                                      3984, 6312, 10000, 15856, 25120, 39872, 63104, 100096, 158720}));
+  EXPECT_EQ(at_ten,
+            (std::vector<int>{1,   2,    3,    4,    6,    10,   16,    25,    40,    63,    100,   158,    251,   398,
+                              631, 1000, 1586, 2512, 3984, 6312, 10000, 15856, 25120, 39872, 63104, 100096, 158720}));
 }
 
 // For a white-noise-only model the GMM information about ln N is 4 (1' R^-1 1) with R the
@@ -186,8 +187,7 @@ TEST(IdentifyMoments, CovarianceOfLnNIsTheGeneralisedLeastSquaresOne) {
     }
   }
   const double information = Eigen::VectorXd::Ones(n).dot(relative.ldlt().solve(Eigen::VectorXd::Ones(n)));
-  const Eigen::MatrixXd log_covariance =
-      log_parameter_covariance(points, structure, outcome.log_parameters, weights);
+  const Eigen::MatrixXd log_covariance = log_parameter_covariance(points, structure, outcome.log_parameters, weights);
   EXPECT_NEAR(std::sqrt(log_covariance(0, 0)) * 2.0 * std::sqrt(information), 1.0, 1e-3);
 }
 

@@ -17,10 +17,9 @@ constexpr double kN_rad_per_sqrt_s = 1.75e-4;
 
 TEST(IdentifyWhiteNoise, NoOtherTermIsReportedPresent) {
   for (std::uint64_t seed : {1, 2, 3}) {
-    const auto rates = identify_test::emulate_axis_rates(
-        {noise::WhiteRateParameters{kN_rad_per_sqrt_s}}, kRateHz, kDurationS, seed);
-    const FitResult fit =
-        fit_noise_model(identify_test::octave_oadev(rates, kRateHz), 1.0 / kRateHz, kDurationS);
+    const auto rates =
+        identify_test::emulate_axis_rates({noise::WhiteRateParameters{kN_rad_per_sqrt_s}}, kRateHz, kDurationS, seed);
+    const FitResult fit = fit_noise_model(identify_test::octave_oadev(rates, kRateHz), 1.0 / kRateHz, kDurationS);
     ASSERT_EQ(fit.model.terms.size(), 1u) << "seed " << seed << ": " << fit.terms[1].name;
     const TermEstimate* white = fit.find("white_rate");
     ASSERT_NE(white, nullptr);
@@ -41,10 +40,9 @@ TEST(IdentifyWhiteNoise, NoOtherTermIsReportedPresent) {
 // The upper bound means what it says: a random walk just above the bound found on white noise
 // would have raised the curve's right end visibly.
 TEST(IdentifyWhiteNoise, RandomWalkBoundIsTight) {
-  const auto rates = identify_test::emulate_axis_rates(
-      {noise::WhiteRateParameters{kN_rad_per_sqrt_s}}, kRateHz, kDurationS, 4);
-  const FitResult fit =
-      fit_noise_model(identify_test::octave_oadev(rates, kRateHz), 1.0 / kRateHz, kDurationS);
+  const auto rates =
+      identify_test::emulate_axis_rates({noise::WhiteRateParameters{kN_rad_per_sqrt_s}}, kRateHz, kDurationS, 4);
+  const FitResult fit = fit_noise_model(identify_test::octave_oadev(rates, kRateHz), 1.0 / kRateHz, kDurationS);
   const double bound = fit.find("random_walk")->amplitude.upper_bound;
   // At the longest fitted tau the bound's AVAR is comparable to the white noise's (not 100x
   // smaller: a loose bound; not 100x larger: a bound the data would contradict).

@@ -65,12 +65,10 @@ TEST(CsvImuImport, ReadsNamedColumnsAndConvertsUnitsToSi) {
 }
 
 TEST(CsvImuImport, EveryTimeUnitGivesTheSameStamp) {
-  const std::pair<TimeUnit, std::string> cases[] = {{TimeUnit::kSecond, "1700000000.123456789"},
-                                                    {TimeUnit::kMillisecond, "1700000000123.456789"},
-                                                    {TimeUnit::kMicrosecond, "1700000000123456.789"},
-                                                    {TimeUnit::kNanosecond, "1700000000123456789"},
-                                                    {TimeUnit::kSecond, "1.700000000123456789e9"},
-                                                    {TimeUnit::kMillisecond, "+1.700000000123456789E12"}};
+  const std::pair<TimeUnit, std::string> cases[] = {
+      {TimeUnit::kSecond, "1700000000.123456789"},      {TimeUnit::kMillisecond, "1700000000123.456789"},
+      {TimeUnit::kMicrosecond, "1700000000123456.789"}, {TimeUnit::kNanosecond, "1700000000123456789"},
+      {TimeUnit::kSecond, "1.700000000123456789e9"},    {TimeUnit::kMillisecond, "+1.700000000123456789E12"}};
   for (const auto& [unit, text] : cases) {
     CsvImportOptions options;
     options.has_header = false;
@@ -91,8 +89,8 @@ TEST(CsvImuImport, DecimalTimeParsingIsExactAndRefusesJunk) {
   EXPECT_EQ(parse_decimal_time_ns("0000.25", TimeUnit::kSecond), 250000000);
   EXPECT_EQ(parse_decimal_time_ns("2.5e-3", TimeUnit::kSecond), 2500000);
   EXPECT_EQ(parse_decimal_time_ns(" 7 ", TimeUnit::kNanosecond), 7);
-  for (const char* junk : {"", ".", "-", "e5", "1e", "1e+", "1.2.3", "12abc", "nan", "inf", "0x10", "1e99999",
-                           "1 2", "99999999999999999999", "1e30"}) {
+  for (const char* junk : {"", ".", "-", "e5", "1e", "1e+", "1.2.3", "12abc", "nan", "inf", "0x10", "1e99999", "1 2",
+                           "99999999999999999999", "1e30"}) {
     EXPECT_FALSE(parse_decimal_time_ns(junk, TimeUnit::kSecond).has_value()) << "'" << junk << "'";
   }
 }
@@ -123,21 +121,21 @@ TEST(CsvImuImport, SkipsBlankAndCommentLinesAndAByteOrderMarkButCountsThemInLine
 
 TEST(CsvImuImport, EveryKindOfBadRowIsRejectedWithItsLineAndReason) {
   const std::string text = kHeader +
-                           "1,0,0,0,0,0,1\n"          // 2 good
-                           "2,0,0,0,0,0\n"            // 3 too few fields
-                           "3,0,0,0,0,0,1,9\n"        // 4 too many
-                           "4,abc,0,0,0,0,1\n"        // 5 not a number
-                           "5,0,NaN,0,0,0,1\n"        // 6 NaN
-                           "6,0,0,inf,0,0,1\n"        // 7 infinite
-                           "7,0,0,0,,0,1\n"           // 8 empty cell
-                           "8,0,0,0,0,0,1\n"          // 9 good
-                           "8,0,0,0,0,0,1\n"          // 10 same time
-                           "7.5,0,0,0,0,0,1\n"        // 11 time goes back
-                           "t9,0,0,0,0,0,1\n"         // 12 time not a number
-                           "nan,0,0,0,0,0,1\n"        // 13 time NaN
-                           "-1,0,0,0,0,0,1\n"         // 14 before the ROS epoch
-                           "9,0,0,0,0,0,1e400\n"      // 15 overflows a double
-                           "10,0,0,0,0,0,1\n";        // 16 good
+                           "1,0,0,0,0,0,1\n"      // 2 good
+                           "2,0,0,0,0,0\n"        // 3 too few fields
+                           "3,0,0,0,0,0,1,9\n"    // 4 too many
+                           "4,abc,0,0,0,0,1\n"    // 5 not a number
+                           "5,0,NaN,0,0,0,1\n"    // 6 NaN
+                           "6,0,0,inf,0,0,1\n"    // 7 infinite
+                           "7,0,0,0,,0,1\n"       // 8 empty cell
+                           "8,0,0,0,0,0,1\n"      // 9 good
+                           "8,0,0,0,0,0,1\n"      // 10 same time
+                           "7.5,0,0,0,0,0,1\n"    // 11 time goes back
+                           "t9,0,0,0,0,0,1\n"     // 12 time not a number
+                           "nan,0,0,0,0,0,1\n"    // 13 time NaN
+                           "-1,0,0,0,0,0,1\n"     // 14 before the ROS epoch
+                           "9,0,0,0,0,0,1e400\n"  // 15 overflows a double
+                           "10,0,0,0,0,0,1\n";    // 16 good
   const auto result = parse_imu_csv_text(text, plain(), "log.csv");
   const auto& summary = result.summary;
   EXPECT_EQ(summary.accepted_rows, 3u);
@@ -187,10 +185,10 @@ TEST(CsvImuImport, ASingleFieldRowSuggestsTheDelimiter) {
 TEST(CsvImuImport, TemperatureCellsMayBeMissingButNotJunk) {
   CsvImportOptions options;
   options.temperature_column = "temp";
-  const auto result =
-      parse_imu_csv_text("t,gx,gy,gz,ax,ay,az,temp\n1,0,0,0,0,0,1,20\n2,0,0,0,0,0,1,nan\n3,0,0,0,0,0,1,hot\n"
-                         "4,0,0,0,0,0,1,inf\n5,0,0,0,0,0,1,\n",
-                         options);
+  const auto result = parse_imu_csv_text(
+      "t,gx,gy,gz,ax,ay,az,temp\n1,0,0,0,0,0,1,20\n2,0,0,0,0,0,1,nan\n3,0,0,0,0,0,1,hot\n"
+      "4,0,0,0,0,0,1,inf\n5,0,0,0,0,0,1,\n",
+      options);
   EXPECT_EQ(result.samples.size(), 3u);
   EXPECT_EQ(result.summary.rows_without_temperature, 2u);
   EXPECT_EQ(rejection_lines(result.summary), "4 5 ");
@@ -269,7 +267,8 @@ TEST(CsvImuImport, AnOverlongLineIsABadRowAndIsNotKept) {
   EXPECT_EQ(result.samples.size(), 2u);
   ASSERT_EQ(result.summary.rejected.size(), 1u);
   EXPECT_EQ(result.summary.rejected[0].line, 3u);
-  EXPECT_EQ(result.summary.rejected[0].reason.rfind("longer than 65536 bytes", 0), 0u) << result.summary.rejected[0].reason;
+  EXPECT_EQ(result.summary.rejected[0].reason.rfind("longer than 65536 bytes", 0), 0u)
+      << result.summary.rejected[0].reason;
   const std::string exactly = kHeader + "1,0,0,0,0,0," + std::string(kMaxLineBytes - 13, '0') + "1\n";
   EXPECT_EQ(parse_imu_csv_text(exactly, plain()).samples.size(), 1u) << "a line of exactly the limit is read";
   EXPECT_THROW(parse_imu_csv_text(std::string(kMaxLineBytes + 10, 'x') + "\n1,0,0,0,0,0,1\n", plain()), InputError);
@@ -297,8 +296,9 @@ TEST(CsvImuImport, EurocAndOtherUnitCarryingHeadersAreRecognised) {
   EXPECT_THROW(parse_imu_csv_text(euroc, plain()), ConfigError);
 
   // Columns found by name in another order, units from brackets and suffixes, temperature by its unit.
-  const std::string mixed = "ax (g),ay (g),az (g),stamp_ms,gx (deg/s),gy (deg/s),gz (deg/s),temperature_c\n"
-                            "0,0,1,1700000000000,90,0,0,21.5\n";
+  const std::string mixed =
+      "ax (g),ay (g),az (g),stamp_ms,gx (deg/s),gy (deg/s),gz (deg/s),temperature_c\n"
+      "0,0,1,1700000000000,90,0,0,21.5\n";
   const auto other = parse_imu_csv_text(mixed, inferring());
   ASSERT_EQ(other.samples.size(), 1u) << other.summary.describe_rejections("csv");
   EXPECT_EQ(other.samples[0].stamp_ns, 1700000000000000000LL);
@@ -322,9 +322,10 @@ TEST(CsvImuImport, AGivenUnitTheHeaderContradictsIsRefused) {
   options.gyro_unit = AngularRateUnit::kDegreePerSecond;
   options.given.gyro_unit = true;
   try {
-    parse_imu_csv_text("time_s,gyro_x_rad_s,gyro_y_rad_s,gyro_z_rad_s,accel_x_m_s2,accel_y_m_s2,accel_z_m_s2\n"
-                       "1700000000,0,0,0,0,0,9.8\n",
-                       options, "log.csv");
+    parse_imu_csv_text(
+        "time_s,gyro_x_rad_s,gyro_y_rad_s,gyro_z_rad_s,accel_x_m_s2,accel_y_m_s2,accel_z_m_s2\n"
+        "1700000000,0,0,0,0,0,9.8\n",
+        options, "log.csv");
     ADD_FAILURE();
   } catch (const ConfigError& error) {
     EXPECT_EQ(std::string(error.what()),
@@ -436,7 +437,8 @@ TEST(CsvImuExport, FieldUnitsAndOtherDelimitersReadBackWithinRounding) {
   options.accel_unit = SpecificForceUnit::kStandardGravity;
   EXPECT_EQ(imu_csv_header(options),
             "time_s\tgyro_x_deg_s\tgyro_y_deg_s\tgyro_z_deg_s\taccel_x_g\taccel_y_g\taccel_z_g");
-  const std::vector<ImuCsvSample> samples = {sample(2000000000, 1.0, std::nullopt), sample(3000000000, 5.0, std::nullopt)};
+  const std::vector<ImuCsvSample> samples = {sample(2000000000, 1.0, std::nullopt),
+                                             sample(3000000000, 5.0, std::nullopt)};
   const std::string text = export_text(samples, options);
   EXPECT_NE(text.find("\t-0.999898"), std::string::npos) << "accel y of the first sample is about -1 g: " << text;
   const auto back = parse_imu_csv_text(text, import_options_for(options));

@@ -108,12 +108,13 @@ TEST(Lot, AccelerometerTermsAreInTheirFieldUnits) {
 
 TEST(Lot, TheTypicalModelHasTheMajorityTermsAtTheirMedianAmplitude) {
   // B in 2 of 3 units: in the model; a Markov term in 1 of 3: not.
-  std::vector<rep::LotUnit> lot = {{"a", gyro_report(0.30, 2.0)}, {"b", gyro_report(0.10, 4.0)},
-                                   {"c", gyro_report(0.20, NAN)}};
+  std::vector<rep::LotUnit> lot = {
+      {"a", gyro_report(0.30, 2.0)}, {"b", gyro_report(0.10, 4.0)}, {"c", gyro_report(0.20, NAN)}};
   lot[0].report_values[kGyroX + "terms.markov_1.q_c_T_c_rad_s_per_sqrt_hz"] = 1e-3;
   lot[0].report_values[kGyroX + "terms.markov_1.q_c_T_c_rad_s_per_sqrt_hz_sigma"] = 1e-4;
   lot[0].report_values[kGyroX + "terms.markov_1.q_c_T_c_deg_per_sqrt_h"] = 1e-3 / units::kDegPerSqrtHour_rad_per_sqrt_s;
-  lot[0].report_values[kGyroX + "terms.markov_1.q_c_T_c_deg_per_sqrt_h_sigma"] = 1e-4 / units::kDegPerSqrtHour_rad_per_sqrt_s;
+  lot[0].report_values[kGyroX + "terms.markov_1.q_c_T_c_deg_per_sqrt_h_sigma"] =
+      1e-4 / units::kDegPerSqrtHour_rad_per_sqrt_s;
   lot[0].report_values[kGyroX + "terms.markov_1.T_c_s"] = 10.0;
   for (auto& unit : lot) unit.report_values[kGyroX + "front_end.low_pass_corner_hz"] = 40.0;
   lot[1].report_values[kGyroX + "front_end.low_pass_corner_hz"] = 60.0;

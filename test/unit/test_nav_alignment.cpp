@@ -29,12 +29,10 @@ struct AlignmentRun {
   double latitude_rad = 50.0 * kDegToRad;
   double height_m = 200.0;
   double dt_s = 0.1;
-  Eigen::Quaterniond q_true =
-      Eigen::Quaterniond(Eigen::AngleAxisd(30.0 * kDegToRad, Eigen::Vector3d::UnitZ()) *
-                         Eigen::AngleAxisd(-3.0 * kDegToRad, Eigen::Vector3d::UnitY()) *
-                         Eigen::AngleAxisd(2.0 * kDegToRad, Eigen::Vector3d::UnitX()));
-  Eigen::Vector3d gyro_bias_rad_s =
-      Eigen::Vector3d(0.003, -0.003, 0.003) * kDegPerHourToRadPerSecond;
+  Eigen::Quaterniond q_true = Eigen::Quaterniond(Eigen::AngleAxisd(30.0 * kDegToRad, Eigen::Vector3d::UnitZ()) *
+                                                 Eigen::AngleAxisd(-3.0 * kDegToRad, Eigen::Vector3d::UnitY()) *
+                                                 Eigen::AngleAxisd(2.0 * kDegToRad, Eigen::Vector3d::UnitX()));
+  Eigen::Vector3d gyro_bias_rad_s = Eigen::Vector3d(0.003, -0.003, 0.003) * kDegPerHourToRadPerSecond;
   Eigen::Vector3d accel_bias_m_s2 = Eigen::Vector3d(2e-5, -2e-5, 2e-5) * kStandardGravity;
   double gyro_arw_rad_per_sqrt_s = 0.0;
   double accel_vrw_m_s_per_sqrt_s = 0.0;
@@ -54,23 +52,22 @@ Eigen::Vector3d alignmentError(const AlignmentRun& run, unsigned seed) {
     return Eigen::Vector3d(sigma * unit_normal(generator), sigma * unit_normal(generator),
                            sigma * unit_normal(generator));
   };
-  const ImuIncrement ideal = test_support::staticImuIncrement(wgs84(), run.q_true, run.latitude_rad,
-                                                              run.height_m, run.dt_s);
+  const ImuIncrement ideal =
+      test_support::staticImuIncrement(wgs84(), run.q_true, run.latitude_rad, run.height_m, run.dt_s);
   StaticAligner aligner(run.config);
   while (!aligner.complete()) {
     ImuIncrement measured = ideal;
     measured.delta_angle_rad += run.gyro_bias_rad_s * run.dt_s + noise(run.gyro_arw_rad_per_sqrt_s);
-    measured.delta_velocity_m_s +=
-        run.accel_bias_m_s2 * run.dt_s + noise(run.accel_vrw_m_s_per_sqrt_s);
+    measured.delta_velocity_m_s += run.accel_bias_m_s2 * run.dt_s + noise(run.accel_vrw_m_s_per_sqrt_s);
     aligner.add(measured);
   }
   return test_support::attitudeError_rad(aligner.attitude(), run.q_true);
 }
 
 Eigen::Vector3d predictedError(const AlignmentRun& run) {
-  return predicted_alignment_error_rad(
-      run.gyro_bias_rad_s, run.accel_bias_m_s2, run.q_true, run.latitude_rad,
-      wgs84().gravity_m_s2(run.latitude_rad, run.height_m), wgs84().earth_rate_rad_s());
+  return predicted_alignment_error_rad(run.gyro_bias_rad_s, run.accel_bias_m_s2, run.q_true, run.latitude_rad,
+                                       wgs84().gravity_m_s2(run.latitude_rad, run.height_m),
+                                       wgs84().earth_rate_rad_s());
 }
 
 TEST(NavAlignment, BiasesGiveThePredictedTiltAndHeadingErrors) {
@@ -83,8 +80,7 @@ TEST(NavAlignment, BiasesGiveThePredictedTiltAndHeadingErrors) {
       measured.x() * kArcsecPerRad, measured.y() * kArcsecPerRad, measured.z() * kArcsecPerRad,
       predicted.x() * kArcsecPerRad, predicted.y() * kArcsecPerRad, predicted.z() * kArcsecPerRad);
   for (int axis = 0; axis < 3; ++axis) {
-    EXPECT_NEAR(measured[axis], predicted[axis], 1e-3 * std::abs(predicted[axis]))
-        << "axis " << axis;
+    EXPECT_NEAR(measured[axis], predicted[axis], 1e-3 * std::abs(predicted[axis])) << "axis " << axis;
   }
   EXPECT_GT(std::abs(predicted.z()), 1e-4);  // the heading term is not vacuous: ~1 arcmin
 }
@@ -94,9 +90,8 @@ TEST(NavAlignment, NoiseStaysWithinTheDerivedBound) {
   run.gyro_arw_rad_per_sqrt_s = 0.002 * kDegToRad / 60.0;   // 0.002 deg/sqrt(h)
   run.accel_vrw_m_s_per_sqrt_s = 20e-6 * kStandardGravity;  // 20 micro-g/sqrt(Hz)
   const Eigen::Matrix3d covariance = alignment_noise_covariance_rad2(
-      run.gyro_arw_rad_per_sqrt_s, run.accel_vrw_m_s_per_sqrt_s, run.config.duration_s,
-      run.latitude_rad, wgs84().gravity_m_s2(run.latitude_rad, run.height_m),
-      wgs84().earth_rate_rad_s());
+      run.gyro_arw_rad_per_sqrt_s, run.accel_vrw_m_s_per_sqrt_s, run.config.duration_s, run.latitude_rad,
+      wgs84().gravity_m_s2(run.latitude_rad, run.height_m), wgs84().earth_rate_rad_s());
   const Eigen::Matrix3d whitening = covariance.llt().matrixL().solve(Eigen::Matrix3d::Identity());
   const Eigen::Vector3d sigma = covariance.diagonal().cwiseSqrt();
   const Eigen::Vector3d predicted = predictedError(run);
@@ -112,8 +107,7 @@ TEST(NavAlignment, NoiseStaysWithinTheDerivedBound) {
   std::printf(
       "[nav] alignment noise bound 1-sigma (arcsec, E N U): %.3f %.3f %.3f; chi-square %.1f for "
       "%d dof\n",
-      sigma.x() * kArcsecPerRad, sigma.y() * kArcsecPerRad, sigma.z() * kArcsecPerRad, chi_square,
-      3 * kSeeds);
+      sigma.x() * kArcsecPerRad, sigma.y() * kArcsecPerRad, sigma.z() * kArcsecPerRad, chi_square, 3 * kSeeds);
   EXPECT_GT(chi_square, 31.74);  // chi-square(60) 0.1 % quantile
   EXPECT_LT(chi_square, 99.61);  // 99.9 % quantile
 }

@@ -33,8 +33,7 @@ struct ConingMotion {
   Eigen::Vector3d deltaAngle(double t0, double t1) const {
     const double w = kMotionRate_rad_s, sin_b = std::sin(half_angle_rad);
     const double sin_half = std::sin(0.5 * half_angle_rad);
-    return Eigen::Vector3d(sin_b * (std::cos(w * t1) - std::cos(w * t0)),
-                           sin_b * (std::sin(w * t1) - std::sin(w * t0)),
+    return Eigen::Vector3d(sin_b * (std::cos(w * t1) - std::cos(w * t0)), sin_b * (std::sin(w * t1) - std::sin(w * t0)),
                            -2.0 * w * sin_half * sin_half * (t1 - t0));
   }
 };
@@ -51,26 +50,26 @@ double coningAttitudeError_rad(bool coning_correction) {
     ImuIncrement increment;
     increment.delta_angle_rad = motion.deltaAngle((k - 1) * kDt_s, k * kDt_s);
     increment.dt_s = kDt_s;
-    attitude = propagate_attitude(attitude, compensator.compensate(increment).rotation_vector_rad,
-                                 Eigen::Vector3d::Zero());
+    attitude =
+        propagate_attitude(attitude, compensator.compensate(increment).rotation_vector_rad, Eigen::Vector3d::Zero());
   }
   return rotation_vector_from_quaternion(attitude * motion.attitude(kDuration_s).conjugate()).norm();
 }
 
 // The error of a motion integrated with the correction off and on; on must be 10x smaller.
-void expectCorrectionGainsTenfold(const std::function<double(bool)>& error_with_correction,
-                                  const char* label, const char* unit) {
+void expectCorrectionGainsTenfold(const std::function<double(bool)>& error_with_correction, const char* label,
+                                  const char* unit) {
   const double uncorrected = error_with_correction(false);
   const double corrected = error_with_correction(true);
-  std::printf("[nav] %s: error %.3e %s without, %.3e %s with correction (factor %.0f)\n", label,
-              uncorrected, unit, corrected, unit, uncorrected / corrected);
+  std::printf("[nav] %s: error %.3e %s without, %.3e %s with correction (factor %.0f)\n", label, uncorrected, unit,
+              corrected, unit, uncorrected / corrected);
   EXPECT_LT(corrected * 10.0, uncorrected);
 }
 
 TEST(NavConing, CorrectionReducesConingDriftTenfold) {
   EXPECT_GT(coningAttitudeError_rad(false), 1e-5);  // the motion really does cone
-  expectCorrectionGainsTenfold(coningAttitudeError_rad,
-                               "coning 2 deg at 2 Hz, 100 Hz increments, 10 s, attitude", "rad");
+  expectCorrectionGainsTenfold(coningAttitudeError_rad, "coning 2 deg at 2 Hz, 100 Hz increments, 10 s, attitude",
+                               "rad");
 }
 
 // Inertial velocity error after kDuration_s of sculling.
@@ -85,25 +84,22 @@ double scullingVelocityError_m_s(bool sculling_correction) {
   for (int k = 1; k <= steps; ++k) {
     const double t0 = (k - 1) * kDt_s, t1 = k * kDt_s;
     ImuIncrement increment;
-    increment.delta_angle_rad =
-        Eigen::Vector3d(roll_amplitude_rad * (std::sin(w * t1) - std::sin(w * t0)), 0, 0);
+    increment.delta_angle_rad = Eigen::Vector3d(roll_amplitude_rad * (std::sin(w * t1) - std::sin(w * t0)), 0, 0);
     increment.delta_velocity_m_s =
         Eigen::Vector3d(0, accel_amplitude_m_s2 * (std::cos(w * t0) - std::cos(w * t1)) / w, 0);
     increment.dt_s = kDt_s;
     const CompensatedIncrement compensated = compensator.compensate(increment);
     velocity += attitude * compensated.delta_velocity_m_s;
-    attitude =
-        propagate_attitude(attitude, compensated.rotation_vector_rad, Eigen::Vector3d::Zero());
+    attitude = propagate_attitude(attitude, compensated.rotation_vector_rad, Eigen::Vector3d::Zero());
   }
-  const Eigen::Vector3d truth(
-      0.0, 0.0, accel_amplitude_m_s2 * std::cyl_bessel_j(1.0, roll_amplitude_rad) * kDuration_s);
+  const Eigen::Vector3d truth(0.0, 0.0,
+                              accel_amplitude_m_s2 * std::cyl_bessel_j(1.0, roll_amplitude_rad) * kDuration_s);
   return (velocity - truth).norm();
 }
 
 TEST(NavSculling, CorrectionReducesScullingErrorTenfold) {
-  expectCorrectionGainsTenfold(
-      scullingVelocityError_m_s,
-      "sculling 0.05 rad / 5 m/s^2 at 2 Hz, 100 Hz increments, 10 s, velocity", "m/s");
+  expectCorrectionGainsTenfold(scullingVelocityError_m_s,
+                               "sculling 0.05 rad / 5 m/s^2 at 2 Hz, 100 Hz increments, 10 s, velocity", "m/s");
 }
 
 }  // namespace

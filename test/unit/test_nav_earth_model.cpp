@@ -16,9 +16,8 @@ TEST(NavEarthModel, SomiglianaNormalGravity) {
   EXPECT_NEAR(earth.gravity_m_s2(0.0, 0.0), 9.7803253359, 1e-10);
   EXPECT_NEAR(earth.gravity_m_s2(90.0 * kDegToRad, 0.0), 9.8321849378, 1e-9);  // g_p of WGS-84
   // Free-air gradient about 3.086e-6 (m/s^2)/m near the surface.
-  EXPECT_NEAR(
-      earth.gravity_m_s2(45.0 * kDegToRad, 1000.0) - earth.gravity_m_s2(45.0 * kDegToRad, 0.0),
-      -3.086e-3, 1e-5);
+  EXPECT_NEAR(earth.gravity_m_s2(45.0 * kDegToRad, 1000.0) - earth.gravity_m_s2(45.0 * kDegToRad, 0.0), -3.086e-3,
+              1e-5);
   EXPECT_NEAR(earth.meridian_radius_m(0.0), 6335439.327, 1e-3);
   EXPECT_NEAR(earth.prime_vertical_radius_m(90.0 * kDegToRad), 6399593.626, 1e-3);
 }
@@ -37,8 +36,7 @@ TEST(NavRotatingEarth, PerfectStaticImuStaysPut) {
   test_support::StaticScenario scenario;
   scenario.config.vertical.mode = VerticalChannelMode::kFree;
   scenario.latitude_rad = 50.0 * kDegToRad;
-  scenario.q_body_to_enu =
-      Eigen::Quaterniond(Eigen::AngleAxisd(1.0, Eigen::Vector3d(1.0, 2.0, 3.0).normalized()));
+  scenario.q_body_to_enu = Eigen::Quaterniond(Eigen::AngleAxisd(1.0, Eigen::Vector3d(1.0, 2.0, 3.0).normalized()));
   scenario.duration_s = 3600.0;
   scenario.dt_s = 0.1;
   for (const test_support::ErrorSample& s : runStaticScenario(scenario)) {
@@ -56,9 +54,9 @@ TEST(NavRotatingEarth, SchulerOscillationTurnsAtTheFoucaultRate) {
   scenario.config.vertical.fixed_reference_height_m = 0.0;
   scenario.latitude_rad = 50.0 * kDegToRad;
   const EarthModel earth;
-  const double w0_squared = earth.gravity_m_s2(scenario.latitude_rad, 0.0) /
-                            std::sqrt(earth.meridian_radius_m(scenario.latitude_rad) *
-                                      earth.prime_vertical_radius_m(scenario.latitude_rad));
+  const double w0_squared =
+      earth.gravity_m_s2(scenario.latitude_rad, 0.0) /
+      std::sqrt(earth.meridian_radius_m(scenario.latitude_rad) * earth.prime_vertical_radius_m(scenario.latitude_rad));
   const double foucault_rate = earth.earth_rate_rad_s() * std::sin(scenario.latitude_rad);
   const double schuler_rate = std::sqrt(w0_squared + foucault_rate * foucault_rate);
   scenario.duration_s = 1.5 * 2.0 * M_PI / schuler_rate;
@@ -92,21 +90,16 @@ TEST(NavRotatingEarth, ConstantVelocityFlightFollowsTheEllipsoid) {
   const double dt_s = 0.1, duration_s = 3600.0;
   const auto position_rate = [&](const Eigen::Vector2d& latitude_longitude) {
     const double latitude = latitude_longitude.x();
-    return Eigen::Vector2d(
-        velocity_enu.y() / earth.meridian_radius_m(latitude),
-        velocity_enu.x() / (earth.prime_vertical_radius_m(latitude) * std::cos(latitude)));
+    return Eigen::Vector2d(velocity_enu.y() / earth.meridian_radius_m(latitude),
+                           velocity_enu.x() / (earth.prime_vertical_radius_m(latitude) * std::cos(latitude)));
   };
   const auto body_rate = [&](double latitude) {
-    return (earth.earth_rate_enu_rad_s(latitude) +
-            earth.transport_rate_enu_rad_s(velocity_enu, latitude, 0.0))
-        .eval();
+    return (earth.earth_rate_enu_rad_s(latitude) + earth.transport_rate_enu_rad_s(velocity_enu, latitude, 0.0)).eval();
   };
   const auto specific_force = [&](double latitude) {
-    const Eigen::Vector3d coriolis_rate = 2.0 * earth.earth_rate_enu_rad_s(latitude) +
-                                          earth.transport_rate_enu_rad_s(velocity_enu, latitude, 0.0);
-    return (coriolis_rate.cross(velocity_enu) +
-            Eigen::Vector3d(0.0, 0.0, earth.gravity_m_s2(latitude, 0.0)))
-        .eval();
+    const Eigen::Vector3d coriolis_rate =
+        2.0 * earth.earth_rate_enu_rad_s(latitude) + earth.transport_rate_enu_rad_s(velocity_enu, latitude, 0.0);
+    return (coriolis_rate.cross(velocity_enu) + Eigen::Vector3d(0.0, 0.0, earth.gravity_m_s2(latitude, 0.0))).eval();
   };
 
   NavigatorConfig config;
@@ -134,12 +127,10 @@ TEST(NavRotatingEarth, ConstantVelocityFlightFollowsTheEllipsoid) {
       if (half == 0) latitude_mid = position.x();
     }
     increment.delta_angle_rad =
-        dt_s / 6.0 *
-        (body_rate(latitude_start) + 4.0 * body_rate(latitude_mid) + body_rate(position.x()));
+        dt_s / 6.0 * (body_rate(latitude_start) + 4.0 * body_rate(latitude_mid) + body_rate(position.x()));
     increment.delta_velocity_m_s =
         dt_s / 6.0 *
-        (specific_force(latitude_start) + 4.0 * specific_force(latitude_mid) +
-         specific_force(position.x()));
+        (specific_force(latitude_start) + 4.0 * specific_force(latitude_mid) + specific_force(position.x()));
     navigator.update(increment);
   }
   truth.latitude_rad = position.x();
@@ -153,9 +144,7 @@ TEST(NavRotatingEarth, ConstantVelocityFlightFollowsTheEllipsoid) {
       (navigator.state().velocity_enu_m_s - velocity_enu).norm());
   EXPECT_LT(error_m.norm(), 0.1);
   EXPECT_LT((navigator.state().velocity_enu_m_s - velocity_enu).norm(), 1e-4);
-  EXPECT_LT(
-      test_support::attitudeError_rad(navigator.state().q_body_to_enu, truth.q_body_to_enu).norm(),
-      1e-8);
+  EXPECT_LT(test_support::attitudeError_rad(navigator.state().q_body_to_enu, truth.q_body_to_enu).norm(), 1e-8);
 }
 
 }  // namespace

@@ -39,8 +39,7 @@ struct NoiseCase {
   double rate_noise_intensity_rad2_per_s;  // D per axis
 
   double theorySlope_rad2_per_s() const {
-    const double angle_noise_intensity =
-        angle_noise_sigma_rad * angle_noise_sigma_rad * kDt_s;  // Q' tau0'^2
+    const double angle_noise_intensity = angle_noise_sigma_rad * angle_noise_sigma_rad * kDt_s;  // Q' tau0'^2
     return 3.0 * rate_noise_intensity_rad2_per_s +
            2.0 * angle_noise_intensity * rate_magnitude_rad_s * rate_magnitude_rad_s;
   }
@@ -55,8 +54,8 @@ struct SlopeEstimate {
 // Body rate of constant magnitude whose axis tumbles: 60 deg off body z, turning at 0.3 rad/s.
 Eigen::Vector3d tumblingRate(double magnitude_rad_s, double t) {
   const double tilt = M_PI / 3.0, tumble = 0.3 * t;
-  return magnitude_rad_s * Eigen::Vector3d(std::sin(tilt) * std::cos(tumble),
-                                           std::sin(tilt) * std::sin(tumble), std::cos(tilt));
+  return magnitude_rad_s *
+         Eigen::Vector3d(std::sin(tilt) * std::cos(tumble), std::sin(tilt) * std::sin(tumble), std::cos(tilt));
 }
 
 SlopeEstimate measureDispersionSlope(const NoiseCase& noise, std::uint64_t seed) {
@@ -64,16 +63,16 @@ SlopeEstimate measureDispersionSlope(const NoiseCase& noise, std::uint64_t seed)
   for (int k = 0; k < kSteps; ++k)
     delta_angles[k] = tumblingRate(noise.rate_magnitude_rad_s, (k + 0.5) * kDt_s) * kDt_s;
 
-  const auto propagate = [&](const std::function<Eigen::Vector3d()>& angle_noise,
-                             Eigen::Quaterniond* early, Eigen::Quaterniond* end) {
+  const auto propagate = [&](const std::function<Eigen::Vector3d()>& angle_noise, Eigen::Quaterniond* early,
+                             Eigen::Quaterniond* end) {
     ConingScullingCompensator compensator;
     Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();
     for (int k = 0; k < kSteps; ++k) {
       ImuIncrement increment;
       increment.delta_angle_rad = delta_angles[k] + angle_noise();
       increment.dt_s = kDt_s;
-      attitude = propagate_attitude(attitude, compensator.compensate(increment).rotation_vector_rad,
-                                   Eigen::Vector3d::Zero());
+      attitude =
+          propagate_attitude(attitude, compensator.compensate(increment).rotation_vector_rad, Eigen::Vector3d::Zero());
       if (k + 1 == kEarlyStep) *early = attitude;
     }
     *end = attitude;
@@ -100,8 +99,7 @@ SlopeEstimate measureDispersionSlope(const NoiseCase& noise, std::uint64_t seed)
     };
     Eigen::Quaterniond early, end;
     propagate(angle_noise, &early, &end);
-    const Eigen::Vector3d error_early =
-        rotation_vector_from_quaternion(early * true_early.conjugate());
+    const Eigen::Vector3d error_early = rotation_vector_from_quaternion(early * true_early.conjugate());
     const Eigen::Vector3d error_end = rotation_vector_from_quaternion(end * true_end.conjugate());
     sum_early += error_early;
     sum_end += error_end;
@@ -114,8 +112,7 @@ SlopeEstimate measureDispersionSlope(const NoiseCase& noise, std::uint64_t seed)
   // Krobka dispersion: subtract the squared mean error vector (eq. 2.33).
   const double dispersion_growth =
       mean_difference - (sum_end / kRuns).squaredNorm() + (sum_early / kRuns).squaredNorm();
-  const double difference_variance =
-      (sum_difference_squared - kRuns * mean_difference * mean_difference) / (kRuns - 1);
+  const double difference_variance = (sum_difference_squared - kRuns * mean_difference * mean_difference) / (kRuns - 1);
   const double interval_s = (kSteps - kEarlyStep) * kDt_s;
   return {dispersion_growth / interval_s, std::sqrt(difference_variance / kRuns) / interval_s,
           sum_end_squared / kRuns - (sum_end / kRuns).squaredNorm()};
@@ -130,8 +127,7 @@ void expectSlopeMatchesTheory(const NoiseCase& noise, std::uint64_t seed, const 
       label, estimate.slope_rad2_per_s, theory, estimate.slope_rad2_per_s / theory,
       (estimate.slope_rad2_per_s - theory) / estimate.standard_error_rad2_per_s,
       100.0 * estimate.standard_error_rad2_per_s / theory);
-  ASSERT_LT(4.0 * estimate.standard_error_rad2_per_s, 0.2 * theory)
-      << "too few runs for a 20 % check";
+  ASSERT_LT(4.0 * estimate.standard_error_rad2_per_s, 0.2 * theory) << "too few runs for a 20 % check";
   EXPECT_NEAR(estimate.slope_rad2_per_s, theory, 0.2 * theory);
 }
 
@@ -141,21 +137,19 @@ TEST(NavKrobka, WhiteAngleNoiseDiffusesARotatingBodyAsEq37) {
 
 TEST(NavKrobka, WhiteRateNoiseAddsThreeDt) {
   const double rate_noise_intensity = 2e-11;  // ~ the angle-noise term, so both must be right
-  expectSlopeMatchesTheory({1.0, kAngleNoiseSigma_rad, rate_noise_intensity}, 12,
-                           "|w| = 1 rad/s, angle + rate noise");
+  expectSlopeMatchesTheory({1.0, kAngleNoiseSigma_rad, rate_noise_intensity}, 12, "|w| = 1 rad/s, angle + rate noise");
 }
 
 TEST(NavKrobka, NonRotatingBodyDoesNotDiffuse) {
   const NoiseCase still{0.0, kAngleNoiseSigma_rad, 0.0};
   const SlopeEstimate estimate = measureDispersionSlope(still, 13);
   const double rotating_theory = NoiseCase{1.0, kAngleNoiseSigma_rad, 0.0}.theorySlope_rad2_per_s();
-  const double boundary_dispersion =
-      6.0 * kAngleNoiseSigma_rad * kAngleNoiseSigma_rad;  // |zeta_N - zeta_0|^2
+  const double boundary_dispersion = 6.0 * kAngleNoiseSigma_rad * kAngleNoiseSigma_rad;  // |zeta_N - zeta_0|^2
   std::printf(
       "[nav] Krobka, not rotating: slope %.3e rad^2/s (%.3f of the rotating case), dispersion at "
       "T %.3e rad^2 vs bounded 6 sigma_zeta^2 = %.3e\n",
-      estimate.slope_rad2_per_s, estimate.slope_rad2_per_s / rotating_theory,
-      estimate.dispersion_at_end_rad2, boundary_dispersion);
+      estimate.slope_rad2_per_s, estimate.slope_rad2_per_s / rotating_theory, estimate.dispersion_at_end_rad2,
+      boundary_dispersion);
   EXPECT_LT(std::abs(estimate.slope_rad2_per_s), 4.0 * estimate.standard_error_rad2_per_s);
   EXPECT_LT(std::abs(estimate.slope_rad2_per_s), 0.02 * rotating_theory);
   EXPECT_NEAR(estimate.dispersion_at_end_rad2, boundary_dispersion, 0.15 * boundary_dispersion);

@@ -14,8 +14,7 @@ namespace {
 
 TEST(NavNavigatorApi, UpdateBeforeInitialiseIsAProgrammingError) {
   Navigator navigator;
-  EXPECT_THROW(navigator.update(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.01),
-               std::logic_error);
+  EXPECT_THROW(navigator.update(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.01), std::logic_error);
 }
 
 TEST(NavNavigatorApi, RefusesBadInitialStates) {
@@ -35,8 +34,7 @@ TEST(NavNavigatorApi, RefusesBadIncrementsAndKeepsTheState) {
   Navigator navigator;
   navigator.initialise(NavState());
   EXPECT_THROW(navigator.update(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.0), InputError);
-  EXPECT_THROW(navigator.update(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), -0.01),
-               InputError);
+  EXPECT_THROW(navigator.update(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), -0.01), InputError);
   EXPECT_THROW(navigator.update(Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()),
                                 Eigen::Vector3d::Zero(), 0.01),
                InputError);
@@ -85,8 +83,7 @@ TEST(NavNavigatorApi, RateAveragesBecomeIncrements) {
   EXPECT_TRUE(increment.delta_angle_rad.isApprox(Eigen::Vector3d(1e-3, 2e-3, 3e-3)));
   EXPECT_TRUE(increment.delta_velocity_m_s.isApprox(Eigen::Vector3d(0.0, 0.0, 0.098)));
   EXPECT_EQ(increment.dt_s, 0.01);
-  EXPECT_THROW(increment_from_mean_rates(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.0),
-               InputError);
+  EXPECT_THROW(increment_from_mean_rates(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.0), InputError);
 }
 
 }  // namespace

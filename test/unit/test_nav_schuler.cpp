@@ -27,8 +27,7 @@ StaticScenario heldSphereScenario(double duration_s) {
   scenario.config.vertical.mode = VerticalChannelMode::kHeld;
   scenario.config.vertical.fixed_reference_height_m = 0.0;
   // A yawed body, so the test also covers projecting body errors into ENU.
-  scenario.q_body_to_enu =
-      Eigen::Quaterniond(Eigen::AngleAxisd(30.0 * kDegToRad, Eigen::Vector3d::UnitZ()));
+  scenario.q_body_to_enu = Eigen::Quaterniond(Eigen::AngleAxisd(30.0 * kDegToRad, Eigen::Vector3d::UnitZ()));
   scenario.duration_s = duration_s;
   return scenario;
 }
@@ -38,8 +37,8 @@ double schulerPeriod_s() { return 2.0 * M_PI / schulerRate(); }
 
 // Every sample's horizontal error within tolerance_fraction of the formula's peak over the run.
 void expectHorizontalErrorFollows(const std::vector<ErrorSample>& samples,
-                                  const std::function<Eigen::Vector2d(double)>& formula_m,
-                                  double tolerance_fraction, const char* label) {
+                                  const std::function<Eigen::Vector2d(double)>& formula_m, double tolerance_fraction,
+                                  const char* label) {
   double formula_peak_m = 0.0, measured_peak_m = 0.0, worst_deviation_m = 0.0;
   for (const ErrorSample& s : samples) {
     formula_peak_m = std::max(formula_peak_m, formula_m(s.time_s).norm());
@@ -49,25 +48,19 @@ void expectHorizontalErrorFollows(const std::vector<ErrorSample>& samples,
     const double deviation_m = (s.position_error_enu_m.head<2>() - formula_m(s.time_s)).norm();
     worst_deviation_m = std::max(worst_deviation_m, deviation_m);
     ASSERT_LE(deviation_m, tolerance_fraction * formula_peak_m)
-        << label << " at t = " << s.time_s << " s: simulated ("
-        << s.position_error_enu_m.head<2>().transpose() << ") m, formula ("
-        << formula_m(s.time_s).transpose() << ") m";
+        << label << " at t = " << s.time_s << " s: simulated (" << s.position_error_enu_m.head<2>().transpose()
+        << ") m, formula (" << formula_m(s.time_s).transpose() << ") m";
   }
-  std::printf(
-      "[nav] %s: peak simulated %.1f m, formula %.1f m, worst deviation %.2f m (%.3f %% of peak)\n",
-      label, measured_peak_m, formula_peak_m, worst_deviation_m,
-      100.0 * worst_deviation_m / formula_peak_m);
+  std::printf("[nav] %s: peak simulated %.1f m, formula %.1f m, worst deviation %.2f m (%.3f %% of peak)\n", label,
+              measured_peak_m, formula_peak_m, worst_deviation_m, 100.0 * worst_deviation_m / formula_peak_m);
 }
 
 TEST(NavSchuler, AccelerometerBiasGivesBoundedOneMinusCosine) {
   StaticScenario scenario = heldSphereScenario(1.5 * schulerPeriod_s());
   scenario.accel_bias_body_m_s2 = Eigen::Vector3d(1e-3, 0.0, 0.0);
-  const Eigen::Vector2d bias_enu =
-      (scenario.q_body_to_enu * scenario.accel_bias_body_m_s2).head<2>();
+  const Eigen::Vector2d bias_enu = (scenario.q_body_to_enu * scenario.accel_bias_body_m_s2).head<2>();
   const double w0 = schulerRate();
-  const auto formula = [&](double t) -> Eigen::Vector2d {
-    return bias_enu / (w0 * w0) * (1.0 - std::cos(w0 * t));
-  };
+  const auto formula = [&](double t) -> Eigen::Vector2d { return bias_enu / (w0 * w0) * (1.0 - std::cos(w0 * t)); };
   expectHorizontalErrorFollows(runStaticScenario(scenario), formula, 0.02, "accel bias 1e-3 m/s^2");
   EXPECT_NEAR(2.0 * 1e-3 / (w0 * w0), 1298.9, 0.5);  // the textbook's oracle for the peak
 }
@@ -88,11 +81,9 @@ TEST(NavSchuler, PeriodMeasuredFromVelocityErrorZeroCrossings) {
     }
   }
   ASSERT_GE(crossings_s.size(), 3u) << "expected zero crossings near T0/2, T0, 3 T0/2, 2 T0";
-  const double period_s =
-      2.0 * (crossings_s.back() - crossings_s.front()) / (crossings_s.size() - 1);
-  std::printf(
-      "[nav] Schuler period from %zu zero crossings: %.2f s = %.3f min (2 pi / w0 = %.2f s)\n",
-      crossings_s.size(), period_s, period_s / 60.0, schulerPeriod_s());
+  const double period_s = 2.0 * (crossings_s.back() - crossings_s.front()) / (crossings_s.size() - 1);
+  std::printf("[nav] Schuler period from %zu zero crossings: %.2f s = %.3f min (2 pi / w0 = %.2f s)\n",
+              crossings_s.size(), period_s, period_s / 60.0, schulerPeriod_s());
   EXPECT_NEAR(period_s / 60.0, 84.4, 0.005 * 84.4);
   EXPECT_NEAR(period_s, schulerPeriod_s(), 0.001 * schulerPeriod_s());
 }
@@ -116,11 +107,8 @@ TEST(NavSchuler, InitialVelocityErrorGivesSine) {
   const Eigen::Vector2d velocity_error(1.0, 0.0);
   scenario.initial_velocity_error_enu_m_s << velocity_error, 0.0;
   const double w0 = schulerRate();
-  const auto formula = [&](double t) -> Eigen::Vector2d {
-    return velocity_error * std::sin(w0 * t) / w0;
-  };
-  expectHorizontalErrorFollows(runStaticScenario(scenario), formula, 0.02,
-                               "initial velocity 1 m/s");
+  const auto formula = [&](double t) -> Eigen::Vector2d { return velocity_error * std::sin(w0 * t) / w0; };
+  expectHorizontalErrorFollows(runStaticScenario(scenario), formula, 0.02, "initial velocity 1 m/s");
 }
 
 }  // namespace

@@ -27,9 +27,8 @@ inline EarthModelConfig textbookSphere() {
 
 // Exact increments of an IMU at rest on the Earth: it turns with the Earth and feels normal
 // gravity upwards.
-inline ImuIncrement staticImuIncrement(const EarthModel& earth,
-                                       const Eigen::Quaterniond& q_body_to_enu, double latitude_rad,
-                                       double height_m, double dt_s) {
+inline ImuIncrement staticImuIncrement(const EarthModel& earth, const Eigen::Quaterniond& q_body_to_enu,
+                                       double latitude_rad, double height_m, double dt_s) {
   const Eigen::Quaterniond enu_to_body = q_body_to_enu.conjugate();
   ImuIncrement increment;
   increment.delta_angle_rad = enu_to_body * earth.earth_rate_enu_rad_s(latitude_rad) * dt_s;
@@ -40,21 +39,17 @@ inline ImuIncrement staticImuIncrement(const EarthModel& earth,
 }
 
 // (east, north, up) position error in metres of an estimate against the truth.
-inline Eigen::Vector3d positionErrorEnu_m(const EarthModel& earth, const NavState& estimate,
-                                          const NavState& truth) {
+inline Eigen::Vector3d positionErrorEnu_m(const EarthModel& earth, const NavState& estimate, const NavState& truth) {
   const double latitude = truth.latitude_rad;
-  const double longitude_error =
-      std::remainder(estimate.longitude_rad - truth.longitude_rad, 2.0 * M_PI);
+  const double longitude_error = std::remainder(estimate.longitude_rad - truth.longitude_rad, 2.0 * M_PI);
   return Eigen::Vector3d(
-      longitude_error * (earth.prime_vertical_radius_m(latitude) + truth.height_m) *
-          std::cos(latitude),
+      longitude_error * (earth.prime_vertical_radius_m(latitude) + truth.height_m) * std::cos(latitude),
       (estimate.latitude_rad - latitude) * (earth.meridian_radius_m(latitude) + truth.height_m),
       estimate.height_m - truth.height_m);
 }
 
 // Small rotation delta (nav axes) with estimate = exp(delta) * truth.
-inline Eigen::Vector3d attitudeError_rad(const Eigen::Quaterniond& estimate,
-                                         const Eigen::Quaterniond& truth) {
+inline Eigen::Vector3d attitudeError_rad(const Eigen::Quaterniond& estimate, const Eigen::Quaterniond& truth) {
   return rotation_vector_from_quaternion(estimate * truth.conjugate());
 }
 
@@ -92,8 +87,8 @@ inline std::vector<ErrorSample> runStaticScenario(const StaticScenario& scenario
   initial.height_m += scenario.initial_height_error_m;
   navigator.initialise(initial);
 
-  ImuIncrement increment = staticImuIncrement(navigator.earth(), scenario.q_body_to_enu,
-                                              truth.latitude_rad, truth.height_m, scenario.dt_s);
+  ImuIncrement increment =
+      staticImuIncrement(navigator.earth(), scenario.q_body_to_enu, truth.latitude_rad, truth.height_m, scenario.dt_s);
   increment.delta_angle_rad += scenario.gyro_bias_body_rad_s * scenario.dt_s;
   increment.delta_velocity_m_s += scenario.accel_bias_body_m_s2 * scenario.dt_s;
 

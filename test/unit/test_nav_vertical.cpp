@@ -31,16 +31,15 @@ StaticScenario sphereScenario(VerticalChannelMode mode, double duration_s) {
 double schulerRate() { return EarthModel(test_support::textbookSphere()).schuler_rate_rad_s(); }
 
 // Relative agreement with a closed form at every sample; returns the worst relative deviation.
-double expectHeightErrorFollows(const std::vector<ErrorSample>& samples,
-                                const std::function<double(double)>& formula_m, double tolerance) {
+double expectHeightErrorFollows(const std::vector<ErrorSample>& samples, const std::function<double(double)>& formula_m,
+                                double tolerance) {
   double worst = 0.0;
   for (const ErrorSample& s : samples) {
     const double expected = formula_m(s.time_s);
     const double relative = std::abs(s.position_error_enu_m.z() - expected) / std::abs(expected);
     worst = std::max(worst, relative);
-    EXPECT_LE(relative, tolerance)
-        << "t = " << s.time_s << " s: simulated " << s.position_error_enu_m.z() << " m, formula "
-        << expected << " m";
+    EXPECT_LE(relative, tolerance) << "t = " << s.time_s << " s: simulated " << s.position_error_enu_m.z()
+                                   << " m, formula " << expected << " m";
   }
   return worst;
 }
@@ -55,8 +54,8 @@ TEST(NavVertical, FreeHeightErrorGrowsAsCosh) {
   std::printf(
       "[nav] free vertical, 10 m initial error: %.1f m after %.0f s (formula %.1f m), worst "
       "deviation %.3f %%; e-folding time %.1f s\n",
-      samples.back().position_error_enu_m.z(), samples.back().time_s,
-      10.0 * std::cosh(rate * samples.back().time_s), 100.0 * worst, 1.0 / rate);
+      samples.back().position_error_enu_m.z(), samples.back().time_s, 10.0 * std::cosh(rate * samples.back().time_s),
+      100.0 * worst, 1.0 / rate);
 }
 
 TEST(NavVertical, FreeAccelerometerBiasGrowsAsCoshMinusOne) {
@@ -66,12 +65,8 @@ TEST(NavVertical, FreeAccelerometerBiasGrowsAsCoshMinusOne) {
   const double w0 = schulerRate();
   const double worst = expectHeightErrorFollows(
       runStaticScenario(scenario),
-      [&](double t) {
-        return bias_m_s2 / (2.0 * w0 * w0) * (std::cosh(std::sqrt(2.0) * w0 * t) - 1.0);
-      },
-      0.02);
-  std::printf("[nav] free vertical, 1e-4 m/s^2 up bias: worst deviation from closed form %.3f %%\n",
-              100.0 * worst);
+      [&](double t) { return bias_m_s2 / (2.0 * w0 * w0) * (std::cosh(std::sqrt(2.0) * w0 * t) - 1.0); }, 0.02);
+  std::printf("[nav] free vertical, 1e-4 m/s^2 up bias: worst deviation from closed form %.3f %%\n", 100.0 * worst);
 }
 
 TEST(NavVertical, ConstantGravityLawHasNoDivergence) {
@@ -95,8 +90,7 @@ TEST(NavVertical, HeldChannelStaysWithinDerivedBound) {
   const double bound_m = 10.0 + std::abs(steady_state_m);
   double worst_m = 0.0;
   const std::vector<ErrorSample> samples = runStaticScenario(scenario);
-  for (const ErrorSample& s : samples)
-    worst_m = std::max(worst_m, std::abs(s.position_error_enu_m.z()));
+  for (const ErrorSample& s : samples) worst_m = std::max(worst_m, std::abs(s.position_error_enu_m.z()));
   std::printf(
       "[nav] held vertical, 10 m initial error + 1e-3 m/s^2 bias: max |dh| %.3f m <= bound %.3f m, "
       "final %.4f m (steady state -b/(k2+2w0^2) = %.4f m)\n",
@@ -115,8 +109,8 @@ TEST(NavVertical, ReferenceFedLaterPullsFreeChannelBack) {
   NavState initial = truth;
   initial.height_m = 10.0;
   navigator.initialise(initial);
-  const ImuIncrement increment = test_support::staticImuIncrement(
-      navigator.earth(), truth.q_body_to_enu, truth.latitude_rad, 0.0, 1.0);
+  const ImuIncrement increment =
+      test_support::staticImuIncrement(navigator.earth(), truth.q_body_to_enu, truth.latitude_rad, 0.0, 1.0);
   for (int step = 0; step < 600; ++step) navigator.update(increment);
   const double free_error_m = navigator.state().height_m;
   EXPECT_GT(free_error_m, 10.0 * std::cosh(std::sqrt(2.0) * schulerRate() * 600.0) * 0.98);

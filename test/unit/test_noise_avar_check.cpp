@@ -19,15 +19,14 @@ namespace {
 // Power-law exponent of the frequency PSD matching the local AVAR slope mu (AVAR ~ tau^mu),
 // mu = -alpha - 1; slopes steeper than -1.5 are white phase (alpha = 2).
 int local_alpha(const std::function<double(double)>& expected, double tau) {
-  const double mu = std::log(expected(tau * std::sqrt(2.0)) / expected(tau / std::sqrt(2.0))) /
-                    std::log(2.0);
+  const double mu = std::log(expected(tau * std::sqrt(2.0)) / expected(tau / std::sqrt(2.0))) / std::log(2.0);
   if (mu < -1.5) return 2;
   return std::max(-2, std::min(1, static_cast<int>(std::lround(-mu - 1.0))));
 }
 }  // namespace
 
-double exact_overlapping_edf(const std::function<double(long)>& structure, int m,
-                             std::size_t rate_count, long correlation_samples) {
+double exact_overlapping_edf(const std::function<double(long)>& structure, int m, std::size_t rate_count,
+                             long correlation_samples) {
   const long terms = static_cast<long>(rate_count) + 1 - 2L * m;  // M second differences
   const double weights[3] = {1.0, -2.0, 1.0};
   auto gamma = [&](long j) {
@@ -48,16 +47,15 @@ double exact_overlapping_edf(const std::function<double(long)>& structure, int m
 
 EdfOfFactor power_law_edf(const std::function<double(double)>& stochastic, double tau0) {
   return [=](int m, std::size_t count) {
-    return allan::equivalent_degrees_of_freedom(allan::Statistic::kOverlappingAllan,
-                                                local_alpha(stochastic, m * tau0), m,
-                                                static_cast<long long>(count + 1));
+    return allan::equivalent_degrees_of_freedom(allan::Statistic::kOverlappingAllan, local_alpha(stochastic, m * tau0),
+                                                m, static_cast<long long>(count + 1));
   };
 }
 
-EdfOfFactor stationary_angle_edf(const std::function<double(double)>& covariance, double tau0,
-                                 long correlation_samples, int max_factor) {
-  auto structure = std::make_shared<std::vector<double>>(4 * static_cast<std::size_t>(max_factor) +
-                                                         correlation_samples + 1);
+EdfOfFactor stationary_angle_edf(const std::function<double(double)>& covariance, double tau0, long correlation_samples,
+                                 int max_factor) {
+  auto structure =
+      std::make_shared<std::vector<double>>(4 * static_cast<std::size_t>(max_factor) + correlation_samples + 1);
   const double c0 = covariance(0.0);
   for (std::size_t j = 0; j < structure->size(); ++j) (*structure)[j] = 2.0 * (c0 - covariance(j * tau0));
   return [structure, correlation_samples](int m, std::size_t count) {
@@ -87,9 +85,8 @@ std::vector<double> collect(std::size_t count, const std::function<double()>& sa
   return values;
 }
 
-AvarCheck check_avar(const std::vector<double>& rates, double tau0, 
-                     const std::function<double(double)>& expected, int m_min, int m_max,
-                     double family_confidence, const EdfOfFactor& exact_edf) {
+AvarCheck check_avar(const std::vector<double>& rates, double tau0, const std::function<double(double)>& expected,
+                     int m_min, int m_max, double family_confidence, const EdfOfFactor& exact_edf) {
   // Remove the mean before integrating so the phase keeps its precision (doc/models.md).
   const double mean = std::accumulate(rates.begin(), rates.end(), 0.0) / rates.size();
   std::vector<double> centred(rates.size());
@@ -107,9 +104,8 @@ AvarCheck check_avar(const std::vector<double>& rates, double tau0,
     const double truth = expected(tau);
     const int alpha = local_alpha(expected, tau);
     const double edf = exact_edf ? exact_edf(m, rates.size())
-                                 : allan::equivalent_degrees_of_freedom(
-                                       allan::Statistic::kOverlappingAllan, alpha, m,
-                                       static_cast<long long>(phase.size()));
+                                 : allan::equivalent_degrees_of_freedom(allan::Statistic::kOverlappingAllan, alpha, m,
+                                                                        static_cast<long long>(phase.size()));
     const boost::math::chi_squared distribution(edf);
     const double low = boost::math::quantile(distribution, check.per_point_level / 2.0) / edf;
     const double high = boost::math::quantile(distribution, 1.0 - check.per_point_level / 2.0) / edf;
@@ -122,8 +118,8 @@ AvarCheck check_avar(const std::vector<double>& rates, double tau0,
     }
     check.rejected_points += rejected ? 1 : 0;
     char line[200];
-    std::snprintf(line, sizeof line, "tau %10.4g s  ratio %8.4f  bounds [%6.3f, %6.3f]  edf %9.1f  alpha %2d%s\n",
-                  tau, ratio, low, high, edf, alpha, rejected ? "  REJECTED" : "");
+    std::snprintf(line, sizeof line, "tau %10.4g s  ratio %8.4f  bounds [%6.3f, %6.3f]  edf %9.1f  alpha %2d%s\n", tau,
+                  ratio, low, high, edf, alpha, rejected ? "  REJECTED" : "");
     check.table += line;
   }
   return check;

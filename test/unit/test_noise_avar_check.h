@@ -26,8 +26,8 @@ using EdfOfFactor = std::function<double(int m, std::size_t rate_count)>;
 
 // rates: interval averages every tau0_s. Averaging factors 1, 2, 4, ... from m_min to m_max.
 AvarCheck check_avar(const std::vector<double>& rates, double tau0_s,
-                     const std::function<double(double tau_s)>& expected_avar, int m_min,
-                     int m_max, double family_confidence = 0.997, const EdfOfFactor& edf = {});
+                     const std::function<double(double tau_s)>& expected_avar, int m_min, int m_max,
+                     double family_confidence = 0.997, const EdfOfFactor& edf = {});
 
 // Exact EDF of the overlapping AVAR at factor m from rate_count samples of a Gaussian process
 // whose phase x (integrated rate) has the structure function V(j) = E[(x_{k+j} - x_k)^2] at lags
@@ -35,8 +35,8 @@ AvarCheck check_avar(const std::vector<double>& rates, double tau0_s,
 // Var = 2 sum_{|j|<M} (M - |j|) gamma(j)^2, gamma(j) = Cov(d_k, d_{k+j}) =
 // -1/2 sum_{p,q} w_p w_q V(|j + (p - q) m|), w = (1, -2, 1); EDF = 2 mean^2 / Var. gamma(j) is
 // taken as zero beyond |j| = 2m + correlation_samples.
-double exact_overlapping_edf(const std::function<double(long lag)>& structure, int m,
-                             std::size_t rate_count, long correlation_samples);
+double exact_overlapping_edf(const std::function<double(long lag)>& structure, int m, std::size_t rate_count,
+                             long correlation_samples);
 
 // AVAR = 4 int_0^f_max S(f) sin^4(pi f tau) / (pi f tau)^2 df (eq. 5.1, S two-sided) by
 // Gauss-Kronrod over each period 1 / tau of the kernel (relative tolerance 1e-12 per piece).
@@ -50,8 +50,8 @@ EdfOfFactor power_law_edf(const std::function<double(double tau_s)>& stochastic_
 
 // exact_overlapping_edf for a rate that is the derivative of a stationary angle with covariance
 // C (V(j) = 2 (C(0) - C(j tau0)), tabulated once up to the lags factors <= max_factor need).
-EdfOfFactor stationary_angle_edf(const std::function<double(double lag_s)>& angle_covariance,
-                                 double tau0_s, long correlation_samples, int max_factor);
+EdfOfFactor stationary_angle_edf(const std::function<double(double lag_s)>& angle_covariance, double tau0_s,
+                                 long correlation_samples, int max_factor);
 
 // Runs `sample` n times and collects the values.
 std::vector<double> collect(std::size_t count, const std::function<double()>& sample);

@@ -46,8 +46,7 @@ TEST(NoiseAvarPower, PointSamplesOfTheSameMarkovProcessRejected) {
   EXPECT_FALSE(check.passed()) << check.table;
   EXPECT_GE(check.rejected_points, 3) << check.table;
   std::printf("[power] point samples: %d of %d taus rejected, worst normalised deviation %.1f (ratio %.3f)\n",
-              check.rejected_points, check.point_count, check.worst_normalised_deviation,
-              check.worst_ratio);
+              check.rejected_points, check.point_count, check.worst_normalised_deviation, check.worst_ratio);
 }
 
 }  // namespace

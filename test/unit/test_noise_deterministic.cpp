@@ -39,8 +39,9 @@ TEST(NoiseDeterministic, SinusoidAvarMatchesEquation58) {
   const auto phase = phase_of(sinusoid, 200000, tau0);
   for (int m : {1, 10, 50, 100, 125, 200, 300, 700}) {
     const double tau = m * tau0;
-    EXPECT_NEAR(allan::overlapping_allan_variance(phase, tau0, m),
-                sinusoid_avar(amplitude, frequency, tau), 5e-3 * amplitude * amplitude) << tau;
+    EXPECT_NEAR(allan::overlapping_allan_variance(phase, tau0, m), sinusoid_avar(amplitude, frequency, tau),
+                5e-3 * amplitude * amplitude)
+        << tau;
   }
 }
 
@@ -59,14 +60,22 @@ TEST(NoiseAnalyticAvar, MarkovFlickerAndZeroDcAgainstNumericalIntegral) {
   for (double tau : {0.03, 0.3, 3.0}) {
     const double q = 1e-2, tc = 0.1;
     EXPECT_NEAR(test::numerical_avar([&](double f) { return q * q * tc * tc / (1.0 + std::pow(2 * kPi * f * tc, 2)); },
-                               tau, 200.0) / markov_avar(q, tc, tau), 1.0, 2e-3) << tau;
+                                     tau, 200.0) /
+                    markov_avar(q, tc, tau),
+                1.0, 2e-3)
+        << tau;
     const double b = 1e-3, f0 = 5.0;
     EXPECT_NEAR(test::numerical_avar([&](double f) { return f <= f0 ? b * b / (2 * kPi * f) : 0.0; }, tau, f0) /
-                    bias_instability_avar(b, f0, tau), 1.0, 1e-6) << tau;
+                    bias_instability_avar(b, f0, tau),
+                1.0, 1e-6)
+        << tau;
     for (double n : {1.0, 2.0, 3.0, 2.5}) {
       const double alpha = 1e-6, beta = 0.2;
-      EXPECT_NEAR(test::numerical_avar([&](double f) { return alpha * std::pow(f, n) * std::exp(-beta * f); }, tau, 300.0) /
-                      zero_dc_family_avar(n, alpha, beta, tau), 1.0, 1e-6) << "n " << n << " tau " << tau;
+      EXPECT_NEAR(
+          test::numerical_avar([&](double f) { return alpha * std::pow(f, n) * std::exp(-beta * f); }, tau, 300.0) /
+              zero_dc_family_avar(n, alpha, beta, tau),
+          1.0, 1e-6)
+          << "n " << n << " tau " << tau;
     }
   }
 }

@@ -31,10 +31,9 @@ TEST(NoiseFamiliesAnalytic, ExponentialRowAgainstIntegral) {
   for (double n : {1.5, 2.0, 3.0, 4.5}) {
     const double f_max = (60.0 + 5.0 * n) / beta;
     for (double tau : {0.02, 0.3, 6.0}) {
-      const double numeric = test::numerical_avar(
-          [&](double f) { return alpha * std::pow(f, n) * std::exp(-beta * f); }, tau, f_max);
-      EXPECT_NEAR(numeric / zero_dc_family_avar(n, alpha, beta, tau), 1.0, kRelative)
-          << "n " << n << " tau " << tau;
+      const double numeric =
+          test::numerical_avar([&](double f) { return alpha * std::pow(f, n) * std::exp(-beta * f); }, tau, f_max);
+      EXPECT_NEAR(numeric / zero_dc_family_avar(n, alpha, beta, tau), 1.0, kRelative) << "n " << n << " tau " << tau;
     }
   }
 }
@@ -48,8 +47,7 @@ TEST(NoiseFamiliesAnalytic, CosineRowAgainstIntegral) {
       const double f_max = (60.0 + 5.0 * n) / beta;
       for (double tau : {0.02, 0.3, 6.0}) {
         const double numeric = test::numerical_avar(
-            [&](double f) { return alpha * std::pow(f, n) * std::exp(-beta * f) * std::cos(c * f); },
-            tau, f_max);
+            [&](double f) { return alpha * std::pow(f, n) * std::exp(-beta * f) * std::cos(c * f); }, tau, f_max);
         EXPECT_NEAR(numeric, zero_dc_cosine_avar(n, alpha, beta, c, tau),
                     kRelative * zero_dc_family_avar(n, alpha, beta, tau))
             << "n " << n << " c " << c << " tau " << tau;
@@ -61,10 +59,9 @@ TEST(NoiseFamiliesAnalytic, CosineRowAgainstIntegral) {
   const double n = 1.0, c = 0.3, tau = 0.3;
   using Complex = std::complex<double>;
   auto p = [&](double omega) { return std::pow(Complex(beta, -omega), -1.0 - n).real(); };
-  const double printed =
-      4.0 * alpha / (kPi * kPi * tau * tau) * std::tgamma(1.0 + n) / 32.0 *
-      (12.0 * p(c) + 2.0 * p(c - 4 * kPi * tau) + 2.0 * p(c + 4 * kPi * tau) -
-       8.0 * p(c - 2 * kPi * tau) - 8.0 * p(c + 2 * kPi * tau));
+  const double printed = 4.0 * alpha / (kPi * kPi * tau * tau) * std::tgamma(1.0 + n) / 32.0 *
+                         (12.0 * p(c) + 2.0 * p(c - 4 * kPi * tau) + 2.0 * p(c + 4 * kPi * tau) -
+                          8.0 * p(c - 2 * kPi * tau) - 8.0 * p(c + 2 * kPi * tau));
   EXPECT_NEAR(printed / zero_dc_cosine_avar(n + 2.0, alpha, beta, c, tau), 1.0, 1e-12);
 }
 
@@ -75,10 +72,9 @@ TEST(NoiseFamiliesAnalytic, GaussianRowsAgainstIntegral) {
   // large-argument expansion.
   for (double n : {1.5, 2.0, 3.0, 4.0, 5.5}) {
     for (double tau : {0.01, 0.1, 0.2, 0.25, 3.0}) {
-      const double numeric = test::numerical_avar(
-          [&](double f) { return alpha * std::pow(f, n) * std::exp(-beta * f * f); }, tau, f_max);
-      EXPECT_NEAR(numeric / zero_dc_gaussian_avar(n, alpha, beta, tau), 1.0, kRelative)
-          << "n " << n << " tau " << tau;
+      const double numeric =
+          test::numerical_avar([&](double f) { return alpha * std::pow(f, n) * std::exp(-beta * f * f); }, tau, f_max);
+      EXPECT_NEAR(numeric / zero_dc_gaussian_avar(n, alpha, beta, tau), 1.0, kRelative) << "n " << n << " tau " << tau;
     }
   }
 }
@@ -89,9 +85,8 @@ TEST(NoiseFamiliesAnalytic, HighPassWhiteAgainstIntegral) {
   const double alpha = 1e-6, beta = 0.5, f_max = 1000.0 * beta;
   for (double tau : {0.03, 0.3, 3.0, 30.0}) {
     const double numeric =
-        alpha / tau + test::numerical_avar(
-                          [&](double f) { return -alpha * beta * beta / (beta * beta + f * f); },
-                          tau, f_max);
+        alpha / tau +
+        test::numerical_avar([&](double f) { return -alpha * beta * beta / (beta * beta + f * f); }, tau, f_max);
     // The Lorentzian's tail beyond f_max adds at most 4 alpha beta^2 / (3 pi^2 tau^2 f_max^3).
     const double tail = 4.0 * alpha * beta * beta / (3.0 * kPi * kPi * tau * tau * std::pow(f_max, 3));
     EXPECT_NEAR(numeric, high_pass_white_avar(alpha, beta, tau),
@@ -113,20 +108,18 @@ TEST(NoiseFamiliesAnalytic, PrintedTableRowsAndTheirMisprints) {
     const double a = beta * beta + 4.0 * kPi * kPi * tau * tau;
     const double b = beta * beta + 16.0 * kPi * kPi * tau * tau;
     // Table 7.2 row 2 (f^2 e^{-beta f}) with alpha, not the printed alpha^2.
-    EXPECT_NEAR(96.0 * alpha * kPi * kPi * tau * tau / (beta * a * b) /
-                    zero_dc_family_avar(2.0, alpha, beta, tau),
-                1.0, 1e-12);
+    EXPECT_NEAR(96.0 * alpha * kPi * kPi * tau * tau / (beta * a * b) / zero_dc_family_avar(2.0, alpha, beta, tau), 1.0,
+                1e-12);
     // Table 7.2 row 3 (f^3 e^{-beta f}): the correct numerator has 64 pi^4 tau^4, not 60.
-    const double correct = 96.0 * alpha * kPi * kPi * tau * tau *
-                           (5 * std::pow(beta, 4) + 60 * beta * beta * kPi * kPi * tau * tau +
-                            64 * std::pow(kPi * tau, 4)) /
-                           (beta * beta * a * a * b * b);
+    const double correct =
+        96.0 * alpha * kPi * kPi * tau * tau *
+        (5 * std::pow(beta, 4) + 60 * beta * beta * kPi * kPi * tau * tau + 64 * std::pow(kPi * tau, 4)) /
+        (beta * beta * a * a * b * b);
     EXPECT_NEAR(correct / zero_dc_family_avar(3.0, alpha, beta, tau), 1.0, 1e-12);
     // Table 7.2 row 4 (f^2 e^{-beta f^2}) and row 5 (the Dawson row, f^3 e^{-beta f^2}).
     const double bg = 0.01, x = kPi * tau / std::sqrt(bg);
     EXPECT_NEAR(alpha * (3.0 + std::exp(-4.0 * x * x) - 4.0 * std::exp(-x * x)) /
-                    (4.0 * std::sqrt(bg) * std::pow(kPi, 1.5) * tau * tau) /
-                    zero_dc_gaussian_avar(2.0, alpha, bg, tau),
+                    (4.0 * std::sqrt(bg) * std::pow(kPi, 1.5) * tau * tau) / zero_dc_gaussian_avar(2.0, alpha, bg, tau),
                 1.0, 1e-12);
     EXPECT_NEAR(alpha / (std::pow(bg, 1.5) * kPi * tau) * (2.0 * dawson(x) - dawson(2.0 * x)) /
                     zero_dc_gaussian_avar(3.0, alpha, bg, tau),
@@ -137,10 +130,10 @@ TEST(NoiseFamiliesAnalytic, PrintedTableRowsAndTheirMisprints) {
   const double tau = 100.0;
   const double a = beta * beta + 4.0 * kPi * kPi * tau * tau;
   const double b = beta * beta + 16.0 * kPi * kPi * tau * tau;
-  const double printed = 96.0 * alpha * kPi * kPi * tau * tau *
-                         (5 * std::pow(beta, 4) + 60 * beta * beta * kPi * kPi * tau * tau +
-                          60 * std::pow(kPi * tau, 4)) /
-                         (beta * beta * a * a * b * b);
+  const double printed =
+      96.0 * alpha * kPi * kPi * tau * tau *
+      (5 * std::pow(beta, 4) + 60 * beta * beta * kPi * kPi * tau * tau + 60 * std::pow(kPi * tau, 4)) /
+      (beta * beta * a * a * b * b);
   EXPECT_NEAR(zero_dc_family_avar(3.0, alpha, beta, tau) / printed, 16.0 / 15.0, 1e-6);
 }
 

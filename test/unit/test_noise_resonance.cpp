@@ -29,19 +29,16 @@ std::vector<double> generate(NoiseProcess& process, std::size_t count, double ta
   return test::collect(count, [&]() { return process.next_interval_average(tau0 * k++, tau0); });
 }
 
-test::EdfOfFactor angle_edf(const std::function<double(double)>& covariance, double tau0,
-                            long correlation_samples) {
+test::EdfOfFactor angle_edf(const std::function<double(double)>& covariance, double tau0, long correlation_samples) {
   return test::stationary_angle_edf(covariance, tau0, correlation_samples, kMaxFactor);
 }
 
-void expect_avar_matches(const std::vector<double>& rates, double tau0,
-                         const std::function<double(double)>& expected,
+void expect_avar_matches(const std::vector<double>& rates, double tau0, const std::function<double(double)>& expected,
                          const test::EdfOfFactor& edf, const char* what) {
   const test::AvarCheck check = test::check_avar(rates, tau0, expected, 1, kMaxFactor, 0.997, edf);
   EXPECT_TRUE(check.passed()) << what << "\n" << check.table;
-  std::printf("[avar] %-36s points %2d  worst |ratio-1|/sqrt(2/edf) = %.2f (ratio %.4f)  rejected %d\n",
-              what, check.point_count, check.worst_normalised_deviation, check.worst_ratio,
-              check.rejected_points);
+  std::printf("[avar] %-36s points %2d  worst |ratio-1|/sqrt(2/edf) = %.2f (ratio %.4f)  rejected %d\n", what,
+              check.point_count, check.worst_normalised_deviation, check.worst_ratio, check.rejected_points);
 }
 
 TEST(NoiseResonance, ExactEdfOfWhiteNoise) {
@@ -53,8 +50,8 @@ TEST(NoiseResonance, ExactEdfOfWhiteNoise) {
               4.0 * terms * terms / (4.0 * terms + 2.0 * (terms - 1)), 1e-6 * terms);
   for (int m : {16, 1024}) {
     const double exact = test::exact_overlapping_edf([](long j) { return double(j); }, m, kSamples, 0);
-    const double power_law = allan::equivalent_degrees_of_freedom(
-        allan::Statistic::kOverlappingAllan, 0, m, static_cast<long long>(kSamples + 1));
+    const double power_law = allan::equivalent_degrees_of_freedom(allan::Statistic::kOverlappingAllan, 0, m,
+                                                                  static_cast<long long>(kSamples + 1));
     EXPECT_NEAR(exact / power_law, 1.0, 0.1) << m;
   }
 }
@@ -112,8 +109,8 @@ TEST(NoiseResonance, PointSamplesOfTheRateRejected) {
       rates, tau0, [&](double tau) { return resonance_avar(1e-3, 20.0, 1.5, tau); }, 1, kMaxFactor, 0.997,
       angle_edf([&](double u) { return sigma2 * resonance_angle_correlation(20.0, 1.5, u); }, tau0, 800));
   EXPECT_FALSE(check.passed()) << check.table;
-  std::printf("[power] resonance point samples: %d of %d taus rejected (worst ratio %.3f)\n",
-              check.rejected_points, check.point_count, check.worst_ratio);
+  std::printf("[power] resonance point samples: %d of %d taus rejected (worst ratio %.3f)\n", check.rejected_points,
+              check.point_count, check.worst_ratio);
 }
 
 TEST(NoiseResonance, SpectralPeakAtTheNaturalFrequencyWithTheGivenWidth) {
@@ -166,26 +163,25 @@ TEST(NoiseResonance, SpectralPeakAtTheNaturalFrequencyWithTheGivenWidth) {
   const double fn_hat = std::pow(d / a, 0.25);
   const double w_hat = std::sqrt(b / a + 2.0 * std::sqrt(d / a));
   Eigen::Vector3d grad_f(-0.25 * fn_hat / a, 0.0, 0.25 * fn_hat / d);
-  Eigen::Vector3d grad_w(-(b / (a * a) + std::sqrt(d) * std::pow(a, -1.5)) / (2 * w_hat),
-                         1.0 / (2 * w_hat * a), 1.0 / (2 * w_hat * std::sqrt(a * d)));
+  Eigen::Vector3d grad_w(-(b / (a * a) + std::sqrt(d) * std::pow(a, -1.5)) / (2 * w_hat), 1.0 / (2 * w_hat * a),
+                         1.0 / (2 * w_hat * std::sqrt(a * d)));
   const double sigma_f = std::sqrt(grad_f.dot(covariance * grad_f));
   const double sigma_w = std::sqrt(grad_w.dot(covariance * grad_w));
-  std::printf("[psd] peak %.4f +- %.4f Hz (truth %.1f), width %.4f +- %.4f Hz (truth %.2f), %ld bins, "
-              "resolution %.4f Hz\n", fn_hat, sigma_f, fn, w_hat, sigma_w, width, static_cast<long>(n),
-              resolution);
+  std::printf(
+      "[psd] peak %.4f +- %.4f Hz (truth %.1f), width %.4f +- %.4f Hz (truth %.2f), %ld bins, "
+      "resolution %.4f Hz\n",
+      fn_hat, sigma_f, fn, w_hat, sigma_w, width, static_cast<long>(n), resolution);
   EXPECT_LT(std::abs(fn_hat - fn), 4.0 * sigma_f);
   EXPECT_LT(std::abs(w_hat - width), 4.0 * sigma_w);
   EXPECT_LT(sigma_w, 0.02 * width);  // the test resolves the width to better than 2 %
 }
 
 TEST(NoiseResonance, ReproduciblePerSeed) {
-  for (const ProcessParameters& parameters :
-       {ProcessParameters{ResonanceParameters{1e-3, 20.0, 1.5}},
-        ProcessParameters{HighPassWhiteParameters{1e-3, 0.5}}}) {
+  for (const ProcessParameters& parameters : {ProcessParameters{ResonanceParameters{1e-3, 20.0, 1.5}},
+                                              ProcessParameters{HighPassWhiteParameters{1e-3, 0.5}}}) {
     auto first = make_noise_process(parameters, 7), again = make_noise_process(parameters, 7),
          other = make_noise_process(parameters, 8);
-    const auto a = generate(*first, 1000, 0.01), b = generate(*again, 1000, 0.01),
-               c = generate(*other, 1000, 0.01);
+    const auto a = generate(*first, 1000, 0.01), b = generate(*again, 1000, 0.01), c = generate(*other, 1000, 0.01);
     EXPECT_EQ(a, b);
     EXPECT_NE(a, c);
   }
@@ -207,8 +203,7 @@ TEST(NoiseHighPassWhite, AvarMatchesTable73) {
   // white: relative standard error sqrt(2 / N); 5 of them allowed).
   double sum_squares = 0.0;
   for (double r : rates) sum_squares += r * r;
-  EXPECT_NEAR(sum_squares / rates.size() / process->sample_variance(tau0), 1.0,
-              5.0 * std::sqrt(2.0 / rates.size()));
+  EXPECT_NEAR(sum_squares / rates.size() / process->sample_variance(tau0), 1.0, 5.0 * std::sqrt(2.0 / rates.size()));
 }
 
 }  // namespace

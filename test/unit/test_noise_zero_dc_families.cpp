@@ -35,16 +35,16 @@ void expect_generator_matches(ZeroDcNoise& process, const std::function<double(d
   const test::AvarCheck check = test::check_avar(rates, kTau0, closed_form, 1, kMaxFactor, 0.997, edf);
   EXPECT_TRUE(check.passed()) << what << "\n" << check.table;
   std::printf("[zero-dc] %-44s taps %6zu  design error %.1e  worst |ratio-1|/sqrt(2/edf) = %.2f  rejected %d\n",
-              what.c_str(), process.tap_count(), design_error, check.worst_normalised_deviation,
-              check.rejected_points);
+              what.c_str(), process.tap_count(), design_error, check.worst_normalised_deviation, check.rejected_points);
 }
 
 TEST(NoiseZeroDcFamilies, ExponentialRowOtherExponents) {
   for (double n : {1.5, 3.0, 4.5}) {
     const double alpha = 1e-6, beta = 0.05;
     ZeroDcNoise process(ZeroDcFamilyParameters{n, alpha, beta}, NormalStream(60 + static_cast<int>(2 * n)));
-    expect_generator_matches(process, [&](double u) { return zero_dc_family_angle_covariance(n, alpha, beta, u); },
-                             "alpha f^" + std::to_string(n).substr(0, 3) + " exp(-beta f)");
+    expect_generator_matches(
+        process, [&](double u) { return zero_dc_family_angle_covariance(n, alpha, beta, u); },
+        "alpha f^" + std::to_string(n).substr(0, 3) + " exp(-beta f)");
   }
 }
 
@@ -65,15 +65,15 @@ TEST(NoiseZeroDcFamilies, GaussianRowsIncludingTheDawsonRow) {
   for (double n : {2.0, 3.0, 2.5}) {
     const double alpha = 1e-6, beta = 4e-4;  // s^2: the PSD falls off near 50 Hz
     ZeroDcNoise process(ZeroDcGaussianParameters{n, alpha, beta}, NormalStream(70 + static_cast<int>(2 * n)));
-    expect_generator_matches(process, [&](double u) { return zero_dc_gaussian_angle_covariance(n, alpha, beta, u); },
-                             "alpha f^" + std::to_string(n).substr(0, 3) + " exp(-beta f^2)");
+    expect_generator_matches(
+        process, [&](double u) { return zero_dc_gaussian_angle_covariance(n, alpha, beta, u); },
+        "alpha f^" + std::to_string(n).substr(0, 3) + " exp(-beta f^2)");
   }
 }
 
 TEST(NoiseZeroDcFamilies, InvalidParametersRefused) {
   EXPECT_THROW(ZeroDcNoise(ZeroDcFamilyParameters{1.0, 1e-6, 0.05}, NormalStream(1)), std::invalid_argument);
-  EXPECT_THROW(ZeroDcNoise(ZeroDcFamilyParameters{2.0, 1e-6, 0.05, 0.3, 1.5}, NormalStream(1)),
-               std::invalid_argument);
+  EXPECT_THROW(ZeroDcNoise(ZeroDcFamilyParameters{2.0, 1e-6, 0.05, 0.3, 1.5}, NormalStream(1)), std::invalid_argument);
   EXPECT_THROW(ZeroDcNoise(ZeroDcGaussianParameters{2.0, 1e-6, 0.0}, NormalStream(1)), std::invalid_argument);
 }
 

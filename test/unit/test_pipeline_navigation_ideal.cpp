@@ -49,7 +49,7 @@ imu_lab::io::TruthRecord truth_record(const imu_lab::emulator::TruthSample& trut
 
 // The navigate tool's settings for --no-align on a bag with truth: everything from the first sample.
 imu_lab::pipeline::NavigationSettings settings_from_truth(const imu_lab::emulator::ScenarioConfig& scenario,
-                                                        const imu_lab::emulator::TruthSample& truth) {
+                                                          const imu_lab::emulator::TruthSample& truth) {
   imu_lab::pipeline::NavigationSettings settings;
   settings.align = false;
   settings.initial_attitude_body_to_enu = truth.attitude_body_to_enu;
@@ -81,7 +81,7 @@ TEST_P(NavigateIdealImu, StartedFromTheTruthEndsWithin5cmWithEitherInput) {
   const auto settings = settings_from_truth(scenario, first.truth);
   NavigationSession rates(settings), increments(settings);
   const imu_lab::nav::LocalEnuFrame world(settings.navigator.earth, settings.latitude_rad, settings.longitude_rad,
-                                             settings.height_m);
+                                          settings.height_m);
   const auto to_increment = [&](const imu_lab::emulator::EmulatedSample& s) {
     imu_lab::nav::ImuIncrement increment;
     increment.delta_angle_rad = s.delta_angle_rad;
@@ -96,8 +96,8 @@ TEST_P(NavigateIdealImu, StartedFromTheTruthEndsWithin5cmWithEitherInput) {
   RunErrors rate_errors, increment_errors;
   const auto track = [&](const NavigationSession& session, const imu_lab::io::TruthRecord& truth, RunErrors& errors) {
     ASSERT_EQ(session.stamp_ns(), truth.stamp_ns);
-    const auto error = imu_lab::pipeline::navigation_error(imu_lab::pipeline::make_solution(session, world), truth, world,
-                                                         session.alignment()->stamp_ns);
+    const auto error = imu_lab::pipeline::navigation_error(imu_lab::pipeline::make_solution(session, world), truth,
+                                                           world, session.alignment()->stamp_ns);
     errors.final_m = error.position_error_enu_m.norm();
     errors.worst_m = std::max(errors.worst_m, errors.final_m);
   };
@@ -112,10 +112,11 @@ TEST_P(NavigateIdealImu, StartedFromTheTruthEndsWithin5cmWithEitherInput) {
       track(increments, truth, increment_errors);
     }
   }
-  std::printf("[ideal nav] %s, %.0f s at 200 Hz: position error rates %.2f mm (worst %.2f), increments %.2f mm "
-              "(worst %.2f)\n",
-              GetParam(), scenario.duration_s, rate_errors.final_m * 1e3, rate_errors.worst_m * 1e3,
-              increment_errors.final_m * 1e3, increment_errors.worst_m * 1e3);
+  std::printf(
+      "[ideal nav] %s, %.0f s at 200 Hz: position error rates %.2f mm (worst %.2f), increments %.2f mm "
+      "(worst %.2f)\n",
+      GetParam(), scenario.duration_s, rate_errors.final_m * 1e3, rate_errors.worst_m * 1e3,
+      increment_errors.final_m * 1e3, increment_errors.worst_m * 1e3);
   EXPECT_LT(rate_errors.final_m, kPositionBound_m);
   EXPECT_LT(increment_errors.final_m, kPositionBound_m);
 }

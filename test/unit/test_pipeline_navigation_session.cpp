@@ -20,7 +20,7 @@ using imu_lab::pipeline::NavigationSettings;
 using imu_lab::pipeline::SampleOutcome;
 
 constexpr std::int64_t kStart_ns = 1000000000LL * 1000000000LL;  // 1e9 s in nanoseconds
-constexpr std::int64_t kInterval_ns = 5000000;                                 // 200 Hz
+constexpr std::int64_t kInterval_ns = 5000000;                   // 200 Hz
 constexpr double kInterval_s = 0.005;
 
 struct Sample {
@@ -80,7 +80,7 @@ TEST(NavigateSession, SkipsAndCountsNaNUnorderedAndGapSamplesAndKeepsNavigating)
   for (std::size_t k = 0; k < samples.size(); ++k) {
     Sample s = samples[k];
     if (k == 300) s.rate_rad_s.x() = std::nan("");
-    if (k == 350) s.force_m_s2.z() = 1e308;  // finite, but it would overflow the velocity: as unusable as NaN
+    if (k == 350) s.force_m_s2.z() = 1e308;         // finite, but it would overflow the velocity: as unusable as NaN
     if (k >= 400) s.stamp_ns += 10 * kInterval_ns;  // a gap of ten intervals before sample 400
     outcomes.push_back(session.add_rates(s.stamp_ns, s.rate_rad_s, s.force_m_s2));
     if (k == 500) outcomes.push_back(session.add_rates(s.stamp_ns, s.rate_rad_s, s.force_m_s2));  // duplicate
@@ -149,13 +149,15 @@ TEST(NavigationSettingsCheck, ASiteOrAnAttitudeNoSensorCanHaveIsRefusedByKey) {
     const std::string message = refusal(change);
     EXPECT_NE(message.find(words), std::string::npos) << "'" << words << "' not in '" << message << "'";
   };
-  refused([&](NavigationSettings& s) { s.longitude_rad = 1e6 * kDeg; }, "longitude_deg: must be in [-180, 360] degrees, got 1e+06");
+  refused([&](NavigationSettings& s) { s.longitude_rad = 1e6 * kDeg; },
+          "longitude_deg: must be in [-180, 360] degrees, got 1e+06");
   refused([&](NavigationSettings& s) { s.longitude_rad = NAN; }, "longitude_deg");
   refused([](NavigationSettings& s) { s.height_m = 1e12; }, "height_m: must be in [-11000, 100000] m");
   refused([](NavigationSettings& s) { s.height_m = -1e8; }, "height_m");
   refused([](NavigationSettings& s) { s.height_m = NAN; }, "height_m");
   refused([](NavigationSettings& s) { s.navigator.vertical.fixed_reference_height_m = 1e30; }, "reference_height_m");
-  refused([&](NavigationSettings& s) { s.initial_pitch_rad = 100.0 * kDeg; }, "initial_pitch_deg: must be in [-90, 90]");
+  refused([&](NavigationSettings& s) { s.initial_pitch_rad = 100.0 * kDeg; },
+          "initial_pitch_deg: must be in [-90, 90]");
   refused([&](NavigationSettings& s) { s.initial_roll_rad = 1e5 * kDeg; }, "initial_roll_deg");
   refused([&](NavigationSettings& s) { s.initial_yaw_rad = 1e300 * kDeg; }, "initial_yaw_deg");
   refused([&](NavigationSettings& s) { s.alignment.given_yaw_rad = -400.0 * kDeg; }, "initial_yaw_deg");
@@ -174,7 +176,8 @@ TEST(NavigateSession, GivenStateIsTheStateAtTheFirstStampWithEitherInput) {
     increment.dt_s = kInterval_s;
     return increment;
   };
-  EXPECT_EQ(rates.add_rates(samples[0].stamp_ns, samples[0].rate_rad_s, samples[0].force_m_s2), SampleOutcome::kStarted);
+  EXPECT_EQ(rates.add_rates(samples[0].stamp_ns, samples[0].rate_rad_s, samples[0].force_m_s2),
+            SampleOutcome::kStarted);
   // The first increment ends where the given state holds: it is not integrated.
   EXPECT_EQ(increments.add_increment(samples[0].stamp_ns, increment_of(samples[0])), SampleOutcome::kStarted);
   for (const NavigationSession* session : {&rates, &increments}) {

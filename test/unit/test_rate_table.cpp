@@ -179,7 +179,8 @@ TEST(RateTableScaleFactor, EstimatesLieWithinThreeSigmaOfTheExactValues) {
   const double full_scale = run.estimated.full_scale_rad_s;
   EXPECT_NEAR(fit.bias_rad_s.value, kBias_rad_s, 3.0 * fit.bias_rad_s.sigma);
   EXPECT_NEAR(fit.scale_factor_error_ppm.value, kScaleFactorErrorPpm, 3.0 * fit.scale_factor_error_ppm.sigma);
-  EXPECT_NEAR(fit.asymmetry_ppm.value, kAsymmetryPpm / (1.0 + 1e-6 * kScaleFactorErrorPpm), 3.0 * fit.asymmetry_ppm.sigma);
+  EXPECT_NEAR(fit.asymmetry_ppm.value, kAsymmetryPpm / (1.0 + 1e-6 * kScaleFactorErrorPpm),
+              3.0 * fit.asymmetry_ppm.sigma);
   EXPECT_NEAR(fit.quadratic_ppm_fs.value, kQuadraticPpmFs * full_scale / kFullScaleOfProfile_rad_s,
               3.0 * fit.quadratic_ppm_fs.sigma);
   EXPECT_NEAR(fit.cubic_ppm_fs.value, kCubicPpmFs * std::pow(full_scale / kFullScaleOfProfile_rad_s, 2),
@@ -244,22 +245,27 @@ std::string input_error(const std::function<void()>& action) {
 }
 
 TEST(RateTableBadInput, TableFilesAreRefusedNamingTheKey) {
-  const std::string good =
-      "latitude_deg: 50.45\naxis_enu: [0, 0, 1]\nyaw_deg: 90\nrates_deg_s: [0, 1, -1, 10, -10]\n";
+  const std::string good = "latitude_deg: 50.45\naxis_enu: [0, 0, 1]\nyaw_deg: 90\nrates_deg_s: [0, 1, -1, 10, -10]\n";
   const RateTableSetup setup = load_rate_table_setup(write_table("rt_good.yaml", good));
   EXPECT_EQ(setup.tested_axis(), 2);
   EXPECT_EQ(setup.nominal_rates_rad_s.size(), 5u);
-  EXPECT_EQ(config_error_key([] { load_rate_table_setup(write_table("rt_a.yaml", "latitude_deg: 50\nrates_deg_s: [1, -1, 2]\nrate: 3\n")); }),
+  EXPECT_EQ(config_error_key([] {
+              load_rate_table_setup(write_table("rt_a.yaml", "latitude_deg: 50\nrates_deg_s: [1, -1, 2]\nrate: 3\n"));
+            }),
             "rate");
-  EXPECT_EQ(config_error_key([] { load_rate_table_setup(write_table("rt_b.yaml", "latitude_deg: 95\nrates_deg_s: [1, -1, 2]\n")); }),
+  EXPECT_EQ(config_error_key(
+                [] { load_rate_table_setup(write_table("rt_b.yaml", "latitude_deg: 95\nrates_deg_s: [1, -1, 2]\n")); }),
             "latitude_deg");
-  EXPECT_EQ(config_error_key([] { load_rate_table_setup(write_table("rt_c.yaml", "latitude_deg: 50\nrates_deg_s: [1, x, 2]\n")); }),
+  EXPECT_EQ(config_error_key(
+                [] { load_rate_table_setup(write_table("rt_c.yaml", "latitude_deg: 50\nrates_deg_s: [1, x, 2]\n")); }),
             "rates_deg_s[1]");
-  EXPECT_EQ(config_error_key([] { load_rate_table_setup(write_table("rt_d.yaml", "latitude_deg: 50\nrates_deg_s: [1, -1]\n")); }),
+  EXPECT_EQ(config_error_key(
+                [] { load_rate_table_setup(write_table("rt_d.yaml", "latitude_deg: 50\nrates_deg_s: [1, -1]\n")); }),
             "rates_deg_s");
   // Table axis North with body x North only at yaw 90... here yaw 45: no axis on the table axis.
   EXPECT_EQ(config_error_key([] {
-              load_rate_table_setup(write_table("rt_e.yaml", "latitude_deg: 50\naxis_enu: [0, 1, 0]\nyaw_deg: 45\nrates_deg_s: [1, -1, 2]\n"));
+              load_rate_table_setup(write_table(
+                  "rt_e.yaml", "latitude_deg: 50\naxis_enu: [0, 1, 0]\nyaw_deg: 45\nrates_deg_s: [1, -1, 2]\n"));
             }),
             "roll_deg/pitch_deg/yaw_deg");
   emulator::ScenarioConfig static_scenario = emulator::load_scenario(test::config_path("scenarios/static.yaml"));

@@ -57,19 +57,19 @@ TEST(Repeatability, TheIntervalCoversTheTrueSigmaAsOftenAsItsConfidence) {
 // run's mean is no longer AVAR(T) (doc/repeatability.md); white noise and the random walk from
 // zero, which stay, have exactly that variance (IEEE Std 952 annex C).
 TEST(Repeatability, EmulatedSwitchOnsGiveTheirTurnOnSpreadAndBiases) {
-  auto profile =
-      imu_lab::emulator::load_sensor_profile(imu_lab::test::config_path("sensors/tactical_mems.yaml"));
+  auto profile = imu_lab::emulator::load_sensor_profile(imu_lab::test::config_path("sensors/tactical_mems.yaml"));
   for (auto* triad : {&profile.gyro, &profile.accelerometer}) {
     triad->scale_factor_error_ppm.setZero();
     triad->misalignment_rad.setZero();
     triad->g_sensitivity.setZero();
     triad->thermal = imu_lab::emulator::ThermalSensitivity();
     for (auto& processes : triad->noise_per_axis) {
-      processes.erase(std::remove_if(processes.begin(), processes.end(),
-                                     [](const imu_lab::noise::ProcessParameters& process) {
-                                       return std::holds_alternative<imu_lab::noise::BiasInstabilityParameters>(process);
-                                     }),
-                      processes.end());
+      processes.erase(
+          std::remove_if(processes.begin(), processes.end(),
+                         [](const imu_lab::noise::ProcessParameters& process) {
+                           return std::holds_alternative<imu_lab::noise::BiasInstabilityParameters>(process);
+                         }),
+          processes.end());
     }
   }
   const auto scenario = imu_lab::emulator::load_scenario(imu_lab::test::config_path("scenarios/static.yaml"));

@@ -48,7 +48,8 @@ TEST(SpectrumWelch, WhiteNoiseIsFlatAtTwiceItsVarianceTimesTau0) {
 TEST(SpectrumWelch, SinusoidPowerLiesUnderItsPeak) {
   const double amplitude = 2.0, frequency_hz = 12.5;  // bin 128 of 1024 at 100 Hz
   std::vector<double> values(8192);
-  for (std::size_t k = 0; k < values.size(); ++k) values[k] = amplitude * std::sin(2 * M_PI * frequency_hz * k * kTau0S);
+  for (std::size_t k = 0; k < values.size(); ++k)
+    values[k] = amplitude * std::sin(2 * M_PI * frequency_hz * k * kTau0S);
   const PowerSpectrum spectrum = welch_psd(values, kTau0S, {1024});
   double power = 0.0;
   for (std::size_t bin = 126; bin <= 130; ++bin) power += spectrum.density[bin] * spectrum.resolution_hz;

@@ -39,9 +39,10 @@ class ThermalFitEmulated : public ::testing::Test {
     thermal::WindowSettings settings;
     settings.window_s = kWindowS;
     const auto windows = thermal_test::windows_of(fit_run, settings, false);
-    dynamic_ = new thermal::ThermalFitResult(thermal::fit_thermal_model(windows, settings.rate_window_s, fit_options(true)));
-    static_only_ = new thermal::ThermalFitResult(
-        thermal::fit_thermal_model(windows, settings.rate_window_s, fit_options(false)));
+    dynamic_ =
+        new thermal::ThermalFitResult(thermal::fit_thermal_model(windows, settings.rate_window_s, fit_options(true)));
+    static_only_ =
+        new thermal::ThermalFitResult(thermal::fit_thermal_model(windows, settings.rate_window_s, fit_options(false)));
   }
   static void TearDownTestSuite() {
     delete profile_;
@@ -50,7 +51,8 @@ class ThermalFitEmulated : public ::testing::Test {
   }
   static EffectSeries held_out(const std::string& scenario_path, const thermal::ThermalModel& model) {
     const auto scenario = emulator::load_scenario(scenario_path);
-    return thermal_test::model_effect(thermal_test::emulate_thermal_run(*profile_, scenario, 7, kRateHz), model, kWindowS);
+    return thermal_test::model_effect(thermal_test::emulate_thermal_run(*profile_, scenario, 7, kRateHz), model,
+                                      kWindowS);
   }
   static double floor_of(int channel) {  // sqrt(AVAR(window)) of the profile's noise
     const auto& triad = channel < 3 ? profile_->gyro : profile_->accelerometer;
@@ -76,14 +78,15 @@ std::array<double, 6> held_out_reduction(const EffectSeries& effect, const char*
     }
     const double before = thermal_test::peak_to_peak(truth), after = thermal_test::peak_to_peak(left);
     ratios[channel] = before / after;
-    std::printf("%s%-16s thermal peak-to-peak %.3g before, %.3g after: %.0fx\n", label, kChannel[channel], before, after,
-                ratios[channel]);
+    std::printf("%s%-16s thermal peak-to-peak %.3g before, %.3g after: %.0fx\n", label, kChannel[channel], before,
+                after, ratios[channel]);
   }
   return ratios;
 }
 
 TEST_F(ThermalFitEmulated, HeldOutProfileThermalVariationReducedTwentyFold) {
-  const auto ratios = held_out_reduction(held_out(thermal_test::shipped_scenario("thermal_chamber"), dynamic_->model), "");
+  const auto ratios =
+      held_out_reduction(held_out(thermal_test::shipped_scenario("thermal_chamber"), dynamic_->model), "");
   for (int channel = 0; channel < 6; ++channel) EXPECT_GT(ratios[channel], 20.0) << kChannel[channel];
   EXPECT_TRUE(dynamic_->warnings.empty()) << dynamic_->warnings.front();
 }

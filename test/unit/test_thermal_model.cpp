@@ -60,7 +60,7 @@ TEST(ThermalModel, ClampsOutsideTheTestedRangeAndFlagsIt) {
 TEST(ThermalModel, TemperatureHistoryMatchesByStampAndEstimatesTheRate) {
   thermal::TemperatureHistory history;
   for (int i = 0; i <= 1000; ++i) EXPECT_TRUE(history.add(100.0 + 0.1 * i, 10.0 + 0.01 * i));  // 0.1 degC/s
-  EXPECT_FALSE(history.add(150.0, 0.0));  // out of order: refused
+  EXPECT_FALSE(history.add(150.0, 0.0));                                                       // out of order: refused
   EXPECT_NEAR(*history.temperature_at(150.05, 1.0), 10.0 + 0.01 * 500.5, 1e-9);
   EXPECT_NEAR(history.rate_at(180.0, 20.0), 0.1, 1e-9);
   EXPECT_NEAR(*history.temperature_at(200.5, 1.0), 20.0, 1e-12);  // held at the end within the age
@@ -109,7 +109,8 @@ TEST(ThermalModel, CompensatorReportsStaleTemperature) {
   thermal::ThermalCompensator compensator(example_model(), 0.5);
   std::vector<thermal::CompensatedSample> out;
   compensator.add_temperature(0.0, 25.0, &out);
-  for (int i = 1; i <= 300; ++i) compensator.add_imu({0.01 * i, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()}, &out);
+  for (int i = 1; i <= 300; ++i)
+    compensator.add_imu({0.01 * i, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()}, &out);
   compensator.flush(&out);
   ASSERT_EQ(out.size(), 300u);
   EXPECT_NE(out[10].status, thermal::CompensatedSample::Status::kStale);   // 0.11 s old: held

@@ -45,9 +45,9 @@ std::string refusal(const std::vector<ThermalWindow>& windows, const thermal::Th
   return "";
 }
 
-const std::vector<Eigen::Vector3d> kSixPositions = {Eigen::Vector3d::UnitX(),  -Eigen::Vector3d::UnitX(),
-                                                    Eigen::Vector3d::UnitY(),  -Eigen::Vector3d::UnitY(),
-                                                    Eigen::Vector3d::UnitZ(),  -Eigen::Vector3d::UnitZ()};
+const std::vector<Eigen::Vector3d> kSixPositions = {Eigen::Vector3d::UnitX(), -Eigen::Vector3d::UnitX(),
+                                                    Eigen::Vector3d::UnitY(), -Eigen::Vector3d::UnitY(),
+                                                    Eigen::Vector3d::UnitZ(), -Eigen::Vector3d::UnitZ()};
 
 TEST(ThermalRefusals, SixPositionsOverAWideSpanFit) {
   thermal::ThermalFitOptions options;

@@ -24,9 +24,15 @@
 namespace imu_lab {
 namespace thermal_test {
 
-inline std::string sensor_path(const std::string& name) { return std::string(IMU_LAB_CONFIG_DIR) + "/sensors/" + name + ".yaml"; }
-inline std::string shipped_scenario(const std::string& name) { return std::string(IMU_LAB_CONFIG_DIR) + "/scenarios/" + name + ".yaml"; }
-inline std::string test_scenario(const std::string& name) { return std::string(IMU_LAB_TEST_DATA_DIR) + "/thermal/" + name + ".yaml"; }
+inline std::string sensor_path(const std::string& name) {
+  return std::string(IMU_LAB_CONFIG_DIR) + "/sensors/" + name + ".yaml";
+}
+inline std::string shipped_scenario(const std::string& name) {
+  return std::string(IMU_LAB_CONFIG_DIR) + "/scenarios/" + name + ".yaml";
+}
+inline std::string test_scenario(const std::string& name) {
+  return std::string(IMU_LAB_TEST_DATA_DIR) + "/thermal/" + name + ".yaml";
+}
 
 struct ThermalRun {
   std::vector<ImuSample> readings;
@@ -56,20 +62,23 @@ inline ThermalRun emulate_thermal_run(const emulator::SensorProfile& profile, co
     run.temperature.add(sample.stamp_s, sample.temperature_c);
     if (sample.second_temperature_c) run.second_temperature.add(sample.stamp_s, *sample.second_temperature_c);
     const double dt = run.sample_interval_s;
-    const double rate_c_s = (temperatures.sensor_temperature_c((k + 1) * dt) - temperatures.sensor_temperature_c(k * dt)) / dt;
+    const double rate_c_s =
+        (temperatures.sensor_temperature_c((k + 1) * dt) - temperatures.sensor_temperature_c(k * dt)) / dt;
     const auto effect = [&](const emulator::ThermalSensitivity& thermal, const Eigen::Vector3d& input) {
       return Eigen::Vector3d(thermal.bias(sample.temperature_c, rate_c_s) +
                              1e-6 * thermal.scale_factor_ppm(sample.temperature_c, rate_c_s).cwiseProduct(input));
     };
     run.true_gyro_effect_rad_s.push_back(effect(profile.gyro.thermal, sample.truth.angular_rate_rad_s));
-    run.true_accelerometer_effect_m_s2.push_back(effect(profile.accelerometer.thermal, sample.truth.specific_force_m_s2));
+    run.true_accelerometer_effect_m_s2.push_back(
+        effect(profile.accelerometer.thermal, sample.truth.specific_force_m_s2));
   }
   return run;
 }
 
 inline std::vector<thermal::ThermalWindow> windows_of(const ThermalRun& run, const thermal::WindowSettings& settings,
                                                       bool with_second_sensor) {
-  thermal::ThermalWindowAverager averager(settings, run.temperature, with_second_sensor ? &run.second_temperature : nullptr);
+  thermal::ThermalWindowAverager averager(settings, run.temperature,
+                                          with_second_sensor ? &run.second_temperature : nullptr);
   for (const auto& reading : run.readings) averager.add(reading);
   return averager.finish();
 }
@@ -116,7 +125,8 @@ inline EffectSeries model_effect(const ThermalRun& run, const thermal::ThermalMo
     thermal::ThermalInput input;
     input.temperature_c = *run.temperature.temperature_at(reading.stamp_s, 1.0);
     input.rate_c_s = run.temperature.rate_at(reading.stamp_s, model.rate_window_s);
-    if (!run.second_temperature.empty()) input.second_temperature_c = run.second_temperature.temperature_at(reading.stamp_s, 1.0);
+    if (!run.second_temperature.empty())
+      input.second_temperature_c = run.second_temperature.temperature_at(reading.stamp_s, 1.0);
     const auto corrected = thermal::correct(model, reading.angular_rate_rad_s, reading.specific_force_m_s2, input);
     for (int i = 0; i < 3; ++i) {
       truth[i] += run.true_gyro_effect_rad_s[k][i];

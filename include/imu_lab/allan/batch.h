@@ -38,15 +38,15 @@ std::string statistic_name(Statistic statistic);
 int difference_order(Statistic statistic);
 
 struct StabilityPoint {
-  int averaging_factor = 0;   // m = tau / tau0
+  int averaging_factor = 0;  // m = tau / tau0
   double tau_s = 0.0;
-  long long term_count = 0;   // number of terms in the average (Stable32's '#')
+  long long term_count = 0;  // number of terms in the average (Stable32's '#')
   // term_count over the terms one contiguous record of all the segments' samples would give:
   // below 1 when the run was split (gaps, knocks) and the segments pooled; 1 for one segment.
   double pooled_term_fraction = 1.0;
-  int alpha = 0;              // power-law noise estimate: frequency PSD ~ f^alpha (2 WPM ... -2 RWFM)
-  double edf = 0.0;           // equivalent degrees of freedom
-  double deviation = 0.0;     // sigma(tau)
+  int alpha = 0;                 // power-law noise estimate: frequency PSD ~ f^alpha (2 WPM ... -2 RWFM)
+  double edf = 0.0;              // equivalent degrees of freedom
+  double deviation = 0.0;        // sigma(tau)
   double deviation_lower = 0.0;  // chi-squared bound at the requested confidence
   double deviation_upper = 0.0;
 };
@@ -89,17 +89,13 @@ double variance(Statistic statistic, const std::vector<double>& phase, double ta
 // An m for which the series is too short is skipped (no point in the output). Throws
 // std::invalid_argument for tau0_s <= 0, m < 1, confidence outside (0, 1) or a non-finite sample.
 // The noise type is identified from the decimated phase, as Stable32 does for phase data.
-std::vector<StabilityPoint> evaluate(Statistic statistic, const std::vector<double>& phase,
-                                     double tau0_s, const std::vector<int>& averaging_factors,
-                                     double confidence = 0.683);
+std::vector<StabilityPoint> evaluate(Statistic statistic, const std::vector<double>& phase, double tau0_s,
+                                     const std::vector<int>& averaging_factors, double confidence = 0.683);
 
 // The same for frequency-type input (rates): integrates it with phase_from_frequency() and
 // identifies the noise type from the averaged frequency, as Stable32 does for frequency data.
-std::vector<StabilityPoint> evaluate_frequency(Statistic statistic,
-                                               const std::vector<double>& frequency,
-                                               double tau0_s,
-                                               const std::vector<int>& averaging_factors,
-                                               double confidence = 0.683);
+std::vector<StabilityPoint> evaluate_frequency(Statistic statistic, const std::vector<double>& frequency, double tau0_s,
+                                               const std::vector<int>& averaging_factors, double confidence = 0.683);
 
 }  // namespace allan
 }  // namespace imu_lab

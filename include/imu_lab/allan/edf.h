@@ -16,8 +16,7 @@ namespace allan {
 //   overlapping       stride tau0 (true) or tau (false)
 //   modified          averaged-phase (MVAR/TVAR) estimator
 // Throws std::invalid_argument for an unsupported (alpha, d) pair or too few samples.
-double greenhall_edf(int alpha, int difference_order, int m, long long phase_count,
-                     bool overlapping, bool modified);
+double greenhall_edf(int alpha, int difference_order, int m, long long phase_count, bool overlapping, bool modified);
 
 // NIST SP 1065 (section 5.2.11): TOTVAR EDF = b * N / m - c for N phase samples, with
 // (b, c) = (1.50, 0) WFM, (1.17, 0.22) FFM, (0.93, 0.36) RWFM. Total variance is an FM-noise
@@ -28,8 +27,7 @@ double total_variance_edf(int alpha, int m, long long phase_count);
 // (OADEV, OHDEV) minus one, since subtracting the sample mean of the differences spends one
 // degree of freedom, exactly as the sample variance of n independent terms has n - 1.
 // alpha is clamped into the range the statistic can resolve (>= -2 Allan, >= -4 Hadamard).
-double equivalent_degrees_of_freedom(Statistic statistic, int alpha, int m,
-                                     long long phase_count);
+double equivalent_degrees_of_freedom(Statistic statistic, int alpha, int m, long long phase_count);
 
 }  // namespace allan
 }  // namespace imu_lab

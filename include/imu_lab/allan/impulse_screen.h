@@ -16,9 +16,9 @@
 // window extends it, and two windows less than merge_gap_s apart are one event (with the samples
 // between them). The samples of a window are dropped, so the engine sees a stamp gap there and,
 // under its split-and-pool policy, starts a new segment: a knock that leaves a step in the bias
-// becomes a segment boundary, not only samples missing. A window always drops at least floor(gap_factor) + 2 samples, so the hole
-// exceeds the engine's gap_factor * tau0 whatever the rate. Each event is recorded with its
-// stamps, the channels over the threshold and their peaks; nothing is dropped unrecorded.
+// becomes a segment boundary, not only samples missing. A window always drops at least floor(gap_factor) + 2 samples,
+// so the hole exceeds the engine's gap_factor * tau0 whatever the rate. Each event is recorded with its stamps, the
+// channels over the threshold and their peaks; nothing is dropped unrecorded.
 //
 // Values that are not finite are not screened and never enter a level or a scale; they pass to
 // the engine (which excludes them). Stamps are used as given: the screen keeps the input order
@@ -56,7 +56,7 @@ struct ImpulseScreenOptions {
   // knocked unit's first disturbance flags samples at 117.10 s, 117.69 s and 118.99 s).
   double merge_gap_s = 1.0;
 
-  std::size_t level_sample_count = 16;          // the local level: mean of this many previous values
+  std::size_t level_sample_count = 16;            // the local level: mean of this many previous values
   std::size_t scale_warm_up_sample_count = 1000;  // the first scale: from this many deviations
   // The scale then forgets with this time constant (in samples): its relative error is about
   // 1 / sqrt(2 * 65536) = 0.3 %, and it follows a slow change of the noise.
@@ -83,8 +83,8 @@ struct ImpulseEvent {
   std::int64_t peak_stamp_ns = 0;   // the sample with the largest |deviation| over all channels
   double peak_sigma = 0.0;          // that deviation (signed), in its channel's scales
   std::size_t peak_channel = 0;
-  std::int64_t flagged_sample_count = 0;  // samples over the threshold in some channel
-  std::int64_t dropped_sample_count = 0;  // samples of the window (none of them reaches the engine)
+  std::int64_t flagged_sample_count = 0;     // samples over the threshold in some channel
+  std::int64_t dropped_sample_count = 0;     // samples of the window (none of them reaches the engine)
   std::vector<ImpulseChannelPeak> channels;  // the channels over the threshold, ascending index
 };
 
@@ -175,7 +175,7 @@ class ImpulseScreen {
   std::int64_t merge_gap_ns_;
   std::int64_t min_dropped_samples_;
   double scale_weight_floor_;  // 1 / scale_memory_sample_count
-  double threshold_square_;     // threshold_sigma^2
+  double threshold_square_;    // threshold_sigma^2
   std::vector<ChannelState> channels_;
 
   std::vector<std::int64_t> line_stamps_ns_;

@@ -37,8 +37,7 @@ double expected_modified_ratio(int alpha, int m);
 // statistic's term count; evaluated at the largest m' <= m leaving kMinimumB1Points averages
 // and terms), refined by R(n) = MVAR/AVAR where B1 cannot tell WPM, FPM and WFM apart.
 // max differences: 2 for the Allan family and TOTDEV, 3 for the Hadamard family.
-int estimate_noise_alpha(Statistic statistic, const std::vector<double>& phase, double tau0_s,
-                         int m, SampleKind kind);
+int estimate_noise_alpha(Statistic statistic, const std::vector<double>& phase, double tau0_s, int m, SampleKind kind);
 
 }  // namespace allan
 }  // namespace imu_lab

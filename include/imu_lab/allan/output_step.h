@@ -30,8 +30,8 @@ constexpr double kOutputStepTolerance = 1e-12;
 constexpr std::int64_t kMaxOutputStepMultiple = std::int64_t{1} << 17;
 
 struct ChannelOutputStep {
-  double step = 0.0;              // the LSB in the channel's units; 0: not quantised (or undecided)
-  bool quantised = false;         // every finite value so far is a multiple of `step` (at least two differ)
+  double step = 0.0;                  // the LSB in the channel's units; 0: not quantised (or undecided)
+  bool quantised = false;             // every finite value so far is a multiple of `step` (at least two differ)
   std::int64_t largest_multiple = 0;  // max |value| / step over the values
   std::int64_t finite_value_count = 0;
 };

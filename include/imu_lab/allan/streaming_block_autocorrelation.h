@@ -22,17 +22,17 @@ constexpr int kMaxBlockDifferences = 3;  // the Hadamard family differences up t
 
 // Pooled over segments, for the d-times differenced block means (d = 0 .. kMaxBlockDifferences).
 struct BlockSeriesSummary {
-  std::array<double, kMaxBlockDifferences + 1> lag1_numerator{};    // sum (w_i - mean)(w_{i+1} - mean)
-  std::array<double, kMaxBlockDifferences + 1> centred_squares{};   // sum (w_i - mean)^2
-  std::array<double, kMaxBlockDifferences + 1> raw_squares{};       // sum w_i^2
-  std::array<std::int64_t, kMaxBlockDifferences + 1> count{};       // points
+  std::array<double, kMaxBlockDifferences + 1> lag1_numerator{};   // sum (w_i - mean)(w_{i+1} - mean)
+  std::array<double, kMaxBlockDifferences + 1> centred_squares{};  // sum (w_i - mean)^2
+  std::array<double, kMaxBlockDifferences + 1> raw_squares{};      // sum w_i^2
+  std::array<std::int64_t, kMaxBlockDifferences + 1> count{};      // points
 };
 
 class BlockMeanAutocorrelation {
  public:
   explicit BlockMeanAutocorrelation(std::vector<int> averaging_factors);
 
-  void start_segment();  // folds the open segment into the pooled sums
+  void start_segment();                // folds the open segment into the pooled sums
   void update(const PhaseRing& ring);  // block means ending up to ring.newest()
 
   BlockSeriesSummary summary(std::size_t tau_index) const;  // closed segments and the open one

@@ -24,7 +24,7 @@ class ChannelAccumulator {
   void push(double value);  // a finite value; the caller screens NaN/Inf
   void flush();             // brings every statistic up to the last pushed value
   bool has_unprocessed_points() const;
-  void break_segment();     // a gap: the next value starts a new segment (flushes)
+  void break_segment();  // a gap: the next value starts a new segment (flushes)
 
   double offset() const { return offset_; }
   const std::vector<ResolutionLevel>& levels() const { return levels_; }

@@ -34,7 +34,7 @@ class ResolutionLevel {
 
   int level() const { return level_; }
   std::int64_t phase_count() const { return ring_.count(); }  // of the open segment, its point 0 included
-  double phase_scale() const { return phase_scale_; }  // 2^-level: level-0 phase to this level's units
+  double phase_scale() const { return phase_scale_; }         // 2^-level: level-0 phase to this level's units
   const std::vector<int>& averaging_factors() const { return averaging_factors_; }
   const DifferenceAccumulator& allan() const { return allan_; }
   const DifferenceAccumulator& hadamard() const { return hadamard_; }
@@ -58,7 +58,7 @@ class ResolutionLevel {
   std::size_t head_capacity_;
   PhaseRing ring_;
   std::int64_t processed_count_ = 0;  // ring points the statistics have seen
-  std::vector<double> head_;  // first points of the open segment
+  std::vector<double> head_;          // first points of the open segment
   DifferenceAccumulator allan_;
   DifferenceAccumulator hadamard_;
   ModifiedAccumulator modified_;

@@ -30,8 +30,8 @@ class LevelHistoryPhase {
 };
 
 // m: the averaging factor at the level's resolution; tau0_s: the input's.
-int streaming_noise_alpha(Statistic statistic, const BlockSeriesSummary& block_means,
-                          LevelHistoryPhase& history_phase, int m, double tau0_s);
+int streaming_noise_alpha(Statistic statistic, const BlockSeriesSummary& block_means, LevelHistoryPhase& history_phase,
+                          int m, double tau0_s);
 
 }  // namespace allan
 }  // namespace imu_lab

@@ -70,7 +70,8 @@ class PhaseRing {
   void load(BinaryReader& in) {
     count_ = in.get_i64();
     const std::vector<double> stored_points = in.get_finite_f64s();
-    if (count_ < 0 || stored_points.size() > values_.size() || stored_points.size() > static_cast<std::size_t>(count_) ||
+    if (count_ < 0 || stored_points.size() > values_.size() ||
+        stored_points.size() > static_cast<std::size_t>(count_) ||
         stored_points.size() < std::min<std::size_t>(static_cast<std::size_t>(count_), history_)) {
       in.fail("phase window of another length");
     }
@@ -102,7 +103,8 @@ inline bool is_next_block_end(std::int64_t end, int order, int m, std::int64_t p
 
 // Reads an accumulator's next block ends, one per averaging factor, refusing any that is not
 // is_next_block_end; `what` names them in the refusal.
-inline std::vector<std::int64_t> load_next_block_ends(BinaryReader& in, int order, const std::vector<int>& averaging_factors,
+inline std::vector<std::int64_t> load_next_block_ends(BinaryReader& in, int order,
+                                                      const std::vector<int>& averaging_factors,
                                                       std::int64_t processed_count, const std::string& what) {
   std::vector<std::int64_t> ends = in.get_i64s();
   if (ends.size() != averaging_factors.size()) in.fail(what + " for another number of averaging factors");
@@ -118,8 +120,7 @@ inline std::vector<std::int64_t> load_next_block_ends(BinaryReader& in, int orde
 // sum_j (-1)^j C(order, j) x[newest - j m].
 inline double phase_difference(const PhaseRing& ring, std::int64_t newest, int m, int order) {
   if (order == 2) return ring.at(newest) - 2.0 * ring.at(newest - m) + ring.at(newest - 2 * m);
-  return ring.at(newest) - 3.0 * ring.at(newest - m) + 3.0 * ring.at(newest - 2 * m) -
-         ring.at(newest - 3 * m);
+  return ring.at(newest) - 3.0 * ring.at(newest - m) + 3.0 * ring.at(newest - 2 * m) - ring.at(newest - 3 * m);
 }
 
 }  // namespace allan

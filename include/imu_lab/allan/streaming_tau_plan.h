@@ -12,8 +12,8 @@ namespace imu_lab {
 namespace allan {
 
 struct PlannedLevel {
-  int level = 0;                               // rate averaged over 2^level samples
-  std::vector<int> level_averaging_factors;    // m / 2^level, ascending
+  int level = 0;                             // rate averaged over 2^level samples
+  std::vector<int> level_averaging_factors;  // m / 2^level, ascending
 };
 
 struct TauPlan {

@@ -31,8 +31,8 @@ namespace imu_lab {
 namespace calib {
 
 struct CalibrationOptions {
-  std::optional<TableSchedule> schedule;  // mode 1 when given
-  CalibrationSite site;                   // mode 2 (mode 1 takes the schedule's)
+  std::optional<TableSchedule> schedule;        // mode 1 when given
+  CalibrationSite site;                         // mode 2 (mode 1 takes the schedule's)
   std::vector<std::size_t> held_out_positions;  // rest indices (0-based, time order)
   bool estimate_g_sensitivity = false;
   StaticDetectionOptions static_detection;

@@ -18,7 +18,7 @@ struct CalibrationSite {
   double height_m = 0.0;
   EarthShape earth_model = EarthShape::kWgs84Rotating;
 
-  double gravity_m_s2() const;               // WGS-84 normal gravity (Somigliana) at the site
+  double gravity_m_s2() const;  // WGS-84 normal gravity (Somigliana) at the site
   Eigen::Vector3d earth_rate_enu_rad_s() const;
 };
 

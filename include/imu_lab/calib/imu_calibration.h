@@ -11,9 +11,9 @@ namespace imu_lab {
 namespace calib {
 
 struct TriadCalibration {
-  Eigen::Vector3d bias = Eigen::Vector3d::Zero();                        // [rad/s] or [m/s^2]
-  Eigen::Matrix3d scale_misalignment = Eigen::Matrix3d::Identity();      // K
-  Eigen::Matrix3d g_sensitivity = Eigen::Matrix3d::Zero();               // gyro: [rad/s per m/s^2]
+  Eigen::Vector3d bias = Eigen::Vector3d::Zero();                    // [rad/s] or [m/s^2]
+  Eigen::Matrix3d scale_misalignment = Eigen::Matrix3d::Identity();  // K
+  Eigen::Matrix3d g_sensitivity = Eigen::Matrix3d::Zero();           // gyro: [rad/s per m/s^2]
 
   // K^-1 (output - b - G * specific_force).
   Eigen::Vector3d correct(const Eigen::Vector3d& output,

@@ -19,8 +19,7 @@ struct Observability {
 
 // relative_tolerance: a scaled singular value below this times the largest counts as zero.
 Observability analyse_observability(const Eigen::MatrixXd& weighted_jacobian,
-                                    const std::vector<std::string>& column_names,
-                                    double relative_tolerance = 1e-9);
+                                    const std::vector<std::string>& column_names, double relative_tolerance = 1e-9);
 
 }  // namespace calib
 }  // namespace imu_lab

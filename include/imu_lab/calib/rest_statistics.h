@@ -32,8 +32,8 @@ struct RestStatistics {
 };
 
 // block_s: length of the blocks; rests shorter than two blocks contribute no noise estimate.
-RestStatistics rest_statistics(const std::vector<ImuSample>& samples,
-                               const std::vector<StaticInterval>& intervals, double block_s);
+RestStatistics rest_statistics(const std::vector<ImuSample>& samples, const std::vector<StaticInterval>& intervals,
+                               double block_s);
 
 }  // namespace calib
 }  // namespace imu_lab

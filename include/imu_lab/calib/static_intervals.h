@@ -19,10 +19,10 @@ struct StaticInterval {
 };
 
 struct StaticDetectionOptions {
-  double window_s = 0.25;        // windows whose mean rate is tested
-  double min_duration_s = 2.0;   // shorter rests are ignored (hesitations while turning)
-  double threshold_sigmas = 6.0; // threshold = this many window-mean noise sigmas + 2 |Earth rate|
-  double threshold_rad_s = 0.0;  // > 0: use this threshold instead
+  double window_s = 0.25;         // windows whose mean rate is tested
+  double min_duration_s = 2.0;    // shorter rests are ignored (hesitations while turning)
+  double threshold_sigmas = 6.0;  // threshold = this many window-mean noise sigmas + 2 |Earth rate|
+  double threshold_rad_s = 0.0;   // > 0: use this threshold instead
   // The resting level (median window mean) is a gyro bias plus Earth rate; above this the
   // recording has no rests (e.g. a continuous rotation) rather than a huge bias.
   double max_resting_rate_rad_s = 0.02;
@@ -37,8 +37,7 @@ struct StaticDetection {
 };
 
 // Throws InputError if the samples are too few for one window or the stamps are not increasing.
-StaticDetection detect_static_intervals(const std::vector<ImuSample>& samples,
-                                        const StaticDetectionOptions& options);
+StaticDetection detect_static_intervals(const std::vector<ImuSample>& samples, const StaticDetectionOptions& options);
 
 }  // namespace calib
 }  // namespace imu_lab

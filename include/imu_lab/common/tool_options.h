@@ -19,13 +19,13 @@ namespace option_range {
 
 // Validators for add_option(...)->check(...): a finite number with the bound(s) named in the
 // refusal, e.g. "--rate-hz: must be > 0, got -5".
-CLI::Validator positive();                          // > 0
-CLI::Validator non_negative();                      // >= 0
-CLI::Validator at_least(double minimum);            // >= minimum
+CLI::Validator positive();                               // > 0
+CLI::Validator non_negative();                           // >= 0
+CLI::Validator at_least(double minimum);                 // >= minimum
 CLI::Validator between(double minimum, double maximum);  // [minimum, maximum]
-CLI::Validator latitude_deg();                      // [-90, 90]
-CLI::Validator longitude_deg();                     // [-180, 360]
-CLI::Validator height_m();                          // [-11000, 100000]: the deepest trench to near space
+CLI::Validator latitude_deg();                           // [-90, 90]
+CLI::Validator longitude_deg();                          // [-180, 360]
+CLI::Validator height_m();                               // [-11000, 100000]: the deepest trench to near space
 
 }  // namespace option_range
 }  // namespace imu_lab

@@ -18,8 +18,8 @@ class YamlFields {
   // Refuses any key not listed (catches typos and unknown noise names).
   void allow_only(std::initializer_list<const char*> keys) const;
   bool has(const std::string& key) const;
-  YamlFields child(const std::string& key) const;  // required mapping
-  YAML::Node raw(const std::string& key) const;    // required, any shape
+  YamlFields child(const std::string& key) const;                  // required mapping
+  YAML::Node raw(const std::string& key) const;                    // required, any shape
   std::vector<YamlFields> mappings(const std::string& key) const;  // required non-empty list
 
   double number(const std::string& key) const;

@@ -2,7 +2,8 @@
 // Sample k covers [start_time_s + k dt, start_time_s + (k+1) dt]; its stamp is the END of the
 // interval (so the first stamp is start_time_s + dt). Rates are exact interval averages and
 // increments are average * dt. The motion source runs on scenario time (0 at start_time_s).
-// Temperature terms of the profile see the interval's mean temperature and its rate. Same profile, scenario and settings (seed) -> bit-identical output.
+// Temperature terms of the profile see the interval's mean temperature and its rate. Same profile, scenario and
+// settings (seed) -> bit-identical output.
 #pragma once
 
 #include <Eigen/Core>
@@ -30,8 +31,8 @@ struct EmulatorSettings {
 struct TruthSample {
   double stamp_s = 0.0;
   Eigen::Quaterniond attitude_body_to_enu = Eigen::Quaterniond::Identity();
-  Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();    // body axes, interval average
-  Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();   // body axes, interval average
+  Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();   // body axes, interval average
+  Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();  // body axes, interval average
   double latitude_rad = 0.0;
   double longitude_rad = 0.0;
   double height_m = 0.0;
@@ -44,13 +45,13 @@ struct TruthSample {
 // noise variances a message's covariances carry) with the truth it was made from; the ROS layer
 // turns it into messages (ros_io/msg/emulator_messages.h).
 struct EmulatedSample {
-  double stamp_s = 0.0;  // end of the interval
+  double stamp_s = 0.0;                                           // end of the interval
   Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();   // interval average
   Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();  // interval average
   Eigen::Vector3d delta_angle_rad = Eigen::Vector3d::Zero();      // = average * dt
   Eigen::Vector3d delta_velocity_m_s = Eigen::Vector3d::Zero();   // = average * dt
-  double temperature_c = 0.0;  // interval mean
-  std::optional<double> second_temperature_c;  // interval mean of the second thermosensor, if any
+  double temperature_c = 0.0;                                     // interval mean
+  std::optional<double> second_temperature_c;                     // interval mean of the second thermosensor, if any
   // Per-axis variance of one sample's stationary noise (for sensor_msgs/Imu covariance
   // diagonals): white, white-angle, quantization, Markov, flicker bank, zero-DC family.
   // Excludes biases, random walk and deterministic terms. Constant over a run.
@@ -63,10 +64,8 @@ class TriadChannel;  // sensor_channel.h
 
 class ImuEmulator {
  public:
-  ImuEmulator(const SensorProfile& profile, std::unique_ptr<MotionSource> motion,
-              const EmulatorSettings& settings);
-  ImuEmulator(const SensorProfile& profile, const ScenarioConfig& scenario,
-              const EmulatorSettings& settings);
+  ImuEmulator(const SensorProfile& profile, std::unique_ptr<MotionSource> motion, const EmulatorSettings& settings);
+  ImuEmulator(const SensorProfile& profile, const ScenarioConfig& scenario, const EmulatorSettings& settings);
   ~ImuEmulator();
   ImuEmulator(ImuEmulator&&) noexcept;
   ImuEmulator& operator=(ImuEmulator&&) noexcept;

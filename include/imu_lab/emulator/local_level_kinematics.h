@@ -38,8 +38,8 @@ struct LocalLevelMotion {
   Eigen::Vector3d rate_body_wrt_enu_rad_s = Eigen::Vector3d::Zero();  // w_nb^b, body axes
 };
 
-TruthState truth_from_local_level(const LocalLevelMotion& motion, EarthShape model,
-                                  double time_s, double temperature_c);
+TruthState truth_from_local_level(const LocalLevelMotion& motion, EarthShape model, double time_s,
+                                  double temperature_c);
 
 }  // namespace emulator
 }  // namespace imu_lab

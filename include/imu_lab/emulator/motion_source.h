@@ -27,8 +27,8 @@ struct TruthState {
 
 // Exact integrals of the truth over [start_s, start_s + interval_s], in body axes.
 struct TruthIncrement {
-  Eigen::Vector3d delta_angle_rad = Eigen::Vector3d::Zero();      // integral of body rate
-  Eigen::Vector3d delta_velocity_m_s = Eigen::Vector3d::Zero();   // integral of specific force
+  Eigen::Vector3d delta_angle_rad = Eigen::Vector3d::Zero();     // integral of body rate
+  Eigen::Vector3d delta_velocity_m_s = Eigen::Vector3d::Zero();  // integral of specific force
   double mean_temperature_c = 0.0;
   double mean_temperature_rate_c_s = 0.0;  // (T(end) - T(start)) / interval
   std::optional<double> mean_second_temperature_c;

@@ -14,10 +14,10 @@ namespace emulator {
 
 namespace gauss_legendre_8 {
 // Nodes on [-1, 1] (positive half) and their weights (Abramowitz & Stegun table 25.4).
-constexpr std::array<double, 4> kNodes = {0.1834346424956498, 0.5255324099163290,
-                                          0.7966664774136267, 0.9602898564975363};
-constexpr std::array<double, 4> kWeights = {0.3626837833783620, 0.3137066458778873,
-                                            0.2223810344533745, 0.1012285362903763};
+constexpr std::array<double, 4> kNodes = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
+                                          0.9602898564975363};
+constexpr std::array<double, 4> kWeights = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
+                                            0.1012285362903763};
 }  // namespace gauss_legendre_8
 
 // Integrates over [start_s, start_s + length_s]. Pieces are placed by their offsets from start_s
@@ -27,8 +27,7 @@ constexpr std::array<double, 4> kWeights = {0.3626837833783620, 0.31370664587788
 // are ignored. Value needs +, * double and a zero.
 template <typename Value, typename Function>
 Value integrate_smooth_pieces(const Function& f, double start_s, double length_s,
-                              const std::vector<double>& breakpoints_s, double max_piece_s,
-                              const Value& zero) {
+                              const std::vector<double>& breakpoints_s, double max_piece_s, const Value& zero) {
   Value total = zero;
   auto integrate_piece = [&](double from_offset, double to_offset) {
     const int parts = std::max(1, static_cast<int>(std::ceil((to_offset - from_offset) / max_piece_s)));

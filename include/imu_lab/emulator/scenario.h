@@ -28,8 +28,8 @@ struct MultiPositionConfig {
     double dwell_s = 0.0;
   };
   std::vector<Position> positions;
-  double move_rate_rad_s = 0.0;          // cruise rate of a move
-  double move_acceleration_rad_s2 = 0.0; // and its acceleration / deceleration
+  double move_rate_rad_s = 0.0;           // cruise rate of a move
+  double move_acceleration_rad_s2 = 0.0;  // and its acceleration / deceleration
 };
 
 // Rate table: the body, mounted in attitude `mount` at table angle 0, turns about a fixed ENU

@@ -42,13 +42,11 @@ class TriadChannel {
 
   // Temperature terms (TriadErrorModel::thermal) are evaluated at the interval's mean
   // temperature and mean rate: the polynomial's curvature over one sample is neglected.
-  Eigen::Vector3d measure(const Eigen::Vector3d& true_average,
-                          const Eigen::Vector3d& specific_force_average, double elapsed_start_s,
-                          double interval_s, const SensorTemperature& temperature);
+  Eigen::Vector3d measure(const Eigen::Vector3d& true_average, const Eigen::Vector3d& specific_force_average,
+                          double elapsed_start_s, double interval_s, const SensorTemperature& temperature);
   // At the reference temperature, steady (no temperature terms).
-  Eigen::Vector3d measure(const Eigen::Vector3d& true_average,
-                          const Eigen::Vector3d& specific_force_average, double elapsed_start_s,
-                          double interval_s);
+  Eigen::Vector3d measure(const Eigen::Vector3d& true_average, const Eigen::Vector3d& specific_force_average,
+                          double elapsed_start_s, double interval_s);
 
   // The rate-dependent response r above, dead zone included (no bias, no noise).
   Eigen::Vector3d response(const Eigen::Vector3d& true_average, const Eigen::Vector3d& thermal_scale) const;
@@ -57,9 +55,7 @@ class TriadChannel {
   // b_fixed + the run-to-run bias drawn for this run.
   Eigen::Vector3d total_bias() const { return model_.bias_fixed + turn_on_bias_; }
   const Eigen::Matrix3d& scale_misalignment_matrix() const { return scale_misalignment_; }
-  const std::vector<std::unique_ptr<noise::NoiseProcess>>& processes(int axis) const {
-    return processes_[axis];
-  }
+  const std::vector<std::unique_ptr<noise::NoiseProcess>>& processes(int axis) const { return processes_[axis]; }
 
  private:
   TriadErrorModel model_;

@@ -26,8 +26,8 @@ namespace emulator {
 // Empty polynomials and zero rate terms (the default) leave the triad temperature-independent.
 struct ThermalSensitivity {
   double reference_temperature_c = 20.0;
-  std::vector<Eigen::Vector3d> bias_polynomial;              // row k: [u / degC^(k+1)]
-  std::vector<Eigen::Vector3d> scale_factor_polynomial_ppm;  // row k: [ppm / degC^(k+1)]
+  std::vector<Eigen::Vector3d> bias_polynomial;                                     // row k: [u / degC^(k+1)]
+  std::vector<Eigen::Vector3d> scale_factor_polynomial_ppm;                         // row k: [ppm / degC^(k+1)]
   Eigen::Vector3d bias_per_temperature_rate = Eigen::Vector3d::Zero();              // [u / (degC/s)]
   Eigen::Vector3d scale_factor_ppm_per_temperature_rate = Eigen::Vector3d::Zero();  // [ppm / (degC/s)]
 
@@ -37,8 +37,8 @@ struct ThermalSensitivity {
 
 // One triad (gyro or accelerometer). "u" = rad/s (gyro) or m/s^2 (accelerometer); "v" = rad or m/s.
 struct TriadErrorModel {
-  Eigen::Vector3d bias_fixed = Eigen::Vector3d::Zero();           // [u]
-  Eigen::Vector3d bias_turn_on_sigma = Eigen::Vector3d::Zero();   // run-to-run 1-sigma [u]
+  Eigen::Vector3d bias_fixed = Eigen::Vector3d::Zero();          // [u]
+  Eigen::Vector3d bias_turn_on_sigma = Eigen::Vector3d::Zero();  // run-to-run 1-sigma [u]
   Eigen::Vector3d scale_factor_error_ppm = Eigen::Vector3d::Zero();
   // Off-diagonal small-angle misalignment / non-orthogonality [rad]; the diagonal is zero.
   Eigen::Matrix3d misalignment_rad = Eigen::Matrix3d::Zero();

@@ -29,9 +29,9 @@ class ThermalProfile {
  private:
   struct Segment {
     double start_s = 0.0;
-    double chamber_start_c = 0.0;  // a
-    double chamber_rate_c_s = 0.0; // b
-    double lag_start_c = 0.0;      // x(0)
+    double chamber_start_c = 0.0;     // a
+    double chamber_rate_c_s = 0.0;    // b
+    double lag_start_c = 0.0;         // x(0)
     double second_lag_start_c = 0.0;  // the second sensor's response to x, at the start
   };
   const Segment& segment_at(double time_s) const;

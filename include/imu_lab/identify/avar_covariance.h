@@ -69,15 +69,14 @@ class OavarCovariance {
 };
 
 // One-off forms of the above.
-Eigen::MatrixXd oavar_covariance(const NoiseModel& model, const std::vector<int>& averaging_factors,
-                                 double tau0_s, long long sample_count);
-std::vector<double> oavar_variance(const NoiseModel& model, const std::vector<int>& averaging_factors,
-                                   double tau0_s, long long sample_count);
+Eigen::MatrixXd oavar_covariance(const NoiseModel& model, const std::vector<int>& averaging_factors, double tau0_s,
+                                 long long sample_count);
+std::vector<double> oavar_variance(const NoiseModel& model, const std::vector<int>& averaging_factors, double tau0_s,
+                                   long long sample_count);
 
 // Brute-force sum over every lag (for tests; O(sample_count) per pair); a sinusoid's cross term
 // summed exactly, averaged over its phase.
-double oavar_covariance_by_direct_sum(const NoiseModel& model, int m, int n, double tau0_s,
-                                      long long sample_count);
+double oavar_covariance_by_direct_sum(const NoiseModel& model, int m, int n, double tau0_s, long long sample_count);
 
 }  // namespace identify
 }  // namespace imu_lab

@@ -19,8 +19,8 @@ namespace identify {
 // against the measured curve's band, reads the curve graphically and warns where either
 // disagrees with the fit.
 // Throws InputError for unusable points, std::invalid_argument for tau0_s or record_length_s <= 0.
-FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, double tau0_s,
-                          double record_length_s, const FitOptions& options = FitOptions());
+FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, double tau0_s, double record_length_s,
+                          const FitOptions& options = FitOptions());
 
 // The white density the output's rounding adds: step / sqrt(12) per sample.
 double quantization_density(double output_step, double tau0_s);

@@ -14,8 +14,8 @@ namespace identify {
 
 struct FitPoint {
   double tau_s = 0.0;
-  int averaging_factor = 0;  // m = tau / tau0
-  double avar = 0.0;         // measured overlapping Allan variance
+  int averaging_factor = 0;           // m = tau / tau0
+  double avar = 0.0;                  // measured overlapping Allan variance
   double pooled_term_fraction = 1.0;  // allan::StabilityPoint's: below 1 when pooled over segments
 };
 

@@ -49,8 +49,8 @@ double mean_log_scaled_chi_squared(double edf);
 // holds the fit points' averaging factors, plus discrepancy^2 on the diagonal). A covariance
 // that rounding made indefinite has its correlation eigenvalues clipped. Throws
 // std::runtime_error if even that fails.
-MomentWeights moment_weights(const std::vector<FitPoint>& points, const NoiseModel& model,
-                             OavarCovariance& covariance, double discrepancy);
+MomentWeights moment_weights(const std::vector<FitPoint>& points, const NoiseModel& model, OavarCovariance& covariance,
+                             double discrepancy);
 
 // The averaging factors of the points, in order (what an OavarCovariance for them needs).
 std::vector<int> averaging_factors(const std::vector<FitPoint>& points);
@@ -70,14 +70,14 @@ constexpr double kSmallestResonanceRelativeWidth = 0.02;
 // [tau_min, 2 T]; sinusoid and bias cutoff frequencies in [1 / T, 1 / (2 tau0)]; resonance
 // f_n in [0.05 / tau0, 1 / (2 tau0)] and width / f_n in [0.02, 1.9]; a white rate's front-end
 // corner in [0.1 / tau0, 5 / tau0]; zero-DC beta in [tau0, T].
-void log_parameter_bounds(const ModelStructure& structure, const DataSpan& span,
-                          std::vector<double>* lower, std::vector<double>* upper);
+void log_parameter_bounds(const ModelStructure& structure, const DataSpan& span, std::vector<double>* lower,
+                          std::vector<double>* upper);
 
 // Minimises J from `start` (clamped into the bounds); parameters listed in held_fixed keep their
 // start values (profiles).
 SolveOutcome solve_model(const std::vector<FitPoint>& points, const ModelStructure& structure,
-                         const std::vector<double>& start, const DataSpan& span,
-                         const MomentWeights& weights, const std::vector<int>& held_fixed = {});
+                         const std::vector<double>& start, const DataSpan& span, const MomentWeights& weights,
+                         const std::vector<int>& held_fixed = {});
 
 // J / 2 at given parameters.
 double model_cost(const std::vector<FitPoint>& points, const ModelStructure& structure,

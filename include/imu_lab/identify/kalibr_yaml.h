@@ -15,17 +15,17 @@ namespace imu_lab {
 namespace identify {
 
 struct KalibrValue {
-  double value = 0.0;         // continuous time, SI
+  double value = 0.0;           // continuous time, SI
   bool is_upper_bound = false;  // the fit found no constrained value; this is its bound
-  int axis = 0;               // the axis that gave it
+  int axis = 0;                 // the axis that gave it
 };
 
 struct KalibrImuNoise {
-  KalibrValue gyroscope_noise_density;       // rad/s/sqrt(Hz)
-  KalibrValue gyroscope_random_walk;         // rad/s^2/sqrt(Hz)
-  KalibrValue accelerometer_noise_density;   // m/s^2/sqrt(Hz)
-  KalibrValue accelerometer_random_walk;     // m/s^3/sqrt(Hz)
-  double update_rate_hz = 0.0;               // measured
+  KalibrValue gyroscope_noise_density;      // rad/s/sqrt(Hz)
+  KalibrValue gyroscope_random_walk;        // rad/s^2/sqrt(Hz)
+  KalibrValue accelerometer_noise_density;  // m/s^2/sqrt(Hz)
+  KalibrValue accelerometer_random_walk;    // m/s^3/sqrt(Hz)
+  double update_rate_hz = 0.0;              // measured
   std::string rostopic;
 };
 
@@ -33,8 +33,8 @@ struct KalibrImuNoise {
 // the upper bound for an axis where the term is absent or unconstrained.
 KalibrValue kalibr_value(const TriadFit& triad, TermKind kind);
 
-KalibrImuNoise kalibr_noise(const TriadFit& gyro, const TriadFit& accelerometer,
-                            double update_rate_hz, const std::string& rostopic);
+KalibrImuNoise kalibr_noise(const TriadFit& gyro, const TriadFit& accelerometer, double update_rate_hz,
+                            const std::string& rostopic);
 
 std::string format_kalibr_imu_yaml(const KalibrImuNoise& noise);
 // Atomic (common/atomic_file.h).

@@ -29,13 +29,11 @@ int parameter_count(const ModelStructure& structure);
 // Index of slot i's ln-amplitude in the parameter vector (its ln-shapes, if free, follow).
 int parameter_offset(const ModelStructure& structure, int slot_index);
 
-NoiseModel model_from_log_parameters(const ModelStructure& structure,
-                                     const std::vector<double>& log_parameters);
+NoiseModel model_from_log_parameters(const ModelStructure& structure, const std::vector<double>& log_parameters);
 // One slot's term from its slot_parameter_count(slot) ln-parameters.
 Term term_from_log_parameters(const TermSlot& slot, const double* log_parameters);
 // Inverse of model_from_log_parameters for a model whose terms match the structure's slots.
-std::vector<double> log_parameters_from_model(const ModelStructure& structure,
-                                              const NoiseModel& model);
+std::vector<double> log_parameters_from_model(const ModelStructure& structure, const NoiseModel& model);
 
 // The structure and parameters without slot i.
 void remove_slot(ModelStructure& structure, std::vector<double>& log_parameters, int slot_index);

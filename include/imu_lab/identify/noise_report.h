@@ -24,8 +24,8 @@ struct ReportEvent {
 };
 
 struct ReportMetadata {
-  std::string source;  // bag or file the curves came from
-  double update_rate_hz = 0.0;  // measured
+  std::string source;            // bag or file the curves came from
+  double update_rate_hz = 0.0;   // measured
   bool events_screened = false;  // whether a screen looked for events at all
   long long event_count = 0;     // all events (the list may be truncated)
   std::vector<ReportEvent> events;
@@ -38,8 +38,7 @@ std::string upper_bound_suffix(double confidence);  // 0.95 -> "_upper_95"
 
 std::string format_noise_report(const std::vector<TriadFit>& triads, const ReportMetadata& metadata);
 // Atomic (common/atomic_file.h).
-void write_noise_report(const std::string& path, const std::vector<TriadFit>& triads,
-                        const ReportMetadata& metadata);
+void write_noise_report(const std::string& path, const std::vector<TriadFit>& triads, const ReportMetadata& metadata);
 
 // Every numeric leaf of a report, keyed by its dotted path
 // ("triads.gyro.axes.gyro_x.terms.white_rate.N_rad_s_per_sqrt_hz"). Throws InputError if the

@@ -22,17 +22,14 @@ struct PartialCurves {
   std::vector<double> band_upper_deviation;
 };
 
-PartialCurves partial_curves(const FitResult& fit,
-                             const std::vector<allan::StabilityPoint>& measured);
+PartialCurves partial_curves(const FitResult& fit, const std::vector<allan::StabilityPoint>& measured);
 
 // CSV, unit in every column name (rate_unit_key: "rad_s" or "m_s2"):
 //   tau_s,measured_dev_<unit>,fit_total_dev_<unit>,<term>_dev_<unit>,...,band95_low_<unit>,band95_high_<unit>
 // with the output's quantization as a term ("output_quantization") when the fit had an LSB.
-std::string format_partial_curves_csv(const PartialCurves& curves,
-                                      const std::string& rate_unit_key);
+std::string format_partial_curves_csv(const PartialCurves& curves, const std::string& rate_unit_key);
 // Written atomically (common/atomic_file.h).
-void write_partial_curves_csv(const std::string& path, const PartialCurves& curves,
-                              const std::string& rate_unit_key);
+void write_partial_curves_csv(const std::string& path, const PartialCurves& curves, const std::string& rate_unit_key);
 
 }  // namespace identify
 }  // namespace imu_lab

@@ -17,8 +17,7 @@ namespace identify {
 // `bisections` halve the bracket (one doubling of the amplitude) that many times.
 double profile_upper_bound(const std::vector<FitPoint>& points, const ModelStructure& structure,
                            const std::vector<double>& log_parameters, double best_cost, int slot_index,
-                           const DataSpan& span, const MomentWeights& weights, double confidence,
-                           int bisections = 25);
+                           const DataSpan& span, const MomentWeights& weights, double confidence, int bisections = 25);
 
 // Bound of an absent term whose shape the data would have to choose (Markov, sinusoid,
 // resonance): its slot is appended with a free shape at each start (unit-amplitude terms), at

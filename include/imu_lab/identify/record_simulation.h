@@ -20,8 +20,7 @@ std::vector<noise::ProcessParameters> emulator_processes(const NoiseModel& model
 
 // Interval-average rates of one axis, sample_count samples every tau0_s, streams seeded from
 // `seed` and each term's name.
-std::vector<double> simulate_rates(const NoiseModel& model, double tau0_s, long long sample_count,
-                                   std::uint64_t seed);
+std::vector<double> simulate_rates(const NoiseModel& model, double tau0_s, long long sample_count, std::uint64_t seed);
 
 }  // namespace identify
 }  // namespace imu_lab

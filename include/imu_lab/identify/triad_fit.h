@@ -24,11 +24,11 @@ struct TriadFit {
 // "gyro_x", ..., "accel_z".
 std::string axis_name(SensorKind sensor, int axis);
 
-TriadFit fit_triad(SensorKind sensor, const std::array<std::vector<allan::StabilityPoint>, 3>& curves,
-                   double tau0_s, double record_length_s, const FitOptions& options = FitOptions());
+TriadFit fit_triad(SensorKind sensor, const std::array<std::vector<allan::StabilityPoint>, 3>& curves, double tau0_s,
+                   double record_length_s, const FitOptions& options = FitOptions());
 // Each axis with its own options (its own output LSB, for one).
-TriadFit fit_triad(SensorKind sensor, const std::array<std::vector<allan::StabilityPoint>, 3>& curves,
-                   double tau0_s, double record_length_s, const std::array<FitOptions, 3>& options_per_axis);
+TriadFit fit_triad(SensorKind sensor, const std::array<std::vector<allan::StabilityPoint>, 3>& curves, double tau0_s,
+                   double record_length_s, const std::array<FitOptions, 3>& options_per_axis);
 
 // Index of the worst axis and why (sets worst_axis, worst_axis_reason).
 void flag_worst_axis(TriadFit* triad);

@@ -1,8 +1,8 @@
 // Writing IMU samples as CSV for people who analyse elsewhere: one header line naming each
 // column with its unit (time_s, gyro_x_rad_s ... accel_z_m_s2, temperature_c), then one row per
 // sample. Stamps are exact decimal seconds (9 digits), values print as the shortest text that
-// reads back as the same double, so reading the file back (csv_imu_import.h, whose default column order is this one) gives the
-// same doubles in SI.
+// reads back as the same double, so reading the file back (csv_imu_import.h, whose default column order is this one)
+// gives the same doubles in SI.
 #pragma once
 
 #include <ostream>

@@ -93,16 +93,16 @@ struct RejectedRow {
 };
 
 struct CsvImportSummary {
-  std::size_t lines = 0;              // lines read, header, blank and comment lines included
+  std::size_t lines = 0;  // lines read, header, blank and comment lines included
   std::size_t accepted_rows = 0;
-  std::size_t rejected_row_count = 0;  // every bad row
-  std::vector<RejectedRow> rejected;   // the first max_reported_rows of them
+  std::size_t rejected_row_count = 0;        // every bad row
+  std::vector<RejectedRow> rejected;         // the first max_reported_rows of them
   std::size_t rows_without_temperature = 0;  // with a temperature column: empty or NaN cells
   std::int64_t first_stamp_ns = 0, last_stamp_ns = 0;
-  std::vector<std::string> header;  // the header's names, if there was one
-  std::string recognised;           // with infer_from_file: what the header told, or ""
-  std::string units;                // as read: "time ns, gyro rad_s, accel m_s2"
-  std::string temperature_column;   // as read: "" for none
+  std::vector<std::string> header;           // the header's names, if there was one
+  std::string recognised;                    // with infer_from_file: what the header told, or ""
+  std::string units;                         // as read: "time ns, gyro rad_s, accel m_s2"
+  std::string temperature_column;            // as read: "" for none
   std::int64_t relative_time_offset_ns = 0;  // with infer_from_file: added to a relative time column, or 0
 
   // "N bad rows of M: line 7: ...; line 9: ..." (capped as stored), for messages.
@@ -115,7 +115,8 @@ struct CsvImportSummary {
 // Bad rows are collected in the summary whatever the policy (the caller decides what refusal
 // means); blank lines and lines starting with '#' are skipped. Rows: wrong field count, a cell
 // that is not a finite number, a time before the previous accepted row's or out of the ROS time
-// range, a line longer than kMaxLineBytes. Stamps are parsed from the decimal text exactly (no double rounding at 1e9 s).
+// range, a line longer than kMaxLineBytes. Stamps are parsed from the decimal text exactly (no double rounding at 1e9
+// s).
 CsvImportSummary parse_imu_csv(std::istream& in, const CsvImportOptions& options, const std::string& source,
                                const std::function<void(const ImuCsvSample&)>& on_sample);
 

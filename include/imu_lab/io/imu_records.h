@@ -13,7 +13,7 @@ namespace io {
 
 // sensor_msgs/Imu: one sample at its header stamp.
 struct ImuRecord {
-  double stamp_s = 0.0;  // header stamp, never the bag's receive time
+  double stamp_s = 0.0;       // header stamp, never the bag's receive time
   std::int64_t stamp_ns = 0;  // the same, exact: differences of stamp_s near 1e9 s lose ~0.1 us
   Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();
   Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();

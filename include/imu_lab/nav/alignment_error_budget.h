@@ -26,15 +26,13 @@ namespace imu_lab {
 namespace nav {
 
 Eigen::Vector3d predicted_alignment_error_rad(const Eigen::Vector3d& gyro_bias_body_rad_s,
-                                            const Eigen::Vector3d& accel_bias_body_m_s2,
-                                            const Eigen::Quaterniond& q_body_to_enu,
-                                            double latitude_rad, double gravity_m_s2,
-                                            double earth_rate_rad_s);
+                                              const Eigen::Vector3d& accel_bias_body_m_s2,
+                                              const Eigen::Quaterniond& q_body_to_enu, double latitude_rad,
+                                              double gravity_m_s2, double earth_rate_rad_s);
 
 Eigen::Matrix3d alignment_noise_covariance_rad2(double gyro_angle_random_walk_rad_per_sqrt_s,
-                                              double accel_velocity_random_walk_m_s_per_sqrt_s,
-                                              double duration_s, double latitude_rad,
-                                              double gravity_m_s2, double earth_rate_rad_s);
+                                                double accel_velocity_random_walk_m_s_per_sqrt_s, double duration_s,
+                                                double latitude_rad, double gravity_m_s2, double earth_rate_rad_s);
 
 }  // namespace nav
 }  // namespace imu_lab

@@ -46,8 +46,8 @@ class EarthModel {
   Eigen::Vector3d earth_rate_enu_rad_s(double latitude_rad) const;
   // Rate of the ENU frame relative to the Earth caused by moving over the curved surface:
   // (-v_N / (R_M + h), v_E / (R_N + h), v_E tan L / (R_N + h)).
-  Eigen::Vector3d transport_rate_enu_rad_s(const Eigen::Vector3d& velocity_enu_m_s,
-                                         double latitude_rad, double height_m) const;
+  Eigen::Vector3d transport_rate_enu_rad_s(const Eigen::Vector3d& velocity_enu_m_s, double latitude_rad,
+                                           double height_m) const;
   // Schuler frequency sqrt(g / R) at the surface (the equator for WGS-84).
   double schuler_rate_rad_s() const;
 

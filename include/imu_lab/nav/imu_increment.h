@@ -24,7 +24,7 @@ struct ImuIncrement {
 // increment = average * dt. Throws InputError for a non-positive or non-finite dt or non-finite
 // rates.
 ImuIncrement increment_from_mean_rates(const Eigen::Vector3d& mean_angular_rate_rad_s,
-                                    const Eigen::Vector3d& mean_specific_force_m_s2, double dt_s);
+                                       const Eigen::Vector3d& mean_specific_force_m_s2, double dt_s);
 
 // Throws InputError naming what is wrong if the increment cannot be integrated.
 void validate_increment(const ImuIncrement& increment);

@@ -69,14 +69,12 @@ class Navigator {
   // Throws std::logic_error before initialise(), InputError for a bad increment, and
   // UnusableStateError when the new state is unusable (state_problem); then state() keeps the last
   // usable state and initialised() is false until the next initialise().
-  const NavState& update(const Eigen::Vector3d& delta_angle_rad,
-                         const Eigen::Vector3d& delta_velocity_m_s, double dt_s);
+  const NavState& update(const Eigen::Vector3d& delta_angle_rad, const Eigen::Vector3d& delta_velocity_m_s,
+                         double dt_s);
   const NavState& update(const ImuIncrement& increment);
 
   // Height aiding for the held vertical channel (e.g. from a barometer topic).
-  void set_reference_height(double reference_height_m) {
-    vertical_.set_reference_height(reference_height_m);
-  }
+  void set_reference_height(double reference_height_m) { vertical_.set_reference_height(reference_height_m); }
   void clear_reference_height() { vertical_.clear_reference_height(); }
 
   const NavState& state() const { return state_; }

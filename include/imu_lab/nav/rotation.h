@@ -23,8 +23,8 @@ Eigen::Vector3d rotation_vector_from_quaternion(const Eigen::Quaterniond& rotati
 // (coning-compensated, in the body frame at the interval start) while the nav frame turned by
 // nav_rotation_vector_rad (in nav axes) relative to inertial space. Result is normalised.
 Eigen::Quaterniond propagate_attitude(const Eigen::Quaterniond& q_body_to_nav,
-                                     const Eigen::Vector3d& body_rotation_vector_rad,
-                                     const Eigen::Vector3d& nav_rotation_vector_rad);
+                                      const Eigen::Vector3d& body_rotation_vector_rad,
+                                      const Eigen::Vector3d& nav_rotation_vector_rad);
 
 }  // namespace nav
 }  // namespace imu_lab

@@ -8,7 +8,7 @@ namespace noise {
 // Cosine integral Ci(x) = -integral_x^inf cos(t)/t dt, x > 0.
 double cosine_integral(double x);
 
-double white_rate_avar(double density_per_sqrt_hz, double tau_s);             // N^2 / tau
+double white_rate_avar(double density_per_sqrt_hz, double tau_s);  // N^2 / tau
 // White angle error of per-sample sigma Q (quantization model): 3 Q^2 / tau^2.
 double white_angle_avar(double per_sample_sigma, double tau_s);
 // Physical pulse rounding of weight S (with carry): the white-angle formula with Q = S/sqrt(12),
@@ -16,8 +16,8 @@ double white_angle_avar(double per_sample_sigma, double tau_s);
 double pulse_quantization_avar(double pulse_weight, double tau_s);
 // Eq. 5.3: flicker B^2 / (2 pi f) below the cutoff f0.
 double bias_instability_avar(double coefficient, double cutoff_frequency_hz, double tau_s);
-double random_walk_avar(double density_per_sqrt_s, double tau_s);              // K^2 tau / 3
-double rate_ramp_avar(double slope_per_s, double tau_s);                       // R^2 tau^2 / 2
+double random_walk_avar(double density_per_sqrt_s, double tau_s);  // K^2 tau / 3
+double rate_ramp_avar(double slope_per_s, double tau_s);           // R^2 tau^2 / 2
 // Eq. 5.7 (q_c, T_c), evaluated stably for tau << T_c.
 double markov_avar(double q_c_per_sqrt_s, double correlation_time_s, double tau_s);
 // Eq. 5.8, peak amplitude Omega0 (time average over a long record).
@@ -25,8 +25,7 @@ double sinusoid_avar(double amplitude, double frequency_hz, double tau_s);
 // A rate that is the derivative of a stationary angle with covariance C(u): its interval average
 // over tau is (angle(t + tau) - angle(t)) / tau, so AVAR = (3 C(0) - 4 C(tau) + C(2 tau)) / tau^2
 // (doc/noise_families.md). Every zero-at-DC family below, and the resonance, has this form.
-double stationary_angle_avar(double covariance_0, double covariance_tau, double covariance_2tau,
-                             double tau_s);
+double stationary_angle_avar(double covariance_0, double covariance_tau, double covariance_2tau, double tau_s);
 
 // The zero-at-DC families of Krobka (ICINS 2015 round table, section 7, tables 7.1-7.3), rate
 // PSD S(f) (two-sided, as in eq. 5.1), derived in doc/noise_families.md and checked against the
@@ -43,17 +42,14 @@ double zero_dc_family_angle_covariance(double exponent_n, double alpha, double b
 // The cosine row alone, S = alpha f^n exp(-beta f) cos(c f), n > 1 (table 7.1 row 3 as printed
 // belongs to alpha f^(n+2) exp(-beta f) cos(c f)). S < 0 at some f, so it is a PSD only as part
 // of a sum such as alpha f^n exp(-beta f) (1 + w cos(c f)), |w| <= 1; its AVAR can be negative.
-double zero_dc_cosine_avar(double exponent_n, double alpha, double beta_s, double cosine_s,
-                           double tau_s);
+double zero_dc_cosine_avar(double exponent_n, double alpha, double beta_s, double cosine_s, double tau_s);
 // C(u) = alpha Gamma(n - 1) / (4 pi^2) Re[(beta - i (c + 2 pi u))^(1-n) + (beta - i (c - 2 pi u))^(1-n)].
-double zero_dc_cosine_angle_covariance(double exponent_n, double alpha, double beta_s,
-                                       double cosine_s, double lag_s);
+double zero_dc_cosine_angle_covariance(double exponent_n, double alpha, double beta_s, double cosine_s, double lag_s);
 // S = alpha f^n exp(-beta f^2), real n > 1 (table 7.1 row 2; n = 2 and n = 3, the Dawson row, are
 // table 7.2 rows 4 and 5): C(u) = alpha / (4 pi^2) beta^((1-n)/2) Gamma((n-1)/2)
 // 1F1((n-1)/2; 1/2; -pi^2 u^2 / beta). beta in s^2.
 double zero_dc_gaussian_avar(double exponent_n, double alpha, double beta_s2, double tau_s);
-double zero_dc_gaussian_angle_covariance(double exponent_n, double alpha, double beta_s2,
-                                         double lag_s);
+double zero_dc_gaussian_angle_covariance(double exponent_n, double alpha, double beta_s2, double lag_s);
 // S = alpha f^2 / (beta^2 + f^2) (table 7.3): white rate noise of density sqrt(alpha) through a
 // first-order high-pass with corner beta [Hz]; the angle is a first-order Markov process,
 // C(u) = alpha exp(-2 pi beta |u|) / (4 pi beta).

@@ -15,14 +15,12 @@ namespace noise {
 class GaussMarkovNoise : public NoiseProcess {
  public:
   // Markov: starts from its stationary distribution.
-  static GaussMarkovNoise markov(double q_c_per_sqrt_s, double correlation_time_s,
-                                 NormalStream normals);
+  static GaussMarkovNoise markov(double q_c_per_sqrt_s, double correlation_time_s, NormalStream normals);
   // Rate random walk: starts at zero.
   static GaussMarkovNoise random_walk(double density_per_sqrt_s, NormalStream normals);
   // White density N through a first-order low-pass with corner bandwidth_hz: a Markov process
   // with T_c = 1 / (2 pi f_c) and q_c = N / T_c (same PSD, N^2 / (1 + (f / f_c)^2)).
-  static GaussMarkovNoise band_limited_white(double density_per_sqrt_hz, double bandwidth_hz,
-                                             NormalStream normals);
+  static GaussMarkovNoise band_limited_white(double density_per_sqrt_hz, double bandwidth_hz, NormalStream normals);
 
   double next_interval_average(double start_s, double interval_s) override;
   double allan_variance(double tau_s, double tau0_s) const override;
@@ -30,8 +28,7 @@ class GaussMarkovNoise : public NoiseProcess {
   std::string kind() const override { return kind_; }
 
  private:
-  GaussMarkovNoise(double decay_rate_per_s, double drive_density, NormalStream normals,
-                   std::string kind);
+  GaussMarkovNoise(double decay_rate_per_s, double drive_density, NormalStream normals, std::string kind);
 
   IntegratedGaussMarkov propagator_;
   NormalStream normals_;

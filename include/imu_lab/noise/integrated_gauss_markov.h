@@ -41,7 +41,7 @@ class IntegratedGaussMarkov {
   double prepared_interval_s_ = -1.0;
   double state_gain_ = 1.0;
   double integral_gain_ = 0.0;
-  double chol_state_ = 0.0;         // lower Cholesky factor of the 2x2 covariance
+  double chol_state_ = 0.0;  // lower Cholesky factor of the 2x2 covariance
   double chol_cross_ = 0.0;
   double chol_integral_ = 0.0;
 };

@@ -12,8 +12,7 @@ namespace noise {
 
 // stream_seed: from noise::stream_seed(user seed, a name unique to this process and axis).
 // bandwidth_hz > 0 turns white rate noise into its low-passed (Gauss-Markov) form.
-std::unique_ptr<NoiseProcess> make_noise_process(const ProcessParameters& parameters,
-                                                 std::uint64_t stream_seed,
+std::unique_ptr<NoiseProcess> make_noise_process(const ProcessParameters& parameters, std::uint64_t stream_seed,
                                                  double bandwidth_hz = 0.0);
 
 }  // namespace noise

@@ -19,8 +19,8 @@ struct WhiteRateParameters {
 // Flicker bias instability B with cutoff f0 (eq. 5.3), realised as a bank of first-order Markov
 // processes that tracks eq. 5.3 over [tau_min_s, tau_max_s] (the range the profile claims).
 struct BiasInstabilityParameters {
-  double coefficient = 0.0;           // B [u]
-  double cutoff_frequency_hz = 0.0;   // f0
+  double coefficient = 0.0;          // B [u]
+  double cutoff_frequency_hz = 0.0;  // f0
   double tau_min_s = 0.0;
   double tau_max_s = 0.0;
 };
@@ -37,7 +37,7 @@ struct RateRampParameters {
 
 // First-order Gauss-Markov: db = -b / T_c dt + q_c dW; PSD (q_c T_c)^2 / (1 + (2 pi f T_c)^2).
 struct MarkovParameters {
-  double q_c_per_sqrt_s = 0.0;     // q_c [u/sqrt(s)]
+  double q_c_per_sqrt_s = 0.0;      // q_c [u/sqrt(s)]
   double correlation_time_s = 0.0;  // T_c
 };
 
@@ -52,8 +52,8 @@ struct SinusoidParameters {
 // fixed per-sample angle error sigma (the white-angle quantization model, Q) or a continuous
 // density of the angle, whose per-sample variance density^2 / tau0 then depends on the rate.
 struct WhiteAngleParameters {
-  double per_sample_sigma = 0.0;      // Q [v]; used when density is 0
-  double density_per_sqrt_hz = 0.0;   // sqrt(Q' tau0'^2) of Krobka 2015 [v/sqrt(Hz)]
+  double per_sample_sigma = 0.0;     // Q [v]; used when density is 0
+  double density_per_sqrt_hz = 0.0;  // sqrt(Q' tau0'^2) of Krobka 2015 [v/sqrt(Hz)]
 };
 
 // Krobka's zero-at-DC families (ICINS 2015, section 7; doc/noise_families.md), each generated
@@ -63,8 +63,8 @@ struct WhiteAngleParameters {
 // keeps the PSD non-negative; the cosine row alone is not a PSD).
 struct ZeroDcFamilyParameters {
   double exponent_n = 2.0;
-  double alpha = 0.0;   // [u^2 / Hz^(n+1)]
-  double beta_s = 0.0;  // [s]
+  double alpha = 0.0;          // [u^2 / Hz^(n+1)]
+  double beta_s = 0.0;         // [s]
   double cosine_s = 0.0;       // c [s]
   double cosine_weight = 0.0;  // w, |w| <= 1
 };
@@ -93,10 +93,9 @@ struct ResonanceParameters {
 };
 
 using ProcessParameters =
-    std::variant<WhiteRateParameters, BiasInstabilityParameters, RandomWalkParameters,
-                 RateRampParameters, MarkovParameters, SinusoidParameters, WhiteAngleParameters,
-                 ZeroDcFamilyParameters, ResonanceParameters, HighPassWhiteParameters,
-                 ZeroDcGaussianParameters>;
+    std::variant<WhiteRateParameters, BiasInstabilityParameters, RandomWalkParameters, RateRampParameters,
+                 MarkovParameters, SinusoidParameters, WhiteAngleParameters, ZeroDcFamilyParameters,
+                 ResonanceParameters, HighPassWhiteParameters, ZeroDcGaussianParameters>;
 
 // Short stable name ("white_rate", "markov", ...): used in RNG stream seeds and reports.
 std::string process_kind(const ProcessParameters& parameters);

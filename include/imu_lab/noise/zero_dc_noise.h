@@ -42,16 +42,16 @@ class ZeroDcNoise : public NoiseProcess {
   std::size_t tap_count() const { return taps_.size(); }
 
  private:
-  ZeroDcNoise(std::function<double(double)> angle_covariance, double time_scale_s,
-              double echo_delay_s, std::string kind, NormalStream normals);
+  ZeroDcNoise(std::function<double(double)> angle_covariance, double time_scale_s, double echo_delay_s,
+              std::string kind, NormalStream normals);
   void design(double interval_s);
   void build_taps(double interval_s, std::size_t half_width);
   double design_error(double interval_s) const;
   double generated_covariance(std::size_t lag) const;
 
   std::function<double(double lag_s)> angle_covariance_;
-  double time_scale_s_;   // where C(u) has fallen off
-  double echo_delay_s_;   // the cosine's echo, c / (2 pi)
+  double time_scale_s_;  // where C(u) has fallen off
+  double echo_delay_s_;  // the cosine's echo, c / (2 pi)
   std::string kind_;
   NormalStream normals_;
   double designed_interval_s_ = -1.0;

@@ -15,9 +15,9 @@ namespace panel {
 
 // One triad's curves of one statistic, as imu_lab/AllanDeviation carries them.
 struct StabilityAxis {
-  std::string name;                // x, y or z
-  std::vector<double> deviation;   // parallel to StabilityCurves::tau_s; NaN where missing
-  std::vector<double> lower;       // bounds at StabilityCurves::confidence
+  std::string name;               // x, y or z
+  std::vector<double> deviation;  // parallel to StabilityCurves::tau_s; NaN where missing
+  std::vector<double> lower;      // bounds at StabilityCurves::confidence
   std::vector<double> upper;
 };
 
@@ -53,7 +53,7 @@ struct NoiseAxisModel {
 
 struct NoiseReport {
   double tau0_s = 0.0;
-  double record_length_s = 0.0;       // what the fit was made on
+  double record_length_s = 0.0;        // what the fit was made on
   double target_relative_sigma = 0.0;  // the precision "resolved" means for the record lengths
   std::vector<std::string> problems;
   std::vector<NoiseAxisModel> axes;

@@ -51,10 +51,10 @@ struct AttitudeView {
   bool have_attitude = false;
   bool have_alignment = false;
   std::vector<AttitudeRow> rows;
-  std::string solution_line;              // where the numbers come from, or what is missing
-  std::string health_summary;             // "input health: OK (2 statuses)"
-  std::vector<HealthLine> health_lines;   // one per status, worst first
-  int worst_health_level = -1;            // -1: no status received
+  std::string solution_line;             // where the numbers come from, or what is missing
+  std::string health_summary;            // "input health: OK (2 statuses)"
+  std::vector<HealthLine> health_lines;  // one per status, worst first
+  int worst_health_level = -1;           // -1: no status received
 };
 
 // 1-sigma of roll, pitch and yaw at heading yaw_rad from the ENU-axis sigmas of the small rotation

@@ -17,15 +17,15 @@ namespace imu_lab {
 namespace pipeline {
 
 struct AllanRunDescription {
-  std::string bag;    // the bag read; empty for a live topic
-  std::vector<std::string> files;  // a split recording's files in the order read (several only)
-  io::TimeWindow window;               // the part of the bag analysed
-  std::vector<io::FileJoin> joins;     // where the split files hand over
-  std::string topic;  // the topic read or subscribed to
+  std::string bag;                  // the bag read; empty for a live topic
+  std::vector<std::string> files;   // a split recording's files in the order read (several only)
+  io::TimeWindow window;            // the part of the bag analysed
+  std::vector<io::FileJoin> joins;  // where the split files hand over
+  std::string topic;                // the topic read or subscribed to
   AllanInput input = AllanInput::kRate;
   allan::StreamingOptions engine;
-  std::int64_t skipped_before_checkpoint = 0;  // live only: replayed samples a resumed node skipped
-  allan::ImpulseScreenReport impulses;          // the screen before the engine
+  std::int64_t skipped_before_checkpoint = 0;          // live only: replayed samples a resumed node skipped
+  allan::ImpulseScreenReport impulses;                 // the screen before the engine
   std::vector<allan::ChannelOutputStep> output_steps;  // per channel (empty: not watched)
 };
 

@@ -60,7 +60,7 @@ struct InputCounters {
   std::uint64_t unordered = 0;  // duplicate or out-of-order stamps
   std::uint64_t gaps = 0;       // intervals over gap_factor typical intervals
   std::uint64_t failed_alignments = 0;
-  std::uint64_t halted = 0;         // samples ignored after a divergence
+  std::uint64_t halted = 0;  // samples ignored after a divergence
   std::uint64_t divergences = 0;
   std::uint64_t reinitialisations = 0;
 };

@@ -21,10 +21,10 @@ constexpr double kDegToRad = M_PI / 180.0;
 // Zero is a value (an error-free sensor); not giving them at all (std::nullopt in the settings)
 // means no prediction.
 struct ExpectedSensorErrors {
-  double gyro_bias_rad_s = 0.0;           // per axis, 1 sigma
-  double accel_bias_m_s2 = 0.0;           // per axis, 1 sigma
-  double gyro_noise_density_rad_s_per_sqrt_hz = 0.0;   // angle random walk (rad/sqrt(s))
-  double accel_noise_density_m_s2_per_sqrt_hz = 0.0;   // velocity random walk (m/s/sqrt(s))
+  double gyro_bias_rad_s = 0.0;                       // per axis, 1 sigma
+  double accel_bias_m_s2 = 0.0;                       // per axis, 1 sigma
+  double gyro_noise_density_rad_s_per_sqrt_hz = 0.0;  // angle random walk (rad/sqrt(s))
+  double accel_noise_density_m_s2_per_sqrt_hz = 0.0;  // velocity random walk (m/s/sqrt(s))
 };
 
 struct NavigationSettings {

@@ -32,8 +32,8 @@ struct Plateau {
 };
 
 struct PlateauDetection {
-  std::vector<Plateau> plateaus;  // in time order
-  double window_s = 0.0;          // the realised window (a whole number of samples)
+  std::vector<Plateau> plateaus;    // in time order
+  double window_s = 0.0;            // the realised window (a whole number of samples)
   double window_noise_rad_s = 0.0;  // robust sigma of a window mean
   double threshold_rad_s = 0.0;
 };

@@ -43,7 +43,7 @@ struct RateTableSetup {
 };
 
 RateTableSetup setup_from_scenario(const emulator::ScenarioConfig& scenario);  // ConfigError unless rate_table
-RateTableSetup load_rate_table_setup(const std::string& path);                // ConfigError naming the key
+RateTableSetup load_rate_table_setup(const std::string& path);                 // ConfigError naming the key
 
 }  // namespace rate_table
 }  // namespace imu_lab

@@ -67,7 +67,7 @@ struct ScaleFactorTestResult {
   RateTableSetup setup;
   PlateauDetection detection;
   double block_s = 0.0;
-  int axis = 0;               // 0 x, 1 y, 2 z
+  int axis = 0;  // 0 x, 1 y, 2 z
   double axis_sign = 1.0;
   double earth_rate_on_axis_rad_s = 0.0;
   double full_scale_rad_s = 0.0;  // largest |input| tested
@@ -77,8 +77,8 @@ struct ScaleFactorTestResult {
   std::optional<ScaleFactorFit> polynomial;
   // Dead zone bracket in |input|: none found (then it is below the slowest nonzero rate, if any).
   bool dead_zone_found = false;
-  double dead_zone_above_rad_s = 0.0;               // fastest dead |w|
-  std::optional<double> dead_zone_below_rad_s;      // slowest live |w| beyond it
+  double dead_zone_above_rad_s = 0.0;           // fastest dead |w|
+  std::optional<double> dead_zone_below_rad_s;  // slowest live |w| beyond it
   double slowest_nonzero_rate_rad_s = 0.0;
 };
 

@@ -30,9 +30,9 @@ struct UnitTermValue {
 
 // One term of one channel across the lot, in the field's unit.
 struct LotTerm {
-  std::string channel, term;  // "gyro_x", "bias_instability"
-  std::string parameter;      // symbol and field unit as in the report's keys, e.g. "B_deg_h"
-  std::string field_unit;     // its unit part, e.g. "deg_h"
+  std::string channel, term;              // "gyro_x", "bias_instability"
+  std::string parameter;                  // symbol and field unit as in the report's keys, e.g. "B_deg_h"
+  std::string field_unit;                 // its unit part, e.g. "deg_h"
   std::vector<UnitTermValue> identified;  // the units whose report gives a value, in unit order
   std::vector<std::string> absent_units;  // the others
   double absent_upper_bound_max = 0.0;    // largest upper bound those reports give (NaN: none)

@@ -41,9 +41,9 @@ SpreadEstimate spread_of(const std::vector<double>& values, double confidence);
 double median_of(std::vector<double> values);
 
 struct RunChannel {
-  double bias = 0.0;                  // mean of the run (window)
-  double mean_uncertainty = 0.0;      // standard uncertainty of that mean from the run's noise
-  double allan_minimum = 0.0;         // smallest overlapping Allan deviation (octave taus)
+  double bias = 0.0;              // mean of the run (window)
+  double mean_uncertainty = 0.0;  // standard uncertainty of that mean from the run's noise
+  double allan_minimum = 0.0;     // smallest overlapping Allan deviation (octave taus)
   double allan_minimum_tau_s = 0.0;
 };
 
@@ -79,8 +79,8 @@ RunSummary summarise_run(const std::string& name, const std::vector<std::array<d
 struct RepeatabilityTable {
   std::vector<RunSummary> runs;
   double confidence = 0.95;
-  std::array<SpreadEstimate, kChannelCount> bias_spread{};       // run-to-run, per channel
-  std::array<double, kChannelCount> rms_mean_uncertainty{};      // of the runs' means, per channel
+  std::array<SpreadEstimate, kChannelCount> bias_spread{};   // run-to-run, per channel
+  std::array<double, kChannelCount> rms_mean_uncertainty{};  // of the runs' means, per channel
   std::array<double, kChannelCount> median_allan_minimum{};
 };
 // Throws std::invalid_argument for fewer than 2 runs.

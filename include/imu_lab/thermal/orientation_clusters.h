@@ -20,7 +20,7 @@ struct EarthReference {
 };
 
 struct OrientationCluster {
-  Eigen::Vector3d up_body = Eigen::Vector3d::UnitZ();                 // unit
+  Eigen::Vector3d up_body = Eigen::Vector3d::UnitZ();                   // unit
   Eigen::Vector3d specific_force_input_m_s2 = Eigen::Vector3d::Zero();  // g * up
   // Vertical part from `up` exactly; the horizontal part's direction is taken from the mean
   // gyro output (gyrocompassing), so it is only as good as the gyro bias is small against the

@@ -21,7 +21,7 @@ struct CompensatedSample {
   enum class Status { kCorrected, kClamped, kStale };
   Status status = Status::kCorrected;
   ImuSample corrected;  // the raw reading when stale
-  ThermalInput input;    // what the correction used (before clamping)
+  ThermalInput input;   // what the correction used (before clamping)
 };
 
 class ThermalCompensator {

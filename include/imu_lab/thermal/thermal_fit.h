@@ -38,11 +38,11 @@ struct ThermalFitOptions {
   double reference_temperature_c = 20.0;  // normal conditions (Golovach 2017)
   std::optional<int> polynomial_order;    // 1..4 for bias and scale factor; empty: cross-validation
   int max_polynomial_order = 4;
-  bool temperature_rate_term = false;     // the dynamic regime (Golovach 2017 eqs. 3.18, 3.19), on the bias
+  bool temperature_rate_term = false;  // the dynamic regime (Golovach 2017 eqs. 3.18, 3.19), on the bias
   // ... and on the scale factor: needs opposite orientations while the temperature changes,
   // which a test with positions only at the soaks does not have.
   bool scale_factor_rate_term = false;
-  bool second_sensor_term = false;        // a polynomial in the second, lagging thermosensor
+  bool second_sensor_term = false;  // a polynomial in the second, lagging thermosensor
   int second_sensor_order = 1;
   bool gyro_scale_factor = false;  // from the Earth rate: observable only for navigation-grade gyros
   bool accelerometer_scale_factor = true;
@@ -68,8 +68,8 @@ struct AxisFitReport {
   int bias_order = 0;
   int scale_factor_order = 0;  // 0: not fitted
   std::size_t window_count = 0;
-  double residual_rms = 0.0;          // [u]
-  double cross_validation_rms = 0.0;  // [u]; 0 when the order was fixed
+  double residual_rms = 0.0;             // [u]
+  double cross_validation_rms = 0.0;     // [u]; 0 when the order was fixed
   double delta_bias_peak_to_peak = 0.0;  // of the fitted delta_bias over the test's windows [u]
   std::size_t constant_count = 0;        // per orientation (along gravity) or per visit (across it)
   // The noise of one window's mean [u], from the change of the residual between neighbouring

@@ -21,11 +21,11 @@ namespace imu_lab {
 namespace thermal {
 
 struct AxisThermalTerms {
-  std::vector<double> bias_polynomial;                // row k: [u / degC^(k+1)]
-  double bias_per_temperature_rate = 0.0;             // [u / (degC/s)]
-  std::vector<double> bias_second_sensor_polynomial;  // row k: [u / degC^(k+1)] in dT2
-  std::vector<double> scale_factor_polynomial_ppm;    // row k: [ppm / degC^(k+1)]
-  double scale_factor_ppm_per_temperature_rate = 0.0; // [ppm / (degC/s)]
+  std::vector<double> bias_polynomial;                 // row k: [u / degC^(k+1)]
+  double bias_per_temperature_rate = 0.0;              // [u / (degC/s)]
+  std::vector<double> bias_second_sensor_polynomial;   // row k: [u / degC^(k+1)] in dT2
+  std::vector<double> scale_factor_polynomial_ppm;     // row k: [ppm / degC^(k+1)]
+  double scale_factor_ppm_per_temperature_rate = 0.0;  // [ppm / (degC/s)]
 };
 
 using TriadThermalTerms = std::array<AxisThermalTerms, 3>;

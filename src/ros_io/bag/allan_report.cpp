@@ -46,14 +46,17 @@ AllanReportFiles write_allan_report(const std::string& directory, const pipeline
   // After the curves (a failed fit keeps them) and before the plot (it draws the partial curves).
   files.noise = pipeline::write_allan_noise_report(staging, run, snapshot, identify);
   for (const std::string& path : files.noise.written) files.written.push_back(path.substr(staging.size() + 1));
-  write_file_atomically(staging + "/allan_summary.yaml",
-                        pipeline::format_allan_summary(run, snapshot) + pipeline::format_identification_summary(identify, files.noise));
+  write_file_atomically(
+      staging + "/allan_summary.yaml",
+      pipeline::format_allan_summary(run, snapshot) + pipeline::format_identification_summary(identify, files.noise));
   files.written.push_back("allan_summary.yaml");
   if (plot) {
-    files.plot_problem = run_plot_script(
-        "plot_allan.py", {staging, "--statistic", "oadev", "--out", staging + "/allan.png"});
-    if (files.plot_problem.empty()) files.written.push_back("allan.png");
-    else files.plot_problem += ", so no plot";
+    files.plot_problem =
+        run_plot_script("plot_allan.py", {staging, "--statistic", "oadev", "--out", staging + "/allan.png"});
+    if (files.plot_problem.empty())
+      files.written.push_back("allan.png");
+    else
+      files.plot_problem += ", so no plot";
   }
   for (const std::string& name : report_file_names()) set.remove_at_commit(directory + "/" + name);
   set.commit();

@@ -45,7 +45,8 @@ struct TemperatureTopic {
   void throw_if_refused(const std::string& bag_path) const {
     if (refused == 0) return;
     throw InputError("bag " + bag_path + ": " + std::to_string(refused) + " of " + std::to_string(readings) +
-                     " readings on " + name + " are not finite or not in increasing header-stamp order; nothing "
+                     " readings on " + name +
+                     " are not finite or not in increasing header-stamp order; nothing "
                      "was written: fix the recording");
   }
 };
@@ -115,7 +116,8 @@ class BagCorrector {
     // Strictly ordered finite samples are always taken; the queue stays in step with the compensator's.
     if (!compensator_->add_imu({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2}, &ready)) {
       throw InputError("bag " + bag_->path() + ", topic " + summary_->imu_topic + ": the sample at " +
-                       format_number(record.stamp_s, 16) + " s is too close to the previous one for the thermal "
+                       format_number(record.stamp_s, 16) +
+                       " s is too close to the previous one for the thermal "
                        "compensator's seconds; nothing was written");
     }
     waiting_.push_back({message, instance.getTime()});
@@ -192,8 +194,8 @@ BagCorrectionSummary correct_bag(const BagRecording& recording, const std::strin
   if (summary.out_topic != summary.imu_topic) {
     for (const TopicInfo& topic : bag.topics()) {
       if (topic.name == summary.out_topic) {
-        throw InputError("bag " + recording.name() + " already has a topic " + summary.out_topic + " (" + topic.datatype +
-                         "); choose another output topic");
+        throw InputError("bag " + recording.name() + " already has a topic " + summary.out_topic + " (" +
+                         topic.datatype + "); choose another output topic");
       }
     }
   }

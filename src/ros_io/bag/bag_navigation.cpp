@@ -35,14 +35,15 @@ class BagRun {
 
   void on_outcome(pipeline::SampleOutcome outcome, std::int64_t stamp_ns) {
     ++result_.messages;
-    if ((pipeline::is_skipped(outcome) || outcome == pipeline::SampleOutcome::kAlignmentFailed) && result_.first_problem.empty()) {
-      result_.first_problem = "at stamp " + std::to_string(stamp_ns * kSecondsPerNanosecond) + " s: " +
-                              session_.last_problem();
+    if ((pipeline::is_skipped(outcome) || outcome == pipeline::SampleOutcome::kAlignmentFailed) &&
+        result_.first_problem.empty()) {
+      result_.first_problem =
+          "at stamp " + std::to_string(stamp_ns * kSecondsPerNanosecond) + " s: " + session_.last_problem();
     }
     if (!session_.new_solution()) return;
-    const bool due = result_.solutions.empty() ||
-                     (stamp_ns - result_.solutions.back().stamp_ns) * kSecondsPerNanosecond >=
-                         options_.output_interval_s - 1e-9;
+    const bool due =
+        result_.solutions.empty() ||
+        (stamp_ns - result_.solutions.back().stamp_ns) * kSecondsPerNanosecond >= options_.output_interval_s - 1e-9;
     if (due) result_.solutions.push_back(pipeline::make_solution(session_, world_));
   }
 
@@ -61,8 +62,10 @@ class BagRun {
 InputType parse_input_type(const std::string& key, const std::string& value) {
   if (value == "imu") return InputType::kImu;
   if (value == "increment") return InputType::kIncrement;
-  throw ConfigError("navigation input", key, "is '" + value + "'; use imu (sensor_msgs/Imu) or increment "
-                                              "(imu_lab/ImuIncrement)");
+  throw ConfigError("navigation input", key,
+                    "is '" + value +
+                        "'; use imu (sensor_msgs/Imu) or increment "
+                        "(imu_lab/ImuIncrement)");
 }
 
 const char* datatype_of(InputType input_type) {
@@ -91,8 +94,9 @@ BagNavigationResult navigate_bag(const BagRecording& recording, const BagNavigat
   result.counters = run.session().counters();
   result.alignment = run.session().alignment();
   if (const auto& divergence = run.session().divergence()) {
-    throw InputError("bag " + recording.name() + ", topic " + result.topic + ": the navigation state became unusable at stamp " +
-                     pipeline::format_stamp(divergence->stamp_ns) + " s (" + divergence->problem +
+    throw InputError("bag " + recording.name() + ", topic " + result.topic +
+                     ": the navigation state became unusable at stamp " + pipeline::format_stamp(divergence->stamp_ns) +
+                     " s (" + divergence->problem +
                      "); nothing written (check the samples around that stamp and their units)");
   }
   if (!run.session().navigating()) {
@@ -110,7 +114,8 @@ BagNavigationResult navigate_bag(const BagRecording& recording, const BagNavigat
     for (const pipeline::NavigationSolution& solution : result.solutions) {
       const auto match = truth.find(solution.stamp_ns);
       if (match == truth.end()) continue;
-      result.errors.push_back(pipeline::navigation_error(solution, match->second, run.world(), result.alignment->stamp_ns));
+      result.errors.push_back(
+          pipeline::navigation_error(solution, match->second, run.world(), result.alignment->stamp_ns));
     }
   }
   return result;
@@ -127,7 +132,8 @@ std::optional<TruthRecord> truth_at_start(const BagRecording& recording, const B
   try {
     if (options.input_type == InputType::kImu) {
       for_each_imu(recording, topic, [](const ImuRecord& record) {
-        if (record.angular_rate_rad_s.allFinite() && record.specific_force_m_s2.allFinite()) throw Found{record.stamp_ns};
+        if (record.angular_rate_rad_s.allFinite() && record.specific_force_m_s2.allFinite())
+          throw Found{record.stamp_ns};
       });
     } else {
       for_each_increment(recording, topic, [](const IncrementRecord& record) {
@@ -150,8 +156,9 @@ std::optional<TruthRecord> truth_at_start(const BagRecording& recording, const B
   } catch (const FoundTruth& found) {
     return found.record;
   }
-  throw InputError("bag " + recording.name() + ": " + options.truth_topic + " has no sample at " + pipeline::format_stamp(*start_ns) +
-                   " s, the first stamp of " + topic + " where the run starts; give the initial state instead");
+  throw InputError("bag " + recording.name() + ": " + options.truth_topic + " has no sample at " +
+                   pipeline::format_stamp(*start_ns) + " s, the first stamp of " + topic +
+                   " where the run starts; give the initial state instead");
 }
 
 }  // namespace ros_io

@@ -19,7 +19,8 @@ std::uint64_t write_emulated_bag(emulator::ImuEmulator& emulator, const Emulated
                                  const std::string& bag_path) {
   const char* const kSource = "emulated run";
   if (!(options.duration_s > 0.0) || !std::isfinite(options.duration_s)) {
-    throw ConfigError(kSource, "duration_s", "must be a finite number of seconds > 0, got " + format_number(options.duration_s, 6));
+    throw ConfigError(kSource, "duration_s",
+                      "must be a finite number of seconds > 0, got " + format_number(options.duration_s, 6));
   }
   const double interval_s = emulator.sample_interval_s();
   const double samples = options.duration_s / interval_s;
@@ -44,7 +45,8 @@ std::uint64_t write_emulated_bag(emulator::ImuEmulator& emulator, const Emulated
     bag.write(options.topics.raw, stamp, messages.raw);
     if (options.write_temperature) {
       bag.write(options.topics.temperature, stamp, messages.temperature);
-      if (messages.second_temperature) bag.write(options.topics.second_temperature, stamp, *messages.second_temperature);
+      if (messages.second_temperature)
+        bag.write(options.topics.second_temperature, stamp, *messages.second_temperature);
     }
     if (options.write_truth) bag.write(options.topics.truth, stamp, messages.truth);
     if (options.write_increments) bag.write(options.topics.increment, stamp, messages.increment);

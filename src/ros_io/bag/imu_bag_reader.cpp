@@ -244,8 +244,8 @@ TopicInfo OpenBag::choose_topic(const std::string& requested, const std::string&
     for (const auto& topic : topics) {
       if (topic.name != requested) continue;
       if (topic.datatype != datatype) {
-        throw InputError("bag " + path_ + ": topic " + requested + " carries " + topic.datatype +
-                         ", not " + datatype + "; topics in the bag:" + describe(topics));
+        throw InputError("bag " + path_ + ": topic " + requested + " carries " + topic.datatype + ", not " + datatype +
+                         "; topics in the bag:" + describe(topics));
       }
       return topic;
     }
@@ -259,8 +259,8 @@ TopicInfo OpenBag::choose_topic(const std::string& requested, const std::string&
   if (candidates.empty()) {
     throw InputError("bag " + path_ + " has no " + datatype + " topic; topics in the bag:" + describe(topics));
   }
-  throw InputError("bag " + path_ + " has several " + datatype + " topics; choose one with --topic:" +
-                   describe(candidates));
+  throw InputError("bag " + path_ + " has several " + datatype +
+                   " topics; choose one with --topic:" + describe(candidates));
 }
 
 std::size_t OpenBag::for_each_imu(const std::string& topic, const std::function<void(const ImuRecord&)>& on_record) {
@@ -272,17 +272,18 @@ std::size_t OpenBag::for_each_imu(const std::string& topic, const std::function<
 
 std::size_t OpenBag::for_each_increment(const std::string& topic,
                                         const std::function<void(const IncrementRecord&)>& on_record) {
-  return stream<imu_lab::ImuIncrement>(
-      topic, "imu_lab/ImuIncrement",
-      [&](const imu_lab::ImuIncrement& message) { on_record(to_increment_record(message)); });
+  return stream<imu_lab::ImuIncrement>(topic, "imu_lab/ImuIncrement", [&](const imu_lab::ImuIncrement& message) {
+    on_record(to_increment_record(message));
+  });
 }
 
-std::size_t OpenBag::for_each_truth(const std::string& topic, const std::function<void(const TruthRecord&)>& on_record) {
+std::size_t OpenBag::for_each_truth(const std::string& topic,
+                                    const std::function<void(const TruthRecord&)>& on_record) {
   return stream<imu_lab::ImuTruth>(topic, "imu_lab/ImuTruth", [&](const imu_lab::ImuTruth& message) {
     TruthRecord record;
     record.stamp_ns = static_cast<std::int64_t>(message.header.stamp.toNSec());
-    record.q_body_to_enu = Eigen::Quaterniond(message.orientation.w, message.orientation.x, message.orientation.y,
-                                              message.orientation.z);
+    record.q_body_to_enu =
+        Eigen::Quaterniond(message.orientation.w, message.orientation.x, message.orientation.y, message.orientation.z);
     record.angular_rate_rad_s = to_eigen(message.angular_velocity_rad_s);
     record.specific_force_m_s2 = to_eigen(message.specific_force_m_s2);
     record.latitude_rad = message.latitude_rad;
@@ -295,16 +296,18 @@ std::size_t OpenBag::for_each_truth(const std::string& topic, const std::functio
 
 std::size_t OpenBag::for_each_temperature(const std::string& topic,
                                           const std::function<void(const TemperatureRecord&)>& on_record) {
-  return stream<sensor_msgs::Temperature>(topic, "sensor_msgs/Temperature", [&](const sensor_msgs::Temperature& message) {
-    on_record({message.header.stamp.toSec(), message.temperature});
-  });
+  return stream<sensor_msgs::Temperature>(topic, "sensor_msgs/Temperature",
+                                          [&](const sensor_msgs::Temperature& message) {
+                                            on_record({message.header.stamp.toSec(), message.temperature});
+                                          });
 }
 
 std::size_t OpenBag::count_in_files(const std::string& topic) const {
   std::size_t count = 0;
   for (const auto& file : files_) {
     try {
-      count += topic.empty() ? rosbag::View(file->bag).size() : rosbag::View(file->bag, rosbag::TopicQuery(topic)).size();
+      count +=
+          topic.empty() ? rosbag::View(file->bag).size() : rosbag::View(file->bag, rosbag::TopicQuery(topic)).size();
     } catch (const rosbag::BagException&) {
       // Only for the progress line: the pass itself reports the damage.
     }
@@ -324,9 +327,11 @@ std::size_t OpenBag::for_each_message_in_order(const std::function<void(const ro
         if (on_progress_) on_progress_(count, total);
       }
     } catch (const rosbag::BagException& error) {
-      throw InputError("bag " + file->path + " is damaged after " + std::to_string(count) + " messages: " + error.what());
+      throw InputError("bag " + file->path + " is damaged after " + std::to_string(count) +
+                       " messages: " + error.what());
     } catch (const ros::Exception& error) {
-      throw InputError("bag " + file->path + " is damaged after " + std::to_string(count) + " messages: " + error.what());
+      throw InputError("bag " + file->path + " is damaged after " + std::to_string(count) +
+                       " messages: " + error.what());
     }
   }
   return count;

@@ -63,10 +63,12 @@ CsvImportReport import_csv_to_bag(const std::string& csv_path, const io::CsvImpo
   });
   const io::CsvImportSummary& summary = report.summary;
   if (summary.rejected_row_count > 0 && options.bad_rows == io::BadRowPolicy::kRefuse) {
-    throw InputError(summary.describe_rejections(csv_path) + "\nnothing written; fix these rows, or pass "
+    throw InputError(summary.describe_rejections(csv_path) +
+                     "\nnothing written; fix these rows, or pass "
                      "--on-bad-row skip to import the others (a skipped row is a gap in the data)");
   }
-  if (summary.accepted_rows == 0) throw InputError(summary.describe_rejections(csv_path) + "\nno good row; nothing written");
+  if (summary.accepted_rows == 0)
+    throw InputError(summary.describe_rejections(csv_path) + "\nno good row; nothing written");
   bag.commit();
   return report;
 }
@@ -104,7 +106,8 @@ CsvExportReport export_bag_to_csv(const BagRecording& recording, const CsvExport
       io::write_imu_csv_row(out, sample, format);
       ++report.rows;
     });
-    if (report.rows == 0) throw InputError("bag " + recording.name() + ": topic " + report.imu_topic + " has no messages; nothing written");
+    if (report.rows == 0)
+      throw InputError("bag " + recording.name() + ": topic " + report.imu_topic + " has no messages; nothing written");
   });
   report.unmatched_temperatures = temperature_by_stamp.size();
   return report;

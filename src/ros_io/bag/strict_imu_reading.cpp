@@ -44,8 +44,7 @@ void StrictImuCheck::throw_if_refused(const BagRecording& recording, const std::
   std::vector<std::string> problems;
   if (non_finite_ + unordered_ > 0) {
     problems.push_back(std::to_string(non_finite_) + " samples with NaN/Inf (or beyond +-1e100) and " +
-                       std::to_string(unordered_) +
-                       " stamps not after the previous one (duplicate or out of order)");
+                       std::to_string(unordered_) + " stamps not after the previous one (duplicate or out of order)");
   }
   const auto absent = [&](std::size_t count, bool needed, const char* what) {
     if (count == 0 || (!needed && count == accepted_)) return;

@@ -22,10 +22,13 @@ std::size_t read_temperatures(const BagRecording& recording, const std::string& 
   const std::size_t count = for_each_temperature(recording, topic, [&](const TemperatureRecord& record) {
     if (!history->add(record.stamp_s, record.temperature_c)) ++refused;
   });
-  if (count == 0) throw InputError("bag " + recording.name() + ": topic " + topic + " has no messages; the " + role + " was not recorded");
+  if (count == 0)
+    throw InputError("bag " + recording.name() + ": topic " + topic + " has no messages; the " + role +
+                     " was not recorded");
   if (refused > 0) {
-    throw InputError("bag " + recording.name() + ": " + std::to_string(refused) + " of " + std::to_string(count) + " readings on " +
-                     topic + " are not finite or not in increasing header-stamp order; fix the recording");
+    throw InputError("bag " + recording.name() + ": " + std::to_string(refused) + " of " + std::to_string(count) +
+                     " readings on " + topic +
+                     " are not finite or not in increasing header-stamp order; fix the recording");
   }
   return count;
 }
@@ -41,7 +44,8 @@ ThermalBagWindows read_thermal_windows(const BagRecording& recording, const Ther
   thermal::TemperatureHistory temperature, second_temperature;
   out.temperature_messages = read_temperatures(recording.whole(), topics.temperature, "thermosensor", &temperature);
   const bool with_second = !topics.second_temperature.empty();
-  if (with_second) read_temperatures(recording.whole(), topics.second_temperature, "second thermosensor", &second_temperature);
+  if (with_second)
+    read_temperatures(recording.whole(), topics.second_temperature, "second thermosensor", &second_temperature);
   thermal::ThermalWindowAverager averager(settings, temperature, with_second ? &second_temperature : nullptr);
   out.imu_messages = for_each_imu_strictly(recording, out.imu_topic, [&](const ImuRecord& record) {
     averager.add({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2});

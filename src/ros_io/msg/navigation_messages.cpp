@@ -44,7 +44,8 @@ nav_msgs::Odometry to_odometry(const pipeline::NavigationSolution& solution, con
   return odometry;
 }
 
-geometry_msgs::TransformStamped to_transform(const pipeline::NavigationSolution& solution, const NavigationFrames& frames) {
+geometry_msgs::TransformStamped to_transform(const pipeline::NavigationSolution& solution,
+                                             const NavigationFrames& frames) {
   const geometry_msgs::PoseStamped pose = to_pose(solution, frames);
   geometry_msgs::TransformStamped transform;
   transform.header = pose.header;

@@ -38,8 +38,8 @@ imu_lab::NoiseAxis to_noise_axis(identify::SensorKind sensor, int axis, const id
   return message;
 }
 
-imu_lab::NoiseParameters to_noise_parameters(const pipeline::AllanNoiseReport& report, const allan::StreamingSnapshot& snapshot,
-                                             const std_msgs::Header& header) {
+imu_lab::NoiseParameters to_noise_parameters(const pipeline::AllanNoiseReport& report,
+                                             const allan::StreamingSnapshot& snapshot, const std_msgs::Header& header) {
   imu_lab::NoiseParameters message;
   message.header = header;
   message.tau0_s = snapshot.timing.tau0_s;

@@ -71,7 +71,8 @@ panel::NoiseReport to_noise_report(const imu_lab::NoiseParameters& message) {
 
 panel::AttitudeSample to_attitude_sample(const nav_msgs::Odometry& message) {
   const auto& q = message.pose.pose.orientation;
-  const Eigen::Vector3d roll_pitch_yaw = pipeline::roll_pitch_yaw_from_quaternion(Eigen::Quaterniond(q.w, q.x, q.y, q.z));
+  const Eigen::Vector3d roll_pitch_yaw =
+      pipeline::roll_pitch_yaw_from_quaternion(Eigen::Quaterniond(q.w, q.x, q.y, q.z));
   return {roll_pitch_yaw.x(), roll_pitch_yaw.y(), roll_pitch_yaw.z()};
 }
 

@@ -19,7 +19,8 @@ constexpr double kLogThrottle_s = 5.0;
 bool file_exists(const std::string& path) { return std::ifstream(path).good(); }
 
 // A fresh engine, or the checkpoint's when resuming from one that exists.
-std::unique_ptr<allan::StreamingAllan> make_engine(const AllanMonitorSettings& settings, const std::string& resume_key) {
+std::unique_ptr<allan::StreamingAllan> make_engine(const AllanMonitorSettings& settings,
+                                                   const std::string& resume_key) {
   if (!settings.resume || !file_exists(settings.checkpoint_path)) {
     if (settings.resume) {
       ROS_WARN("allan_monitor: no checkpoint at %s yet; starting from scratch", settings.checkpoint_path.c_str());
@@ -27,15 +28,17 @@ std::unique_ptr<allan::StreamingAllan> make_engine(const AllanMonitorSettings& s
     return std::make_unique<allan::StreamingAllan>(settings.engine);
   }
   try {
-    auto engine = std::make_unique<allan::StreamingAllan>(allan::StreamingAllan::load_checkpoint(settings.checkpoint_path));
+    auto engine =
+        std::make_unique<allan::StreamingAllan>(allan::StreamingAllan::load_checkpoint(settings.checkpoint_path));
     if (engine->options().input_kind != settings.engine.input_kind ||
         engine->options().channel_count != settings.engine.channel_count) {
       throw InputError("it holds another input type than input_type says");
     }
     return engine;
   } catch (const InputError& error) {
-    throw ConfigError(resume_key, "resume", "cannot resume from the checkpoint " + settings.checkpoint_path + ": " +
-                                                error.what() + "; delete it or set resume: false");
+    throw ConfigError(resume_key, "resume",
+                      "cannot resume from the checkpoint " + settings.checkpoint_path + ": " + error.what() +
+                          "; delete it or set resume: false");
   }
 }
 
@@ -88,9 +91,10 @@ AllanMonitorNode::AllanMonitorNode(ros::NodeHandle& node, ros::NodeHandle& priva
     std::lock_guard<std::mutex> lock(mutex_);
     diagnostics_.update();
   });
-  ROS_INFO("allan_monitor: %s input on %s; curves every %.3g s; report to %s%s%s", allan_input_datatype(settings_.input),
-           input_subscriber_.getTopic().c_str(), settings_.publish_period_s, settings_.report_dir.c_str(),
-           settings_.checkpoint_path.empty() ? "" : "; checkpoints to ", settings_.checkpoint_path.c_str());
+  ROS_INFO("allan_monitor: %s input on %s; curves every %.3g s; report to %s%s%s",
+           allan_input_datatype(settings_.input), input_subscriber_.getTopic().c_str(), settings_.publish_period_s,
+           settings_.report_dir.c_str(), settings_.checkpoint_path.empty() ? "" : "; checkpoints to ",
+           settings_.checkpoint_path.c_str());
 }
 
 AllanMonitorNode::~AllanMonitorNode() { finish(); }
@@ -98,14 +102,16 @@ AllanMonitorNode::~AllanMonitorNode() { finish(); }
 void AllanMonitorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message) {
   const ImuRecord record = to_imu_record(*message);
   // A triad not provided (covariance[0] = -1) reads as NaN, which its channels leave out.
-  add(pipeline::to_allan_sample(record), message->header, record.has_angular_rate && record.has_specific_force ? nullptr : &record);
+  add(pipeline::to_allan_sample(record), message->header,
+      record.has_angular_rate && record.has_specific_force ? nullptr : &record);
 }
 
 void AllanMonitorNode::on_increment(const imu_lab::ImuIncrement::ConstPtr& message) {
   add(pipeline::to_allan_sample(to_increment_record(*message)), message->header, nullptr);
 }
 
-void AllanMonitorNode::add(const pipeline::AllanSample& sample, const std_msgs::Header& header, const ImuRecord* incomplete) {
+void AllanMonitorNode::add(const pipeline::AllanSample& sample, const std_msgs::Header& header,
+                           const ImuRecord* incomplete) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (finished_) return;
   if (resume_after_stamp_ns_ && sample.stamp_ns <= *resume_after_stamp_ns_) {
@@ -114,12 +120,15 @@ void AllanMonitorNode::add(const pipeline::AllanSample& sample, const std_msgs::
   }
   const StampVerdict verdict = health_->check_stamp(sample.stamp_ns);
   if (verdict == StampVerdict::kDuplicate || verdict == StampVerdict::kOutOfOrder) {
-    ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: stamp %.9f s not after the previous one: sample dropped "
-                      "(counted in diagnostics)", sample.stamp_ns * 1e-9);
+    ROS_WARN_THROTTLE(kLogThrottle_s,
+                      "allan_monitor: stamp %.9f s not after the previous one: sample dropped "
+                      "(counted in diagnostics)",
+                      sample.stamp_ns * 1e-9);
   }
   if (incomplete != nullptr) {
     health_->check_values(*incomplete);
-    ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: a sample at %.9f s without angular rate or specific force "
+    ROS_WARN_THROTTLE(kLogThrottle_s,
+                      "allan_monitor: a sample at %.9f s without angular rate or specific force "
                       "(covariance[0] = -1): that triad's channels leave it out (counted in diagnostics)",
                       sample.stamp_ns * 1e-9);
   } else if (std::any_of(sample.values.begin(), sample.values.end(), [](double v) { return !std::isfinite(v); })) {
@@ -128,8 +137,10 @@ void AllanMonitorNode::add(const pipeline::AllanSample& sample, const std_msgs::
                       sample.stamp_ns * 1e-9);
   } else if (!std::all_of(sample.values.begin(), sample.values.end(), is_usable_imu_value)) {
     health_->count_too_large();
-    ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: a value beyond +-%.0e at %.9f s excluded from its channel "
-                      "(counted in diagnostics)", kLargestUsableImuValue, sample.stamp_ns * 1e-9);
+    ROS_WARN_THROTTLE(kLogThrottle_s,
+                      "allan_monitor: a value beyond +-%.0e at %.9f s excluded from its channel "
+                      "(counted in diagnostics)",
+                      kLargestUsableImuValue, sample.stamp_ns * 1e-9);
   }
   output_steps_.push(sample.values.data());
   // The engine splits at gaps and drops unordered stamps itself (streaming_options.h), also at the
@@ -138,8 +149,10 @@ void AllanMonitorNode::add(const pipeline::AllanSample& sample, const std_msgs::
   push_screened();
   for (; counted_impulse_events_ < screen_.event_count(); ++counted_impulse_events_) {
     health_->count(impulse_condition_);
-    ROS_WARN_THROTTLE(kLogThrottle_s, "allan_monitor: knock or spike detected at %.9f s: its samples are kept "
-                      "from the curves (listed in the report, counted in diagnostics)", sample.stamp_ns * 1e-9);
+    ROS_WARN_THROTTLE(kLogThrottle_s,
+                      "allan_monitor: knock or spike detected at %.9f s: its samples are kept "
+                      "from the curves (listed in the report, counted in diagnostics)",
+                      sample.stamp_ns * 1e-9);
   }
   last_header_ = header;
 }
@@ -186,7 +199,8 @@ void AllanMonitorNode::publish_curves() {
   latest_snapshot_ = std::move(now.snapshot);
   for (const allan::Statistic statistic : settings_.statistics) {
     const double confidence = engine_->options().confidence;
-    gyro_publisher_.publish(to_allan_deviation(*latest_snapshot_, statistic, AllanTriad::kGyro, confidence, last_header_));
+    gyro_publisher_.publish(
+        to_allan_deviation(*latest_snapshot_, statistic, AllanTriad::kGyro, confidence, last_header_));
     accel_publisher_.publish(
         to_allan_deviation(*latest_snapshot_, statistic, AllanTriad::kAccel, confidence, last_header_));
   }
@@ -226,24 +240,23 @@ void AllanMonitorNode::start_identification() {
   if (identify_thread_.joinable()) identify_thread_.join();  // finished: identifying_ is false
   identifying_ = true;
   // The fit takes seconds on a long record: off the thread that publishes the curves, on copies.
-  identify_thread_ = std::thread([this, run = run_description(now), snapshot = std::move(now.snapshot),
-                                  header = last_header_] {
-    try {
-      noise_publisher_.publish(
-          to_noise_parameters(pipeline::identify_triads(run, snapshot, settings_.identify), snapshot, header));
-    } catch (const std::exception& error) {
-      ROS_WARN("allan_monitor: periodic identification: %s", error.what());
-    }
-    identifying_ = false;
-  });
+  identify_thread_ =
+      std::thread([this, run = run_description(now), snapshot = std::move(now.snapshot), header = last_header_] {
+        try {
+          noise_publisher_.publish(
+              to_noise_parameters(pipeline::identify_triads(run, snapshot, settings_.identify), snapshot, header));
+        } catch (const std::exception& error) {
+          ROS_WARN("allan_monitor: periodic identification: %s", error.what());
+        }
+        identifying_ = false;
+      });
 }
 
 std::string AllanMonitorNode::write_report() {
   const Current now = current();
   if (!now.warmed_up) {
-    throw InputError("no report yet: " + std::to_string(now.samples) + " samples on " +
-                     input_subscriber_.getTopic() + ", the warm-up needs " +
-                     std::to_string(engine_->options().warm_up_sample_count));
+    throw InputError("no report yet: " + std::to_string(now.samples) + " samples on " + input_subscriber_.getTopic() +
+                     ", the warm-up needs " + std::to_string(engine_->options().warm_up_sample_count));
   }
   const pipeline::AllanRunDescription run = run_description(now);
   const allan::StreamingSnapshot& snapshot = now.snapshot;

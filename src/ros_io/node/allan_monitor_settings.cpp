@@ -31,7 +31,7 @@ allan::Statistic parse_statistic(const std::string& key, const std::string& name
 AllanMonitorSettings load_allan_monitor_settings(const ros::NodeHandle& private_node) {
   AllanMonitorSettings settings;
   settings.input = pipeline::parse_allan_input(private_node.resolveName("input_type"),
-                                     parameter<std::string>(private_node, "input_type", "imu"));
+                                               parameter<std::string>(private_node, "input_type", "imu"));
   if (has_parameter(private_node, "statistics")) {
     const auto statistic_names = parameter(private_node, "statistics", std::vector<std::string>());
     if (statistic_names.empty()) throw parameter_error(private_node, "statistics", "lists no statistic");
@@ -53,7 +53,8 @@ AllanMonitorSettings load_allan_monitor_settings(const ros::NodeHandle& private_
   settings.queue_size = positive_parameter(private_node, "queue_size", settings.queue_size);
   settings.identify.enabled = parameter(private_node, "identify", settings.identify.enabled);
   settings.identify_period_s = non_negative_parameter(private_node, "identify_period_s", settings.identify_period_s);
-  settings.identify.bootstrap_replicas = parameter(private_node, "bootstrap_replicas", settings.identify.bootstrap_replicas);
+  settings.identify.bootstrap_replicas =
+      parameter(private_node, "bootstrap_replicas", settings.identify.bootstrap_replicas);
   const std::string replicas_problem = pipeline::bootstrap_replicas_problem(settings.identify.bootstrap_replicas);
   if (!replicas_problem.empty()) {
     throw parameter_error(private_node, "bootstrap_replicas", replicas_problem);

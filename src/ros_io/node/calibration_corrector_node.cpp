@@ -66,13 +66,17 @@ void CalibrationCorrectorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message)
   // Like every node of the chain: a duplicate or out-of-order stamp is dropped, not passed on.
   const StampVerdict verdict = health_->check_stamp(static_cast<std::int64_t>(message->header.stamp.toNSec()));
   if (verdict == StampVerdict::kDuplicate || verdict == StampVerdict::kOutOfOrder) {
-    ROS_WARN_THROTTLE(kLogThrottle_s, "calibration_corrector: dropped a sample at %.9f: its stamp is not after the "
-                      "previous one (counted in diagnostics)", message->header.stamp.toSec());
+    ROS_WARN_THROTTLE(kLogThrottle_s,
+                      "calibration_corrector: dropped a sample at %.9f: its stamp is not after the "
+                      "previous one (counted in diagnostics)",
+                      message->header.stamp.toSec());
     return;
   }
   if (!health_->check_values(to_imu_record(*message))) {
-    ROS_WARN_THROTTLE(kLogThrottle_s, "calibration_corrector: dropped a sample with NaN/Inf, a value beyond +-1e100 or "
-                      "a triad not provided at %.9f (counted in diagnostics)", message->header.stamp.toSec());
+    ROS_WARN_THROTTLE(kLogThrottle_s,
+                      "calibration_corrector: dropped a sample with NaN/Inf, a value beyond +-1e100 or "
+                      "a triad not provided at %.9f (counted in diagnostics)",
+                      message->header.stamp.toSec());
     return;
   }
   // A shared message: nodelets downstream in the same manager receive this pointer, not a copy.

@@ -106,9 +106,9 @@ std::string resolve_config(const std::string& kind, const std::string& name_or_p
                             " (give a path, or one of the names in config/" + kind + "/)");
     }
   }
-  throw ConfigError(name_or_path, kind,
-                    "no such file, and the package's config/" + kind + "/ was not found to look for the name; " +
-                        what_to_source());
+  throw ConfigError(
+      name_or_path, kind,
+      "no such file, and the package's config/" + kind + "/ was not found to look for the name; " + what_to_source());
 }
 
 std::string run_plot_script(const std::string& script, const std::vector<std::string>& arguments) {

@@ -55,7 +55,8 @@ void ImuEmulatorNode::publish_next() {
   raw_publisher_.publish(boost::make_shared<sensor_msgs::Imu>(std::move(messages.raw)));
   temperature_publisher_.publish(boost::make_shared<sensor_msgs::Temperature>(std::move(messages.temperature)));
   if (messages.second_temperature) {
-    second_temperature_publisher_.publish(boost::make_shared<sensor_msgs::Temperature>(std::move(*messages.second_temperature)));
+    second_temperature_publisher_.publish(
+        boost::make_shared<sensor_msgs::Temperature>(std::move(*messages.second_temperature)));
   }
   if (publish_truth_) truth_publisher_.publish(boost::make_shared<imu_lab::ImuTruth>(std::move(messages.truth)));
   if (publish_increments_) {

@@ -28,7 +28,8 @@ InputHealthSettings load_input_health_settings(const ros::NodeHandle& private_no
   InputHealthSettings settings;
   settings.expected_rate_hz = parameter(private_node, "expected_rate_hz", 0.0);
   if (!(settings.expected_rate_hz >= 0.0) || !std::isfinite(settings.expected_rate_hz)) {
-    throw parameter_error(private_node, "expected_rate_hz", "must be a rate in Hz, or 0 to learn it from the first samples");
+    throw parameter_error(private_node, "expected_rate_hz",
+                          "must be a rate in Hz, or 0 to learn it from the first samples");
   }
   settings.gap_factor = parameter(private_node, "gap_factor", default_gap_factor);
   if (!(settings.gap_factor > 1.0) || !std::isfinite(settings.gap_factor)) {
@@ -119,17 +120,19 @@ void InputHealth::fill(diagnostic_updater::DiagnosticStatusWrapper& status, cons
     problems += (problems.empty() ? "" : "; ") + text;
   };
   if (samples_.fresh() == 0) note(DiagnosticStatus::WARN, "no input on " + input_ + " since the last report");
-  if (non_finite_.fresh() > 0) note(DiagnosticStatus::WARN, std::to_string(non_finite_.fresh()) + " samples with NaN/Inf");
+  if (non_finite_.fresh() > 0)
+    note(DiagnosticStatus::WARN, std::to_string(non_finite_.fresh()) + " samples with NaN/Inf");
   if (too_large_.fresh() > 0) {
     note(DiagnosticStatus::WARN, std::to_string(too_large_.fresh()) + " " + kTooLargeDescription);
   }
   if (absent_triad_.fresh() > 0) {
-    note(DiagnosticStatus::WARN, std::to_string(absent_triad_.fresh()) + " samples without angular rate or specific "
-                                 "force (covariance[0] = -1)");
+    note(DiagnosticStatus::WARN, std::to_string(absent_triad_.fresh()) +
+                                     " samples without angular rate or specific "
+                                     "force (covariance[0] = -1)");
   }
   if (gaps_.fresh() > 0) {
-    note(DiagnosticStatus::WARN, std::to_string(gaps_.fresh()) + " gaps in the stamps (" +
-                                     format("%.3f", window_gap_s_) + " s missing)");
+    note(DiagnosticStatus::WARN,
+         std::to_string(gaps_.fresh()) + " gaps in the stamps (" + format("%.3f", window_gap_s_) + " s missing)");
   }
   if (duplicates_.fresh() > 0) note(DiagnosticStatus::WARN, std::to_string(duplicates_.fresh()) + " duplicate stamps");
   if (out_of_order_.fresh() > 0) {
@@ -138,18 +141,20 @@ void InputHealth::fill(diagnostic_updater::DiagnosticStatusWrapper& status, cons
   last_rate_hz_ = window_interval_count_ > 0 ? window_interval_count_ / window_interval_sum_s_ : 0.0;
   if (rate_known() && window_interval_count_ >= settings_.min_rate_intervals &&
       std::abs(last_rate_hz_ * expected_interval_s_ - 1.0) > settings_.rate_tolerance) {
-    note(DiagnosticStatus::WARN, "input rate " + format("%.4g", last_rate_hz_) + " Hz, expected " +
-                                     format("%.4g", expected_rate_hz()) + " Hz");
+    note(DiagnosticStatus::WARN,
+         "input rate " + format("%.4g", last_rate_hz_) + " Hz, expected " + format("%.4g", expected_rate_hz()) + " Hz");
   }
   for (const Condition& condition : conditions_) {
-    if (condition.count.fresh() > 0) note(condition.level, std::to_string(condition.count.fresh()) + " " + condition.description);
+    if (condition.count.fresh() > 0)
+      note(condition.level, std::to_string(condition.count.fresh()) + " " + condition.description);
   }
   status.summary(level, problems.empty() ? ok_message : problems);
 
   status.add("input", input_);
   status.add("input rate from stamps [Hz]", last_rate_hz_);
-  status.add("expected rate [Hz]", rate_known() ? format("%.6g", expected_rate_hz()) + (rate_learned_ ? " (learned)" : "")
-                                                : std::string("learning"));
+  status.add("expected rate [Hz]", rate_known()
+                                       ? format("%.6g", expected_rate_hz()) + (rate_learned_ ? " (learned)" : "")
+                                       : std::string("learning"));
   status.add("samples", samples_.total);
   status.add("NaN/Inf samples", non_finite_.total);
   status.add(kTooLargeDescription, too_large_.total);

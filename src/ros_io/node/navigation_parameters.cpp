@@ -25,8 +25,8 @@ Eigen::Vector3d initial_velocity_parameter(const ros::NodeHandle& node, bool ali
   }
   const std::vector<double> value = parameter(node, name, std::vector<double>{0.0, 0.0, 0.0});
   if (value.size() != 3) {
-    throw parameter_error(node, name, "expected [east, north, up] in m/s, got " + std::to_string(value.size()) +
-                                          " numbers");
+    throw parameter_error(node, name,
+                          "expected [east, north, up] in m/s, got " + std::to_string(value.size()) + " numbers");
   }
   return Eigen::Vector3d(value[0], value[1], value[2]);  // finiteness: pipeline::validate()
 }
@@ -53,8 +53,8 @@ pipeline::NavigationSettings load_navigation_settings(const ros::NodeHandle& pri
   const ros::NodeHandle& p = private_node;
   settings.align = parameter(p, "align", true);
   settings.alignment.duration_s = parameter(p, "alignment_duration_s", 300.0);
-  settings.alignment.heading_source =
-      pipeline::parse_heading_source(p.resolveName("heading_source"), parameter<std::string>(p, "heading_source", "gyrocompass"));
+  settings.alignment.heading_source = pipeline::parse_heading_source(
+      p.resolveName("heading_source"), parameter<std::string>(p, "heading_source", "gyrocompass"));
   settings.initial_roll_rad = degrees_parameter_rad(p, "initial_roll_deg");
   settings.initial_pitch_rad = degrees_parameter_rad(p, "initial_pitch_deg");
   settings.initial_yaw_rad = degrees_parameter_rad(p, "initial_yaw_deg");
@@ -65,8 +65,8 @@ pipeline::NavigationSettings load_navigation_settings(const ros::NodeHandle& pri
   settings.height_m = parameter(p, "height_m", 0.0);
   settings.navigator.earth =
       pipeline::parse_earth_model(p.resolveName("earth_model"), parameter<std::string>(p, "earth_model", "wgs84"));
-  settings.navigator.vertical.mode =
-      pipeline::parse_vertical_channel(p.resolveName("vertical_channel"), parameter<std::string>(p, "vertical_channel", "held"));
+  settings.navigator.vertical.mode = pipeline::parse_vertical_channel(
+      p.resolveName("vertical_channel"), parameter<std::string>(p, "vertical_channel", "held"));
   settings.navigator.vertical.fixed_reference_height_m = parameter(p, "reference_height_m", settings.height_m);
   settings.navigator.corrections.coning_correction = parameter(p, "coning_correction", true);
   settings.navigator.corrections.sculling_correction = parameter(p, "sculling_correction", true);

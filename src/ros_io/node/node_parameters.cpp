@@ -24,21 +24,17 @@ std::string shortened(const std::string& text) {
 // The value as YAML would show it: 'fast', 1.5, true, ['oadev', 3], {...}.
 std::string value_text(XmlRpcValue& value) {
   switch (value.getType()) {
-    case XmlRpcValue::TypeBoolean:
-      return static_cast<bool&>(value) ? "true" : "false";
-    case XmlRpcValue::TypeInt:
-      return std::to_string(static_cast<int&>(value));
-    case XmlRpcValue::TypeDouble:
-      return format_number(static_cast<double&>(value), 6);
-    case XmlRpcValue::TypeString:
-      return "'" + shortened(static_cast<std::string&>(value)) + "'";
+    case XmlRpcValue::TypeBoolean: return static_cast<bool&>(value) ? "true" : "false";
+    case XmlRpcValue::TypeInt: return std::to_string(static_cast<int&>(value));
+    case XmlRpcValue::TypeDouble: return format_number(static_cast<double&>(value), 6);
+    case XmlRpcValue::TypeString: return "'" + shortened(static_cast<std::string&>(value)) + "'";
     case XmlRpcValue::TypeArray: {
       std::string text = "[";
-      for (int k = 0; k < value.size() && text.size() <= kShownLength; ++k) text += (k > 0 ? ", " : "") + value_text(value[k]);
+      for (int k = 0; k < value.size() && text.size() <= kShownLength; ++k)
+        text += (k > 0 ? ", " : "") + value_text(value[k]);
       return shortened(text) + "]";
     }
-    default:
-      return "{...}";
+    default: return "{...}";
   }
 }
 
@@ -161,7 +157,8 @@ Value parameter(const ros::NodeHandle& node, const std::string& name, const Valu
   if (!node.getParam(name, given)) return fallback;
   Value value{};
   if (!ParameterType<Value>::take(given, value)) {
-    throw parameter_error(node, name, std::string("expected ") + ParameterType<Value>::name + ", got " + describe(given));
+    throw parameter_error(node, name,
+                          std::string("expected ") + ParameterType<Value>::name + ", got " + describe(given));
   }
   return value;
 }

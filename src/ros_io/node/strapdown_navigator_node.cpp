@@ -20,7 +20,7 @@ StrapdownNavigatorNode::StrapdownNavigatorNode(ros::NodeHandle& node, ros::NodeH
   const pipeline::NavigationSettings settings = load_navigation_settings(private_node);
   session_ = std::make_unique<pipeline::NavigationSession>(settings);
   world_ = std::make_unique<nav::LocalEnuFrame>(settings.navigator.earth, settings.latitude_rad, settings.longitude_rad,
-                                           settings.height_m);
+                                                settings.height_m);
   frames_.world = parameter(private_node, "world_frame", frames_.world);
   frames_.body = parameter(private_node, "body_frame", frames_.body);
   publish_tf_ = parameter(private_node, "publish_tf", true);
@@ -28,18 +28,18 @@ StrapdownNavigatorNode::StrapdownNavigatorNode(ros::NodeHandle& node, ros::NodeH
   path_interval_s_ = positive_parameter(private_node, "path_interval_s", 1.0);
   path_max_poses_ = static_cast<std::size_t>(positive_parameter(private_node, "path_max_poses", 3600));
   const int queue_size = positive_parameter(private_node, "queue_size", 2000);
-  const InputType input_type =
-      parse_input_type(private_node.resolveName("input_type"), parameter<std::string>(private_node, "input_type", "imu"));
+  const InputType input_type = parse_input_type(private_node.resolveName("input_type"),
+                                                parameter<std::string>(private_node, "input_type", "imu"));
   path_.header.frame_id = frames_.world;
 
   // The input health is ready before the first subscription: in a nodelet manager the callbacks
   // run on worker threads as soon as it exists (one found health_ still empty and crashed it).
   health_.emplace(node.resolveName(input_type == InputType::kImu ? "imu/corrected" : "imu/increment"),
                   load_input_health_settings(private_node, settings.gap_factor));
-  bad_interval_condition_ = health_->define_condition("increments skipped: interval_s not positive",
-                                                      diagnostic_msgs::DiagnosticStatus::WARN);
-  failed_alignment_condition_ = health_->define_condition("failed alignments (started again)",
-                                                          diagnostic_msgs::DiagnosticStatus::WARN);
+  bad_interval_condition_ =
+      health_->define_condition("increments skipped: interval_s not positive", diagnostic_msgs::DiagnosticStatus::WARN);
+  failed_alignment_condition_ =
+      health_->define_condition("failed alignments (started again)", diagnostic_msgs::DiagnosticStatus::WARN);
   odometry_publisher_ = node.advertise<nav_msgs::Odometry>("nav/odometry", queue_size);
   path_publisher_ = node.advertise<nav_msgs::Path>("nav/path", 10);
   alignment_publisher_ = node.advertise<imu_lab::Alignment>("nav/alignment", 1, /*latch=*/true);
@@ -48,8 +48,7 @@ StrapdownNavigatorNode::StrapdownNavigatorNode(ros::NodeHandle& node, ros::NodeH
   } else {
     input_subscriber_ = node.subscribe("imu/increment", queue_size, &StrapdownNavigatorNode::on_increment, this);
   }
-  reinitialise_service_ =
-      private_node.advertiseService("reinitialise", &StrapdownNavigatorNode::on_reinitialise, this);
+  reinitialise_service_ = private_node.advertiseService("reinitialise", &StrapdownNavigatorNode::on_reinitialise, this);
   if (parameter(private_node, "reference_height_topic", false)) {
     reference_height_subscriber_ =
         node.subscribe("reference_height", 10, &StrapdownNavigatorNode::on_reference_height, this);
@@ -65,8 +64,8 @@ StrapdownNavigatorNode::StrapdownNavigatorNode(ros::NodeHandle& node, ros::NodeH
            datatype_of(input_type), input_subscriber_.getTopic().c_str(),
            settings.align ? ("aligning for " + std::to_string(settings.alignment.duration_s) + " s").c_str()
                           : "given attitude",
-           frames_.world.c_str(), settings.latitude_rad / pipeline::kDegToRad, settings.longitude_rad / pipeline::kDegToRad,
-           settings.height_m);
+           frames_.world.c_str(), settings.latitude_rad / pipeline::kDegToRad,
+           settings.longitude_rad / pipeline::kDegToRad, settings.height_m);
 }
 
 void StrapdownNavigatorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message) {
@@ -122,7 +121,8 @@ void StrapdownNavigatorNode::after_sample(pipeline::SampleOutcome outcome, const
     const pipeline::AlignmentResult& alignment = *session_->alignment();
     alignment_publisher_.publish(to_alignment_message(alignment, frames_));
     ROS_INFO("strapdown_navigator: %s alignment: roll %.4f pitch %.4f yaw %.4f deg", alignment.method.c_str(),
-             alignment.roll_pitch_yaw_rad.x() / pipeline::kDegToRad, alignment.roll_pitch_yaw_rad.y() / pipeline::kDegToRad,
+             alignment.roll_pitch_yaw_rad.x() / pipeline::kDegToRad,
+             alignment.roll_pitch_yaw_rad.y() / pipeline::kDegToRad,
              alignment.roll_pitch_yaw_rad.z() / pipeline::kDegToRad);
   }
   if (session_->new_solution()) publish_solution();
@@ -154,10 +154,11 @@ void StrapdownNavigatorNode::report(diagnostic_updater::DiagnosticStatusWrapper&
   status.add("skipped: unordered stamps", counters.unordered);
   status.add("skipped: rate samples after a gap", counters.gaps);
   status.add("alignment", session_->alignment() ? "done (" + session_->alignment()->method + ")"
-                                                 : std::to_string(session_->alignment_progress_s()) + " of " +
-                                                       std::to_string(session_->settings().alignment.duration_s) + " s");
+                                                : std::to_string(session_->alignment_progress_s()) + " of " +
+                                                      std::to_string(session_->settings().alignment.duration_s) + " s");
   if (session_->navigating()) {
-    const Eigen::Vector3d rpy = pipeline::roll_pitch_yaw_from_quaternion(session_->state().q_body_to_enu) / pipeline::kDegToRad;
+    const Eigen::Vector3d rpy =
+        pipeline::roll_pitch_yaw_from_quaternion(session_->state().q_body_to_enu) / pipeline::kDegToRad;
     status.addf("roll, pitch, yaw [deg]", "%.4f, %.4f, %.4f", rpy.x(), rpy.y(), rpy.z());
   }
   status.add("divergences", counters.divergences);
@@ -165,8 +166,8 @@ void StrapdownNavigatorNode::report(diagnostic_updater::DiagnosticStatusWrapper&
   if (const auto& divergence = session_->divergence()) {
     // Every report until told to start again: the condition persists, unlike the input problems.
     status.mergeSummary(diagnostic_msgs::DiagnosticStatus::ERROR,
-                        "navigation stopped: state unusable at stamp " + pipeline::format_stamp(divergence->stamp_ns) + " s (" +
-                            divergence->problem + "); call " + reinitialise_service_.getService() +
+                        "navigation stopped: state unusable at stamp " + pipeline::format_stamp(divergence->stamp_ns) +
+                            " s (" + divergence->problem + "); call " + reinitialise_service_.getService() +
                             " to start again");
     status.add("navigation stopped at stamp [s]", pipeline::format_stamp(divergence->stamp_ns));
     status.add("samples ignored since", counters.halted);
@@ -180,8 +181,8 @@ bool StrapdownNavigatorNode::on_reinitialise(std_srvs::Trigger::Request&, std_sr
   path_.poses.clear();
   const pipeline::NavigationSettings& settings = session_->settings();
   response.success = true;
-  response.message = settings.align ? "re-initialised: aligning for " + format_number(settings.alignment.duration_s, 6) +
-                                          " s from the next sample"
+  response.message = settings.align ? "re-initialised: aligning for " +
+                                          format_number(settings.alignment.duration_s, 6) + " s from the next sample"
                                     : "re-initialised: the given initial state at the next sample's stamp";
   ROS_INFO("strapdown_navigator: %s", response.message.c_str());
   return true;

@@ -20,7 +20,8 @@ using Status = thermal::CompensatedSample::Status;
 
 ThermalCompensatorNode::ThermalCompensatorNode(ros::NodeHandle& node, ros::NodeHandle& private_node) {
   model_file_ = parameter<std::string>(private_node, "model_file", "");
-  if (model_file_.empty()) throw parameter_error(private_node, "model_file", "required: the YAML written by fit_thermal");
+  if (model_file_.empty())
+    throw parameter_error(private_node, "model_file", "required: the YAML written by fit_thermal");
   const double max_age_s = positive_parameter(private_node, "max_temperature_age_s", 1.0);
   const int queue_size = positive_parameter(private_node, "queue_size", 1000);
   compensator_ = std::make_unique<thermal::ThermalCompensator>(thermal::load_thermal_model(model_file_), max_age_s);
@@ -32,13 +33,15 @@ ThermalCompensatorNode::ThermalCompensatorNode(ros::NodeHandle& node, ros::NodeH
       "samples not published: stale temperature (no reading within max_temperature_age_s of the stamp)",
       diagnostic_msgs::DiagnosticStatus::ERROR);
   clamped_condition_ =
-      health_->define_condition("samples outside the model's validity range " + thermal::validity_range_text(compensator_->model()) +
-                                    " (corrected at its edge)", diagnostic_msgs::DiagnosticStatus::WARN);
+      health_->define_condition("samples outside the model's validity range " +
+                                    thermal::validity_range_text(compensator_->model()) + " (corrected at its edge)",
+                                diagnostic_msgs::DiagnosticStatus::WARN);
   temperature_dropped_condition_ = health_->define_condition(
       "temperature readings dropped (NaN or not after the previous stamp)", diagnostic_msgs::DiagnosticStatus::WARN);
   publisher_ = node.advertise<sensor_msgs::Imu>("imu/thermal", queue_size);
   imu_subscriber_ = node.subscribe("imu/raw", queue_size, &ThermalCompensatorNode::on_imu, this);
-  temperature_subscriber_ = node.subscribe("imu/temperature", queue_size, &ThermalCompensatorNode::on_temperature, this);
+  temperature_subscriber_ =
+      node.subscribe("imu/temperature", queue_size, &ThermalCompensatorNode::on_temperature, this);
   if (compensator_->model().uses_second_sensor) {
     second_temperature_subscriber_ =
         node.subscribe("imu/temperature2", queue_size, &ThermalCompensatorNode::on_second_temperature, this);
@@ -62,7 +65,8 @@ void ThermalCompensatorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message) {
   health_->check_values(record);  // an unusable sample is then refused by the compensator too
   std::vector<thermal::CompensatedSample> ready;
   if (!compensator_->add_imu({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2}, &ready)) {
-    ROS_WARN_THROTTLE(kLogThrottle_s, "thermal_compensator: dropped an IMU sample at %.9f (NaN/Inf, beyond +-1e100, a "
+    ROS_WARN_THROTTLE(kLogThrottle_s,
+                      "thermal_compensator: dropped an IMU sample at %.9f (NaN/Inf, beyond +-1e100, a "
                       "triad not provided, or its stamp is not after the previous one; counted in diagnostics)",
                       record.stamp_s);
     return;
@@ -76,8 +80,10 @@ void ThermalCompensatorNode::on_temperature(const sensor_msgs::Temperature::Cons
   std::vector<thermal::CompensatedSample> ready;
   if (!compensator_->add_temperature(message->header.stamp.toSec(), message->temperature, &ready)) {
     health_->count(temperature_dropped_condition_);
-    ROS_WARN_THROTTLE(kLogThrottle_s, "thermal_compensator: dropped a temperature reading at %.9f (NaN or stamp "
-                      "not after the previous one)", message->header.stamp.toSec());
+    ROS_WARN_THROTTLE(kLogThrottle_s,
+                      "thermal_compensator: dropped a temperature reading at %.9f (NaN or stamp "
+                      "not after the previous one)",
+                      message->header.stamp.toSec());
   }
   last_temperature_c_ = message->temperature;
   publish(ready);
@@ -98,15 +104,18 @@ void ThermalCompensatorNode::publish(const std::vector<thermal::CompensatedSampl
     waiting_messages_.pop_front();
     if (sample.status == Status::kStale) {
       health_->count(stale_condition_);
-      ROS_WARN_THROTTLE(kLogThrottle_s, "thermal_compensator: no temperature within the maximum age of the IMU stamp "
-                        "%.9f; sample not published (is %s being published?)", sample.corrected.stamp_s,
-                        temperature_subscriber_.getTopic().c_str());
+      ROS_WARN_THROTTLE(kLogThrottle_s,
+                        "thermal_compensator: no temperature within the maximum age of the IMU stamp "
+                        "%.9f; sample not published (is %s being published?)",
+                        sample.corrected.stamp_s, temperature_subscriber_.getTopic().c_str());
       continue;
     }
     if (sample.status == Status::kClamped) {
       health_->count(clamped_condition_);
-      ROS_WARN_THROTTLE(kLogThrottle_s, "thermal_compensator: %.2f degC (rate %.4f degC/s) is outside the model's "
-                        "validity range; corrected at its edge", sample.input.temperature_c, sample.input.rate_c_s);
+      ROS_WARN_THROTTLE(kLogThrottle_s,
+                        "thermal_compensator: %.2f degC (rate %.4f degC/s) is outside the model's "
+                        "validity range; corrected at its edge",
+                        sample.input.temperature_c, sample.input.rate_c_s);
     }
     // A new shared message (the input may be shared with other subscribers): nodelets downstream
     // in the same manager receive this pointer, not a copy.

@@ -33,10 +33,10 @@ struct AllanBagPassOptions {
 };
 
 struct AllanBagPassResult {
-  std::string bag_path;             // the recording's name (BagRecording::name)
-  std::vector<std::string> files;   // the recording's files in the order read (stamp order)
-  TimeWindow window;                // the part of the recording analysed
-  std::vector<FileJoin> joins;      // where one split file handed over to the next
+  std::string bag_path;            // the recording's name (BagRecording::name)
+  std::vector<std::string> files;  // the recording's files in the order read (stamp order)
+  TimeWindow window;               // the part of the recording analysed
+  std::vector<FileJoin> joins;     // where one split file handed over to the next
   std::string topic;
   pipeline::AllanInput input = pipeline::AllanInput::kRate;
   allan::StreamingOptions engine;  // as used
@@ -46,7 +46,7 @@ struct AllanBagPassResult {
   std::size_t messages_without_angular_rate = 0;
   std::size_t messages_without_specific_force = 0;
   allan::StreamingSnapshot snapshot;
-  allan::ImpulseScreenReport impulses;  // events found (and samples dropped) before the engine
+  allan::ImpulseScreenReport impulses;                 // events found (and samples dropped) before the engine
   std::vector<allan::ChannelOutputStep> output_steps;  // per channel, over every message's values
 };
 

@@ -20,7 +20,7 @@ namespace ros_io {
 struct AllanReportFiles {
   std::vector<std::string> written;  // paths, in the order written
   std::string plot_problem;          // empty when the plot was written (or not asked for)
-  pipeline::AllanNoiseReport noise;            // the identified triads and what went wrong identifying them
+  pipeline::AllanNoiseReport noise;  // the identified triads and what went wrong identifying them
 };
 
 // The six channels' curves of one statistic, named and with units for the CSV.

@@ -21,7 +21,7 @@ struct BagCorrectionOptions {
   std::string out_topic;  // empty: the IMU topic (replaced); another name keeps the raw topic too
   std::string temperature_topic = "/imu/temperature";
   std::string second_temperature_topic = "/imu/temperature2";  // read only if the model uses it
-  double max_temperature_age_s = 1.0;  // thermal_compensator's default
+  double max_temperature_age_s = 1.0;                          // thermal_compensator's default
   std::optional<thermal::ThermalModel> thermal_model;
   std::optional<calib::ImuCalibration> calibration;
 };

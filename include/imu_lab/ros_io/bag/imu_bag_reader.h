@@ -32,21 +32,21 @@
 namespace rosbag {
 class Bag;
 class MessageInstance;
-}
+}  // namespace rosbag
 
 namespace imu_lab {
 namespace ros_io {
 
 // The record types are the core's (io/imu_records.h), so ROS-free code can take them.
-using io::ImuRecord;
-using io::IncrementRecord;
-using io::TemperatureRecord;
-using io::TruthRecord;
 using io::describe_joins;
 using io::describe_time_window;
 using io::FileJoin;
+using io::ImuRecord;
+using io::IncrementRecord;
+using io::TemperatureRecord;
 using io::time_window_problem;
 using io::TimeWindow;
+using io::TruthRecord;
 
 struct TopicInfo {
   std::string name;
@@ -124,7 +124,6 @@ class OpenBag {
   std::vector<std::unique_ptr<File>> files_;  // in stamp order
   std::vector<FileJoin> joins_;
 };
-
 
 // The records of one message, as the readers below give them; live nodes use the same conversion.
 ImuRecord to_imu_record(const sensor_msgs::Imu& message);

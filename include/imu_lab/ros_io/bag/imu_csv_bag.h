@@ -32,9 +32,9 @@ CsvImportReport import_csv_to_bag(const std::string& csv_path, const io::CsvImpo
                                   const CsvBagTopics& topics, const std::string& bag_path);
 
 struct CsvExportRequest {
-  std::string imu_topic;                          // empty: the bag's only sensor_msgs/Imu topic
+  std::string imu_topic;                               // empty: the bag's only sensor_msgs/Imu topic
   std::string temperature_topic = "/imu/temperature";  // used if the bag has it; empty: none
-  bool temperature_required = false;              // the topic was asked for: missing -> InputError
+  bool temperature_required = false;                   // the topic was asked for: missing -> InputError
   io::CsvExportOptions format;
 };
 

@@ -35,9 +35,11 @@ inline void add_recording_arguments(CLI::App& app, RecordingArguments& arguments
                  what + ", or the split files of one recording (several files are read in stamp order as one)")
       ->required();
   if (!with_window) return;
-  app.add_option("--start-s", arguments.window.start_s, "use the recording from this many seconds after its first stamp")
+  app.add_option("--start-s", arguments.window.start_s,
+                 "use the recording from this many seconds after its first stamp")
       ->capture_default_str();
-  app.add_option("--end-s", arguments.window.end_s, "... up to this many seconds after its first stamp (default: the end)");
+  app.add_option("--end-s", arguments.window.end_s,
+                 "... up to this many seconds after its first stamp (default: the end)");
 }
 
 }  // namespace ros_io

@@ -24,7 +24,8 @@ struct NavigationFrames {
 
 ros::Time to_ros_time(std::int64_t stamp_ns);
 nav_msgs::Odometry to_odometry(const pipeline::NavigationSolution& solution, const NavigationFrames& frames);
-geometry_msgs::TransformStamped to_transform(const pipeline::NavigationSolution& solution, const NavigationFrames& frames);
+geometry_msgs::TransformStamped to_transform(const pipeline::NavigationSolution& solution,
+                                             const NavigationFrames& frames);
 geometry_msgs::PoseStamped to_pose(const pipeline::NavigationSolution& solution, const NavigationFrames& frames);
 imu_lab::Alignment to_alignment_message(const pipeline::AlignmentResult& alignment, const NavigationFrames& frames);
 

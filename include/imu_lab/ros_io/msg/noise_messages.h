@@ -22,8 +22,8 @@ constexpr double kResolvedRelativeSigma = 0.1;
 imu_lab::NoiseAxis to_noise_axis(identify::SensorKind sensor, int axis, const identify::FitResult& fit,
                                  double target_relative_sigma);
 
-imu_lab::NoiseParameters to_noise_parameters(const pipeline::AllanNoiseReport& report, const allan::StreamingSnapshot& snapshot,
-                                             const std_msgs::Header& header);
+imu_lab::NoiseParameters to_noise_parameters(const pipeline::AllanNoiseReport& report,
+                                             const allan::StreamingSnapshot& snapshot, const std_msgs::Header& header);
 
 }  // namespace ros_io
 }  // namespace imu_lab

@@ -23,9 +23,9 @@ namespace imu_lab {
 namespace ros_io {
 
 struct InputHealthSettings {
-  double expected_rate_hz = 0.0;    // 0: learned from the first kLearningIntervals intervals
-  double gap_factor = 3.0;          // interval above gap_factor expected intervals: a gap
-  double rate_tolerance = 0.05;     // relative rate deviation that warns (a rate change mid-run)
+  double expected_rate_hz = 0.0;        // 0: learned from the first kLearningIntervals intervals
+  double gap_factor = 3.0;              // interval above gap_factor expected intervals: a gap
+  double rate_tolerance = 0.05;         // relative rate deviation that warns (a rate change mid-run)
   std::size_t min_rate_intervals = 10;  // fewer intervals in a report window: no rate verdict
 };
 
