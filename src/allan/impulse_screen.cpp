@@ -6,7 +6,7 @@
 #include <string>
 
 #include "imu_lab/common/config_error.h"
-#include "imu_lab/common/imu_sample.h"
+#include "imu_lab/common/usable_imu_values.h"
 
 namespace imu_lab {
 namespace allan {

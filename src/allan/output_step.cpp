@@ -1,6 +1,6 @@
 #include "imu_lab/allan/output_step.h"
 
-#include "imu_lab/common/imu_sample.h"
+#include "imu_lab/common/usable_imu_values.h"
 
 #include <cmath>
 

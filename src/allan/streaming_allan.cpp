@@ -9,7 +9,7 @@
 #include "imu_lab/allan/streaming_points.h"
 #include "imu_lab/allan/streaming_tau_plan.h"
 #include "imu_lab/common/config_error.h"
-#include "imu_lab/common/imu_sample.h"
+#include "imu_lab/common/usable_imu_values.h"
 
 namespace imu_lab {
 namespace allan {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "imu_lab/common/imu_sample.h"
+#include "imu_lab/common/usable_imu_values.h"
 
 namespace imu_lab {
 namespace allan {

@@ -84,7 +84,7 @@ void require_enough_rests(std::size_t fitted, std::size_t held_out, bool known_o
 
 // Mode 2 start: the first rest levelled with heading 0, each next one carried over by the raw
 // gyro integrated across the move, then levelled again by its own gravity direction.
-std::vector<Eigen::Quaterniond> starting_attitudes(const std::vector<ImuSample>& samples,
+std::vector<Eigen::Quaterniond> starting_attitudes(const std::vector<io::ImuRecord>& samples,
                                                    const std::vector<RestMeans>& rests) {
   const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
   const auto level = [&](const Eigen::Quaterniond& guess, const Eigen::Vector3d& force_body) {
@@ -131,7 +131,7 @@ std::string describe_unobservable(const std::vector<std::vector<std::string>>& d
 
 }  // namespace
 
-CalibrationResult calibrate(const std::vector<ImuSample>& samples, const CalibrationOptions& options) {
+CalibrationResult calibrate(const std::vector<io::ImuRecord>& samples, const CalibrationOptions& options) {
   CalibrationResult result;
   result.known_orientations = options.schedule.has_value();
   const bool known = result.known_orientations;

@@ -104,7 +104,7 @@ struct RestResidual {
 //   R_known = C_from^T Exp(Earth rate_enu dt) C_to  (body at the end, in body axes at the start).
 // Residual: the rotation vector of R_integrated^T R_known over its sigma per axis.
 struct MoveResidual {
-  const std::vector<ImuSample>* samples = nullptr;
+  const std::vector<io::ImuRecord>* samples = nullptr;
   std::size_t first = 0;  // samples [first, last) turn the body; their rates average over (t_k-1, t_k]
   std::size_t last = 0;
   Eigen::Quaterniond nominal_from, nominal_to;
@@ -121,7 +121,7 @@ struct MoveResidual {
     const Eigen::Map<const Vector3<T>> b_g(gyro_bias), b_a(accelerometer_bias);
     std::array<T, 4> integrated = {T(1), T(0), T(0), T(0)};
     for (std::size_t k = first; k < last; ++k) {
-      const ImuSample& sample = (*samples)[k];
+      const io::ImuRecord& sample = (*samples)[k];
       const double dt = sample.stamp_s - (*samples)[k - 1].stamp_s;
       Vector3<T> rate = sample.angular_rate_rad_s.cast<T>() - b_g;
       if (g_sensitivity) {

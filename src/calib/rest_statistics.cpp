@@ -17,7 +17,7 @@ struct PooledVariance {
 };
 
 template <class Get>
-Eigen::Vector3d mean_over(const std::vector<ImuSample>& samples, std::size_t begin, std::size_t end, Get get) {
+Eigen::Vector3d mean_over(const std::vector<io::ImuRecord>& samples, std::size_t begin, std::size_t end, Get get) {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (std::size_t k = begin; k < end; ++k) sum += get(samples[k]);
   return sum / static_cast<double>(end - begin);
@@ -32,7 +32,7 @@ Eigen::Vector3d mean_over(const std::vector<ImuSample>& samples, std::size_t beg
 // the 95 % chi-squared quantile of its degrees of freedom is added to every rest's sigma, so a pure
 // white-noise recording keeps its white sigmas.
 template <class Get, class Sigma>
-void add_drift_at_the_rest_scale(const std::vector<ImuSample>& samples, RestStatistics& statistics, Get get,
+void add_drift_at_the_rest_scale(const std::vector<io::ImuRecord>& samples, RestStatistics& statistics, Get get,
                                  Sigma sigma_of) {
   Eigen::Vector3d observed = Eigen::Vector3d::Zero(), white = Eigen::Vector3d::Zero();
   double rests = 0.0;
@@ -61,13 +61,13 @@ void add_drift_at_the_rest_scale(const std::vector<ImuSample>& samples, RestStat
 
 }  // namespace
 
-RestStatistics rest_statistics(const std::vector<ImuSample>& samples, const std::vector<StaticInterval>& intervals,
+RestStatistics rest_statistics(const std::vector<io::ImuRecord>& samples, const std::vector<StaticInterval>& intervals,
                                double block_s) {
   if (samples.size() < 2 || intervals.empty()) throw InputError("calibration recording: no static intervals");
   const double sample_interval_s = (samples.back().stamp_s - samples.front().stamp_s) / (samples.size() - 1);
   const std::size_t block = std::max<std::size_t>(1, std::lround(block_s / sample_interval_s));
-  const auto rate = [](const ImuSample& s) { return s.angular_rate_rad_s; };
-  const auto force = [](const ImuSample& s) { return s.specific_force_m_s2; };
+  const auto rate = [](const io::ImuRecord& s) { return s.angular_rate_rad_s; };
+  const auto force = [](const io::ImuRecord& s) { return s.specific_force_m_s2; };
 
   RestStatistics statistics;
   statistics.block_s = block * sample_interval_s;

@@ -10,7 +10,8 @@
 
 namespace imu_lab {
 namespace calib {
-StaticDetection detect_static_intervals(const std::vector<ImuSample>& samples, const StaticDetectionOptions& options) {
+StaticDetection detect_static_intervals(const std::vector<io::ImuRecord>& samples,
+                                        const StaticDetectionOptions& options) {
   if (samples.size() < 2) throw InputError("calibration recording: fewer than 2 samples");
   for (std::size_t k = 1; k < samples.size(); ++k) {
     if (!(samples[k].stamp_s > samples[k - 1].stamp_s)) {

@@ -4,7 +4,7 @@
 #include <limits>
 
 #include "imu_lab/common/config_error.h"
-#include "imu_lab/common/imu_sample.h"
+#include "imu_lab/common/usable_imu_values.h"
 #include "imu_lab/emulator/static_motion.h"
 #include "imu_lab/nav/alignment_error_budget.h"
 

@@ -127,7 +127,7 @@ void check_matching(const std::vector<PlateauMeasurement>& measured, const std::
 
 }  // namespace
 
-ScaleFactorTestResult run_scale_factor_test(const std::vector<ImuSample>& samples, const RateTableSetup& setup,
+ScaleFactorTestResult run_scale_factor_test(const std::vector<io::ImuRecord>& samples, const RateTableSetup& setup,
                                             const ScaleFactorTestOptions& options) {
   ScaleFactorTestResult result;
   result.setup = setup;
@@ -137,7 +137,7 @@ ScaleFactorTestResult run_scale_factor_test(const std::vector<ImuSample>& sample
 
   const Eigen::Vector3d axis_body = setup.axis_body();
   std::vector<double> stamps_s, table_rate_rad_s;
-  for (const ImuSample& sample : samples) {
+  for (const io::ImuRecord& sample : samples) {
     stamps_s.push_back(sample.stamp_s);
     table_rate_rad_s.push_back(sample.angular_rate_rad_s.dot(axis_body));
   }

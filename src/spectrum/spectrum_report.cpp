@@ -19,10 +19,10 @@ constexpr const char* kAxisNames[] = {"x", "y", "z"};
 struct Triad {
   const char* name;
   const char* unit;
-  Eigen::Vector3d ImuSample::*values;
+  Eigen::Vector3d io::ImuRecord::*values;
 };
-constexpr Triad kTriads[] = {{"gyro", "rad_s", &ImuSample::angular_rate_rad_s},
-                             {"accelerometer", "m_s2", &ImuSample::specific_force_m_s2}};
+constexpr Triad kTriads[] = {{"gyro", "rad_s", &io::ImuRecord::angular_rate_rad_s},
+                             {"accelerometer", "m_s2", &io::ImuRecord::specific_force_m_s2}};
 
 std::string squared_unit(const std::string& unit) { return unit == "rad_s" ? "rad2_s2" : "m2_s4"; }
 
@@ -54,10 +54,10 @@ double uniform_sample_interval_s(const std::vector<double>& stamps_s, double tol
   return tau0_s;
 }
 
-SpectrumAnalysis analyse_spectra(const std::vector<ImuSample>& samples, const SpectrumOptions& options) {
+SpectrumAnalysis analyse_spectra(const std::vector<io::ImuRecord>& samples, const SpectrumOptions& options) {
   SpectrumAnalysis analysis;
   std::vector<double> stamps(samples.size());
-  std::transform(samples.begin(), samples.end(), stamps.begin(), [](const ImuSample& s) { return s.stamp_s; });
+  std::transform(samples.begin(), samples.end(), stamps.begin(), [](const io::ImuRecord& s) { return s.stamp_s; });
   analysis.tau0_s = uniform_sample_interval_s(stamps, options.interval_tolerance);
   analysis.sample_count = samples.size();
   analysis.confidence = options.confidence;
@@ -65,7 +65,8 @@ SpectrumAnalysis analyse_spectra(const std::vector<ImuSample>& samples, const Sp
   const auto max_lag = static_cast<std::size_t>(std::llround(options.max_lag_s / analysis.tau0_s));
   for (const Triad& triad : kTriads) {
     std::vector<Eigen::Vector3d> values(samples.size());
-    std::transform(samples.begin(), samples.end(), values.begin(), [&](const ImuSample& s) { return s.*triad.values; });
+    std::transform(samples.begin(), samples.end(), values.begin(),
+                   [&](const io::ImuRecord& s) { return s.*triad.values; });
     for (int axis = 0; axis < 3; ++axis) {
       ChannelSpectrum channel;
       channel.name = std::string(triad.name) + "_" + kAxisNames[axis];

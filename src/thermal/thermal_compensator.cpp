@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "imu_lab/common/imu_sample.h"
+#include "imu_lab/common/usable_imu_values.h"
 
 namespace imu_lab {
 namespace thermal {
@@ -23,7 +23,7 @@ bool ThermalCompensator::add_second_temperature(double stamp_s, double temperatu
   return true;
 }
 
-bool ThermalCompensator::add_imu(const ImuSample& reading, std::vector<CompensatedSample>* ready) {
+bool ThermalCompensator::add_imu(const io::ImuRecord& reading, std::vector<CompensatedSample>* ready) {
   if (!(reading.stamp_s > newest_imu_stamp_s_) || !is_usable_imu_vector(reading.angular_rate_rad_s) ||
       !is_usable_imu_vector(reading.specific_force_m_s2)) {
     return false;
@@ -57,7 +57,7 @@ void ThermalCompensator::release(bool everything, std::vector<CompensatedSample>
   second_temperature_.drop_before(keep_from_s);
 }
 
-CompensatedSample ThermalCompensator::compensate(const ImuSample& reading) const {
+CompensatedSample ThermalCompensator::compensate(const io::ImuRecord& reading) const {
   CompensatedSample out;
   out.corrected = reading;
   const auto temperature_c = temperature_.temperature_at(reading.stamp_s, max_temperature_age_s_);

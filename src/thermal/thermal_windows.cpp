@@ -32,7 +32,7 @@ ThermalWindowAverager::ThermalWindowAverager(const WindowSettings& settings, con
                                              const TemperatureHistory* second_temperature)
     : settings_(settings), temperature_(temperature), second_temperature_(second_temperature) {}
 
-void ThermalWindowAverager::add(const ImuSample& reading) {
+void ThermalWindowAverager::add(const io::ImuRecord& reading) {
   if (first_stamp_s_ && !(reading.stamp_s > last_stamp_s_)) {
     std::ostringstream text;
     text << std::setprecision(15) << "IMU stamps go backwards or repeat at " << reading.stamp_s << " s (previous "

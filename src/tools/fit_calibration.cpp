@@ -101,10 +101,9 @@ int main(int argc, char** argv) {
     }
     const imu_lab::ros_io::BagRecording bag = recording.recording();
     input.topic = topic = imu_lab::ros_io::choose_imu_topic(bag, topic);
-    std::vector<imu_lab::ImuSample> samples;
-    imu_lab::ros_io::for_each_imu_strictly(bag, topic, [&](const imu_lab::io::ImuRecord& record) {
-      samples.push_back({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2});
-    });
+    std::vector<imu_lab::io::ImuRecord> samples;
+    imu_lab::ros_io::for_each_imu_strictly(bag, topic,
+                                           [&](const imu_lab::io::ImuRecord& record) { samples.push_back(record); });
     if (samples.size() < 2)
       throw imu_lab::InputError("bag " + bag.name() + ": topic " + topic + " has too few messages (" +
                                 imu_lab::io::describe_time_window(bag.window) + ")");

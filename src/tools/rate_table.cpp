@@ -65,10 +65,9 @@ int main(int argc, char** argv) {
 
     const imu_lab::ros_io::BagRecording bag = recording.recording();
     input.topic = topic = imu_lab::ros_io::choose_imu_topic(bag, topic);
-    std::vector<imu_lab::ImuSample> samples;
-    imu_lab::ros_io::for_each_imu_strictly(bag, topic, [&](const imu_lab::io::ImuRecord& record) {
-      samples.push_back({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2});
-    });
+    std::vector<imu_lab::io::ImuRecord> samples;
+    imu_lab::ros_io::for_each_imu_strictly(bag, topic,
+                                           [&](const imu_lab::io::ImuRecord& record) { samples.push_back(record); });
     const auto result = imu_lab::rate_table::run_scale_factor_test(samples, setup, options);
     const std::string yaml = imu_lab::rate_table::scale_factor_yaml(result, bag.name());
     const std::string csv = imu_lab::rate_table::plateau_csv(result);

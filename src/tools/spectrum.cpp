@@ -49,10 +49,9 @@ int main(int argc, char** argv) {
   return imu_lab::run_tool_main("spectrum", input, [&] {
     const imu_lab::ros_io::BagRecording bag = recording.recording();
     input.topic = topic = imu_lab::ros_io::choose_imu_topic(bag, topic);
-    std::vector<imu_lab::ImuSample> samples;
-    imu_lab::ros_io::for_each_imu_strictly(bag, topic, [&](const imu_lab::io::ImuRecord& record) {
-      samples.push_back({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2});
-    });
+    std::vector<imu_lab::io::ImuRecord> samples;
+    imu_lab::ros_io::for_each_imu_strictly(bag, topic,
+                                           [&](const imu_lab::io::ImuRecord& record) { samples.push_back(record); });
     const imu_lab::spectrum::SpectrumAnalysis analysis = imu_lab::spectrum::analyse_spectra(samples, options);
 
     imu_lab::OutputSet outputs;

@@ -42,8 +42,7 @@ std::map<std::int64_t, imu_lab::thermal::CompensatedSample> reference_of(const s
                                   &ready);
       ++next_temperature;
     }
-    if (compensator.add_imu({r.stamp_s, r.angular_rate_rad_s, r.specific_force_m_s2}, &ready))
-      stamps_ns.push_back(r.stamp_ns);
+    if (compensator.add_imu(r, &ready)) stamps_ns.push_back(r.stamp_ns);
   });
   compensator.flush(&ready);
   std::map<std::int64_t, imu_lab::thermal::CompensatedSample> by_stamp;

@@ -1,6 +1,6 @@
 // Files users keep survive a tool killed with SIGKILL in the middle of its run: at every moment
 // tried, each output path holds either the file from the run before or the whole new one, byte for
-// byte, never a part of one (the atomic writers, common/atomic_file.h and ros/atomic_bag.h). The
+// byte, never a part of one (the atomic writers, common/atomic_file.h and ros_io/bag/atomic_bag.h). The
 // kill moments are spread over the tool's measured run time, so some land before, during and after
 // its writing; the temporary files a killed writer leaves beside the targets are allowed.
 #include <gtest/gtest.h>

@@ -124,7 +124,7 @@ LiveChain run_live_chain(const std::string& bag_path, bool thermal, bool calibra
         continue;
       }
       const auto record = imu_lab::ros_io::to_imu_record(*message);
-      if (compensator.add_imu({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2}, &ready)) {
+      if (compensator.add_imu(record, &ready)) {
         waiting.push_back(*message);
       }
     } else if (thermal && instance.getTopic() == "/imu/temperature") {

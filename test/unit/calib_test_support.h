@@ -118,7 +118,7 @@ inline emulator::ScenarioConfig table_scenario(const Attitudes& positions, const
 }
 
 struct EmulatedRun {
-  std::vector<ImuSample> samples;
+  std::vector<io::ImuRecord> samples;
   calib::ImuCalibration truth;  // the emulator's realised error model
   calib::TableSchedule schedule;
 };
@@ -149,7 +149,8 @@ inline EmulatedRun emulate_table_run(const emulator::SensorProfile& profile, con
   result.samples.reserve(count);
   for (std::size_t k = 0; k < count; ++k) {
     const emulator::EmulatedSample sample = imu.next();
-    result.samples.push_back({sample.stamp_s, sample.angular_rate_rad_s, sample.specific_force_m_s2});
+    result.samples.push_back(
+        io::make_imu_record(sample.stamp_s, sample.angular_rate_rad_s, sample.specific_force_m_s2));
   }
   return result;
 }

@@ -26,7 +26,7 @@ calib_test::TableRun short_run() {
   return run;
 }
 
-std::string refusal(const std::vector<ImuSample>& samples, const calib::CalibrationOptions& options) {
+std::string refusal(const std::vector<io::ImuRecord>& samples, const calib::CalibrationOptions& options) {
   try {
     calib::calibrate(samples, options);
   } catch (const InputError& error) {
@@ -80,12 +80,12 @@ TEST(CalibRefusals, NoStaticIntervalsInAContinuousRotation) {
   emulator::EmulatorSettings settings;
   settings.rate_hz = 100.0;
   emulator::ImuEmulator imu(calib_test::tactical_test_profile(), scenario, settings);
-  std::vector<ImuSample> samples;
+  std::vector<io::ImuRecord> samples;
   imu.next();  // the table starts at rest: skip past the first instant
   for (int k = 0; k < 3000; ++k) {
     const auto sample = imu.next();
     if (sample.stamp_s > 1.0)
-      samples.push_back({sample.stamp_s, sample.angular_rate_rad_s, sample.specific_force_m_s2});
+      samples.push_back(io::make_imu_record(sample.stamp_s, sample.angular_rate_rad_s, sample.specific_force_m_s2));
   }
   calib::CalibrationOptions options;
   options.site.latitude_rad = scenario.latitude_rad;

@@ -55,14 +55,14 @@ emulator::SensorProfile gyro_profile(bool with_noise) {
   return profile;
 }
 
-std::vector<ImuSample> emulate(const emulator::SensorProfile& profile, std::uint64_t seed, double rate_hz) {
+std::vector<io::ImuRecord> emulate(const emulator::SensorProfile& profile, std::uint64_t seed, double rate_hz) {
   const emulator::ScenarioConfig scenario = scale_factor_scenario();
   emulator::ImuEmulator emulator(profile, scenario, {rate_hz, 0.0, seed});
-  std::vector<ImuSample> samples;
+  std::vector<io::ImuRecord> samples;
   const auto count = static_cast<std::size_t>(scenario.duration_s * rate_hz);
   for (std::size_t k = 0; k < count; ++k) {
     const emulator::EmulatedSample s = emulator.next();
-    samples.push_back({s.stamp_s, s.angular_rate_rad_s, s.specific_force_m_s2});
+    samples.push_back(io::make_imu_record(s.stamp_s, s.angular_rate_rad_s, s.specific_force_m_s2));
   }
   return samples;
 }
@@ -77,7 +77,7 @@ TableRun run_with_seed(std::uint64_t seed, double rate_hz = 100.0) {
   const ScaleFactorTestOptions options;
   TableRun run;
   run.estimated = run_scale_factor_test(emulate(gyro_profile(true), seed, rate_hz), setup, options);
-  const std::vector<ImuSample> clean = emulate(gyro_profile(false), seed, rate_hz);
+  const std::vector<io::ImuRecord> clean = emulate(gyro_profile(false), seed, rate_hz);
   run.exact = run.estimated;
   for (PlateauMeasurement& m : run.exact.plateaus) {
     double sum = 0.0;
@@ -273,7 +273,7 @@ TEST(RateTableBadInput, TableFilesAreRefusedNamingTheKey) {
 }
 
 TEST(RateTableBadInput, PlateausThatDoNotFollowTheRatesAreRefusedListingThem) {
-  const std::vector<ImuSample> samples = emulate(gyro_profile(true), 7, 50.0);
+  const std::vector<io::ImuRecord> samples = emulate(gyro_profile(true), 7, 50.0);
   RateTableSetup setup = setup_from_scenario(scale_factor_scenario());
   RateTableSetup missing = setup;
   missing.nominal_rates_rad_s.pop_back();
@@ -285,7 +285,7 @@ TEST(RateTableBadInput, PlateausThatDoNotFollowTheRatesAreRefusedListingThem) {
   const std::string order = input_error([&] { run_scale_factor_test(samples, swapped, {}); });
   EXPECT_NE(order.find("do not follow the nominal rates"), std::string::npos) << order;
   // Too short for the plateaus.
-  const std::vector<ImuSample> head(samples.begin(), samples.begin() + 100);
+  const std::vector<io::ImuRecord> head(samples.begin(), samples.begin() + 100);
   EXPECT_NE(input_error([&] { run_scale_factor_test(head, setup, {}); }).find("plateau"), std::string::npos);
 }
 

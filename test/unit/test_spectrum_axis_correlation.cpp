@@ -119,13 +119,14 @@ TEST(SpectrumAxisCorrelation, RefusalsNameTheFactorOrTheAxis) {
   }
 }
 
-std::vector<ImuSample> white_record(std::size_t n, double tau0_s) {
+std::vector<io::ImuRecord> white_record(std::size_t n, double tau0_s) {
   std::mt19937_64 generator(25);
   const std::vector<Eigen::Vector3d> gyro = correlated_white(n, truth_matrix(), generator);
   const std::vector<Eigen::Vector3d> accelerometer = correlated_white(n, Eigen::Matrix3d::Identity(), generator);
-  std::vector<ImuSample> samples(n);
+  std::vector<io::ImuRecord> samples(n);
   for (std::size_t k = 0; k < n; ++k) {
-    samples[k] = {1.7e9 + static_cast<double>(k) * tau0_s, gyro[k], accelerometer[k] + Eigen::Vector3d(0, 0, 9.8)};
+    samples[k] = io::make_imu_record(1.7e9 + static_cast<double>(k) * tau0_s, gyro[k],
+                                     accelerometer[k] + Eigen::Vector3d(0, 0, 9.8));
   }
   return samples;
 }
@@ -158,7 +159,7 @@ TEST(SpectrumAnalysis, FilesHoldEveryChannelAndTheMatrices) {
 }
 
 TEST(SpectrumAnalysis, RefusesAGapNamingItsTime) {
-  std::vector<ImuSample> samples = white_record(20000, 0.01);
+  std::vector<io::ImuRecord> samples = white_record(20000, 0.01);
   samples.erase(samples.begin() + 1500, samples.begin() + 1510);
   try {
     analyse_spectra(samples, SpectrumOptions());

@@ -71,11 +71,12 @@ TEST(ThermalModel, TemperatureHistoryMatchesByStampAndEstimatesTheRate) {
 // The node's compensator must give the same output whatever the interleaving of the topics.
 TEST(ThermalModel, CompensatorOutputDoesNotDependOnArrivalOrder) {
   const auto model = example_model();
-  std::vector<ImuSample> readings;
+  std::vector<io::ImuRecord> readings;
   std::vector<std::pair<double, double>> temperatures;
   for (int i = 1; i <= 3000; ++i) {
     const double t = 0.01 * i;
-    readings.push_back({t, Eigen::Vector3d::Constant(0.001 * i), Eigen::Vector3d(0.0, 0.0, 9.8 + 1e-4 * i)});
+    readings.push_back(
+        io::make_imu_record(t, Eigen::Vector3d::Constant(0.001 * i), Eigen::Vector3d(0.0, 0.0, 9.8 + 1e-4 * i)));
     if (i % 5 == 0) temperatures.push_back({t, 20.0 + 0.5 * t});  // 20 Hz thermosensor
   }
   const auto run = [&](unsigned seed) {
@@ -110,7 +111,7 @@ TEST(ThermalModel, CompensatorReportsStaleTemperature) {
   std::vector<thermal::CompensatedSample> out;
   compensator.add_temperature(0.0, 25.0, &out);
   for (int i = 1; i <= 300; ++i)
-    compensator.add_imu({0.01 * i, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()}, &out);
+    compensator.add_imu(io::make_imu_record(0.01 * i, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()), &out);
   compensator.flush(&out);
   ASSERT_EQ(out.size(), 300u);
   EXPECT_NE(out[10].status, thermal::CompensatedSample::Status::kStale);   // 0.11 s old: held
@@ -124,12 +125,16 @@ TEST(ThermalModel, CompensatorRefusesUnusableSamples) {
   thermal::ThermalCompensator compensator(example_model(), 0.5);
   std::vector<thermal::CompensatedSample> out;
   compensator.add_temperature(0.0, 25.0, &out);
-  EXPECT_TRUE(compensator.add_imu({0.01, Eigen::Vector3d(1e100, 0.0, 0.0), Eigen::Vector3d::UnitZ()}, &out));
-  EXPECT_FALSE(compensator.add_imu({0.02, Eigen::Vector3d(1e308, 0.0, 0.0), Eigen::Vector3d::UnitZ()}, &out));
-  EXPECT_FALSE(compensator.add_imu({0.03, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, -1e300, 9.8)}, &out));
-  EXPECT_FALSE(compensator.add_imu({0.04, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, std::nan(""), 9.8)}, &out));
-  EXPECT_FALSE(compensator.add_imu({0.01, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()}, &out));
-  EXPECT_TRUE(compensator.add_imu({0.05, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()}, &out));
+  EXPECT_TRUE(
+      compensator.add_imu(io::make_imu_record(0.01, Eigen::Vector3d(1e100, 0.0, 0.0), Eigen::Vector3d::UnitZ()), &out));
+  EXPECT_FALSE(
+      compensator.add_imu(io::make_imu_record(0.02, Eigen::Vector3d(1e308, 0.0, 0.0), Eigen::Vector3d::UnitZ()), &out));
+  EXPECT_FALSE(
+      compensator.add_imu(io::make_imu_record(0.03, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, -1e300, 9.8)), &out));
+  EXPECT_FALSE(compensator.add_imu(
+      io::make_imu_record(0.04, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, std::nan(""), 9.8)), &out));
+  EXPECT_FALSE(compensator.add_imu(io::make_imu_record(0.01, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()), &out));
+  EXPECT_TRUE(compensator.add_imu(io::make_imu_record(0.05, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()), &out));
   compensator.flush(&out);
   EXPECT_EQ(out.size(), 2u);
 }

@@ -109,9 +109,9 @@ TEST(ThermalRefusals, StaleOrMissingTemperatureStopsTheAveraging) {
   thermal::WindowSettings settings;
   settings.max_temperature_age_s = 2.0;
   thermal::ThermalWindowAverager averager(settings, history, nullptr);
-  averager.add({1050.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()});
+  averager.add(io::make_imu_record(1050.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()));
   try {
-    averager.add({1105.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()});
+    averager.add(io::make_imu_record(1105.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()));
     FAIL() << "a sample 5 s after the last temperature reading was accepted";
   } catch (const InputError& error) {
     const std::string message = error.what();
@@ -121,7 +121,7 @@ TEST(ThermalRefusals, StaleOrMissingTemperatureStopsTheAveraging) {
   }
   const thermal::TemperatureHistory empty;
   thermal::ThermalWindowAverager without(settings, empty, nullptr);
-  EXPECT_THROW(without.add({1.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()}), InputError);
+  EXPECT_THROW(without.add(io::make_imu_record(1.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ())), InputError);
 }
 
 // Real stamps jitter: with +-30 % on every interval the smallest one is 0.7 of the period, and
@@ -141,7 +141,7 @@ TEST(ThermalWindows, JitteredStampsFillTheirWindowsAndAGapDoesNot) {
   double stamp_s = 1000.0;
   while (stamp_s < 1600.0) {
     const bool in_gap = stamp_s > 1330.0 && stamp_s < 1345.0;  // 15 s missing in the sixth window
-    if (!in_gap) averager.add({stamp_s, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, 9.8)});
+    if (!in_gap) averager.add(io::make_imu_record(stamp_s, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, 9.8)));
     stamp_s += 0.1 * (1.0 + 0.6 * (uniform() - 0.5));  // 10 Hz, +-30 %
   }
   const auto windows = averager.finish();

@@ -35,7 +35,7 @@ inline std::string test_scenario(const std::string& name) {
 }
 
 struct ThermalRun {
-  std::vector<ImuSample> readings;
+  std::vector<io::ImuRecord> readings;
   thermal::TemperatureHistory temperature;
   thermal::TemperatureHistory second_temperature;
   // What the profile's temperature terms added to each sample (bias + scale factor * true input).
@@ -58,7 +58,7 @@ inline ThermalRun emulate_thermal_run(const emulator::SensorProfile& profile, co
   run.readings.reserve(count);
   for (std::size_t k = 0; k < count; ++k) {
     const emulator::EmulatedSample sample = imu.next();
-    run.readings.push_back({sample.stamp_s, sample.angular_rate_rad_s, sample.specific_force_m_s2});
+    run.readings.push_back(io::make_imu_record(sample.stamp_s, sample.angular_rate_rad_s, sample.specific_force_m_s2));
     run.temperature.add(sample.stamp_s, sample.temperature_c);
     if (sample.second_temperature_c) run.second_temperature.add(sample.stamp_s, *sample.second_temperature_c);
     const double dt = run.sample_interval_s;

@@ -39,7 +39,7 @@ constexpr std::size_t kMaxRecordedStampEvents = 100;
 struct ChannelReport {
   double offset = 0.0;                   // removed before accumulating (mean of the warm-up window)
   std::int64_t finite_sample_count = 0;  // accumulated
-  // NaN/Inf or beyond kLargestUsableImuValue (common/imu_sample.h): excluded, each one splits the
+  // NaN/Inf or beyond kLargestUsableImuValue (common/usable_imu_values.h): excluded, each one splits the
   // channel's run (the sums would otherwise overflow and spoil every later point)
   std::int64_t non_finite_count = 0;
   std::int64_t first_non_finite_sample_index = -1;

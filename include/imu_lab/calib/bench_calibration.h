@@ -84,7 +84,7 @@ struct CalibrationResult {
 // Throws InputError with what is wrong and what to do: no or too few rests (with the number still
 // needed), rests not matching the schedule, a schedule or motion that leaves parameters
 // unobservable (named), a solver failure.
-CalibrationResult calibrate(const std::vector<ImuSample>& samples, const CalibrationOptions& options);
+CalibrationResult calibrate(const std::vector<io::ImuRecord>& samples, const CalibrationOptions& options);
 
 }  // namespace calib
 }  // namespace imu_lab

@@ -32,7 +32,7 @@ struct RestStatistics {
 };
 
 // block_s: length of the blocks; rests shorter than two blocks contribute no noise estimate.
-RestStatistics rest_statistics(const std::vector<ImuSample>& samples, const std::vector<StaticInterval>& intervals,
+RestStatistics rest_statistics(const std::vector<io::ImuRecord>& samples, const std::vector<StaticInterval>& intervals,
                                double block_s);
 
 }  // namespace calib

@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "imu_lab/common/imu_sample.h"
+#include "imu_lab/io/imu_records.h"
 
 namespace imu_lab {
 namespace calib {
@@ -37,7 +37,8 @@ struct StaticDetection {
 };
 
 // Throws InputError if the samples are too few for one window or the stamps are not increasing.
-StaticDetection detect_static_intervals(const std::vector<ImuSample>& samples, const StaticDetectionOptions& options);
+StaticDetection detect_static_intervals(const std::vector<io::ImuRecord>& samples,
+                                        const StaticDetectionOptions& options);
 
 }  // namespace calib
 }  // namespace imu_lab

@@ -1,11 +1,12 @@
 // The samples of a recording as the tools and nodes pass them around, whatever they were read
 // from (a bag, a live topic, a CSV file): plain values, SI units, header stamps. The ROS layer
-// converts messages into these (ros/imu_bag_reader.h); everything after the conversion is ROS-free.
+// converts messages into these (ros_io/bag/imu_bag_reader.h); everything after the conversion is ROS-free.
 #pragma once
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <cmath>
 #include <cstdint>
 
 namespace imu_lab {
@@ -24,6 +25,18 @@ struct ImuRecord {
   bool has_angular_rate = true;
   bool has_specific_force = true;
 };
+
+// A record with both triads at stamp_s, its exact stamp stamp_s rounded to the nanosecond (an
+// emulated or synthetic sample; records read from a recording carry the message's own stamp).
+inline ImuRecord make_imu_record(double stamp_s, const Eigen::Vector3d& angular_rate_rad_s,
+                                 const Eigen::Vector3d& specific_force_m_s2) {
+  ImuRecord record;
+  record.stamp_s = stamp_s;
+  record.stamp_ns = std::llround(stamp_s * 1e9);
+  record.angular_rate_rad_s = angular_rate_rad_s;
+  record.specific_force_m_s2 = specific_force_m_s2;
+  return record;
+}
 
 // imu_lab/ImuIncrement: the sensor's own integrals over interval_s, ending at the stamp.
 struct IncrementRecord {

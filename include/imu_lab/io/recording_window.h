@@ -1,5 +1,5 @@
 // Which part of a recording a tool reads, and where the split files of one recording hand over
-// to each other: plain values the bag reader (ros/imu_bag_reader.h) fills and the reports print.
+// to each other: plain values the bag reader (ros_io/bag/imu_bag_reader.h) fills and the reports print.
 // See doc/recordings.md.
 #pragma once
 

@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "imu_lab/common/imu_sample.h"
+#include "imu_lab/io/imu_records.h"
 #include "imu_lab/rate_table/plateaus.h"
 #include "imu_lab/rate_table/rate_table_setup.h"
 
@@ -84,7 +84,7 @@ struct ScaleFactorTestResult {
 
 // Throws InputError (the plateaus found do not match the nominal rates, too few live plateaus,
 // no plateau in one direction) with the levels found, so the user can fix the rates or options.
-ScaleFactorTestResult run_scale_factor_test(const std::vector<ImuSample>& samples, const RateTableSetup& setup,
+ScaleFactorTestResult run_scale_factor_test(const std::vector<io::ImuRecord>& samples, const RateTableSetup& setup,
                                             const ScaleFactorTestOptions& options);
 
 // Steps 3 and 4 on result.plateaus as they stand (inputs, mean outputs, sigmas): what

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "imu_lab/common/imu_sample.h"
+#include "imu_lab/io/imu_records.h"
 #include "imu_lab/spectrum/axis_correlation.h"
 #include "imu_lab/spectrum/welch.h"
 
@@ -54,7 +54,7 @@ double uniform_sample_interval_s(const std::vector<double>& stamps_s, double tol
 
 // Throws InputError for a record the analysis cannot use (too short for a segment, a lag or a
 // factor; a channel without variance; non-uniform stamps), naming what to change.
-SpectrumAnalysis analyse_spectra(const std::vector<ImuSample>& samples, const SpectrumOptions& options);
+SpectrumAnalysis analyse_spectra(const std::vector<io::ImuRecord>& samples, const SpectrumOptions& options);
 
 // frequency_hz, degrees_of_freedom, then per channel <name>_psd_<unit^2>_per_hz, _lower, _upper
 // (the confidence interval); bins 1 .. Nyquist (DC carries no information once the mean is removed).

@@ -20,8 +20,8 @@ namespace thermal {
 struct CompensatedSample {
   enum class Status { kCorrected, kClamped, kStale };
   Status status = Status::kCorrected;
-  ImuSample corrected;  // the raw reading when stale
-  ThermalInput input;   // what the correction used (before clamping)
+  io::ImuRecord corrected;  // the raw reading when stale
+  ThermalInput input;       // what the correction used (before clamping)
 };
 
 class ThermalCompensator {
@@ -32,7 +32,7 @@ class ThermalCompensator {
   // readings are refused (false / counted) and change nothing.
   bool add_temperature(double stamp_s, double temperature_c, std::vector<CompensatedSample>* ready);
   bool add_second_temperature(double stamp_s, double temperature_c, std::vector<CompensatedSample>* ready);
-  bool add_imu(const ImuSample& reading, std::vector<CompensatedSample>* ready);
+  bool add_imu(const io::ImuRecord& reading, std::vector<CompensatedSample>* ready);
   // Decides every waiting sample with what has arrived (end of a bag).
   void flush(std::vector<CompensatedSample>* ready);
 
@@ -42,13 +42,13 @@ class ThermalCompensator {
  private:
   void release(bool everything, std::vector<CompensatedSample>* ready);
   bool has_reading_after(const TemperatureHistory& history, double stamp_s) const;
-  CompensatedSample compensate(const ImuSample& reading) const;
+  CompensatedSample compensate(const io::ImuRecord& reading) const;
 
   ThermalModel model_;
   double max_temperature_age_s_;
   TemperatureHistory temperature_;
   TemperatureHistory second_temperature_;
-  std::deque<ImuSample> waiting_;
+  std::deque<io::ImuRecord> waiting_;
   double newest_imu_stamp_s_ = -1.0;
 };
 

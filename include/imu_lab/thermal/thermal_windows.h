@@ -9,7 +9,7 @@
 #include <optional>
 #include <vector>
 
-#include "imu_lab/common/imu_sample.h"
+#include "imu_lab/io/imu_records.h"
 #include "imu_lab/thermal/temperature_history.h"
 
 namespace imu_lab {
@@ -50,7 +50,7 @@ class ThermalWindowAverager {
 
   // Samples in stamp order. Throws InputError when the temperature is stale at the sample's
   // stamp (no reading within max_temperature_age_s) or stamps go backwards.
-  void add(const ImuSample& reading);
+  void add(const io::ImuRecord& reading);
   // Closes the last window and returns all of them.
   std::vector<ThermalWindow> finish();
 

@@ -114,7 +114,7 @@ class BagCorrector {
     }
     std::vector<thermal::CompensatedSample> ready;
     // Strictly ordered finite samples are always taken; the queue stays in step with the compensator's.
-    if (!compensator_->add_imu({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2}, &ready)) {
+    if (!compensator_->add_imu(record, &ready)) {
       throw InputError("bag " + bag_->path() + ", topic " + summary_->imu_topic + ": the sample at " +
                        format_number(record.stamp_s, 16) +
                        " s is too close to the previous one for the thermal "

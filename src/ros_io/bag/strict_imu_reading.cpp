@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "imu_lab/common/config_error.h"
-#include "imu_lab/common/imu_sample.h"
+#include "imu_lab/common/usable_imu_values.h"
 
 namespace imu_lab {
 namespace ros_io {

@@ -47,9 +47,8 @@ ThermalBagWindows read_thermal_windows(const BagRecording& recording, const Ther
   if (with_second)
     read_temperatures(recording.whole(), topics.second_temperature, "second thermosensor", &second_temperature);
   thermal::ThermalWindowAverager averager(settings, temperature, with_second ? &second_temperature : nullptr);
-  out.imu_messages = for_each_imu_strictly(recording, out.imu_topic, [&](const ImuRecord& record) {
-    averager.add({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2});
-  });
+  out.imu_messages =
+      for_each_imu_strictly(recording, out.imu_topic, [&](const ImuRecord& record) { averager.add(record); });
   out.windows = averager.finish();
   return out;
 }

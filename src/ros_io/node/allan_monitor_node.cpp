@@ -5,7 +5,7 @@
 #include <fstream>
 
 #include "imu_lab/common/config_error.h"
-#include "imu_lab/common/imu_sample.h"
+#include "imu_lab/common/usable_imu_values.h"
 #include "imu_lab/ros_io/msg/allan_messages.h"
 #include "imu_lab/ros_io/bag/allan_report.h"
 #include "imu_lab/ros_io/msg/noise_messages.h"

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <utility>
 
-#include "imu_lab/common/imu_sample.h"
+#include "imu_lab/common/usable_imu_values.h"
 #include "imu_lab/ros_io/node/node_parameters.h"
 
 namespace imu_lab {

@@ -64,7 +64,7 @@ void ThermalCompensatorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message) {
   health_->check_stamp(record.stamp_ns);
   health_->check_values(record);  // an unusable sample is then refused by the compensator too
   std::vector<thermal::CompensatedSample> ready;
-  if (!compensator_->add_imu({record.stamp_s, record.angular_rate_rad_s, record.specific_force_m_s2}, &ready)) {
+  if (!compensator_->add_imu(record, &ready)) {
     ROS_WARN_THROTTLE(kLogThrottle_s,
                       "thermal_compensator: dropped an IMU sample at %.9f (NaN/Inf, beyond +-1e100, a "
                       "triad not provided, or its stamp is not after the previous one; counted in diagnostics)",

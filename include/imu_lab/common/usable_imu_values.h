@@ -1,5 +1,5 @@
-// One IMU sample as the fitting code sees it: rates are averages over the interval ending at the
-// stamp, in SI. Thermal and calibration fits both read bags into this.
+// Which IMU values a consumer may use: finite and of a size a sensor can measure. The samples
+// themselves are io::ImuRecord (io/imu_records.h).
 #pragma once
 
 #include <Eigen/Core>
@@ -17,11 +17,5 @@ inline bool is_usable_imu_value(double value) { return std::abs(value) <= kLarge
 inline bool is_usable_imu_vector(const Eigen::Vector3d& values) {
   return is_usable_imu_value(values.x()) && is_usable_imu_value(values.y()) && is_usable_imu_value(values.z());
 }
-
-struct ImuSample {
-  double stamp_s = 0.0;
-  Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();
-  Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();
-};
 
 }  // namespace imu_lab
