@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
     auto start = std::chrono::steady_clock::now();
     for (std::size_t k = 0; k < block; ++k) {
       const imu_lab::emulator::EmulatedSample sample = emulator.next();
-      stamps_ns[k] = static_cast<std::int64_t>(sample.stamp_s * 1e9 + 0.5);
+      stamps_ns[k] = sample.stamp_ns;
       for (int axis = 0; axis < 3; ++axis) {
         values[k * kChannels + axis] = sample.angular_rate_rad_s[axis];
         values[k * kChannels + 3 + axis] = sample.specific_force_m_s2[axis];

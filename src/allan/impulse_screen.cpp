@@ -6,6 +6,7 @@
 #include <string>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/common/usable_imu_values.h"
 
 namespace imu_lab {
@@ -34,8 +35,6 @@ constexpr double kRoundingFraction = 1e-12;
 // would otherwise never leave the guard): about 7 MB with 6 channels.
 constexpr std::size_t kMaxDelayedSamples = std::size_t{1} << 16;
 
-std::int64_t to_ns(double seconds) { return static_cast<std::int64_t>(std::llround(seconds * 1e9)); }
-
 }  // namespace
 
 void ImpulseScreenOptions::validate() const {
@@ -61,9 +60,9 @@ void ImpulseScreenOptions::validate() const {
 ImpulseScreen::ImpulseScreen(const ImpulseScreenOptions& options) : options_(options) {
   options_.validate();
   channel_count_ = options_.channel_count;
-  guard_before_ns_ = to_ns(options_.guard_before_s);
-  guard_after_ns_ = to_ns(options_.guard_after_s);
-  merge_gap_ns_ = to_ns(options_.merge_gap_s);
+  guard_before_ns_ = stamp_ns_from_seconds(options_.guard_before_s);
+  guard_after_ns_ = stamp_ns_from_seconds(options_.guard_after_s);
+  merge_gap_ns_ = stamp_ns_from_seconds(options_.merge_gap_s);
   threshold_square_ = options_.threshold_sigma * options_.threshold_sigma;
   // A hole of floor(gap_factor) + 3 intervals is above gap_factor * tau0 even with some jitter.
   min_dropped_samples_ = static_cast<std::int64_t>(std::floor(options_.gap_factor)) + 2;

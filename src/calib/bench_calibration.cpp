@@ -11,6 +11,7 @@
 #include "imu_lab/calib/observability.h"
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/fit_quality.h"
+#include "imu_lab/common/stamps.h"
 
 namespace imu_lab {
 namespace calib {
@@ -95,7 +96,8 @@ std::vector<Eigen::Quaterniond> starting_attitudes(const std::vector<io::ImuReco
   for (std::size_t r = 1; r < rests.size(); ++r) {
     Eigen::Quaterniond turned = attitudes.back();
     for (std::size_t k = rests[r - 1].interval.end; k < rests[r].interval.begin; ++k) {
-      turned = turned * exp_rotation(samples[k].angular_rate_rad_s * (samples[k].stamp_s - samples[k - 1].stamp_s));
+      turned = turned * exp_rotation(samples[k].angular_rate_rad_s *
+                                     seconds_between(samples[k - 1].stamp_ns, samples[k].stamp_ns));
     }
     attitudes.push_back(level(turned, rests[r].mean_force_m_s2));
   }
@@ -203,7 +205,7 @@ CalibrationResult calibrate(const std::vector<io::ImuRecord>& samples, const Cal
     move.last = to.interval.begin;
     move.nominal_from = nominal[fitted[m - 1]];
     move.nominal_to = nominal[fitted[m]];
-    const double duration_s = samples[move.last - 1].stamp_s - samples[move.first - 1].stamp_s;
+    const double duration_s = seconds_between(samples[move.first - 1].stamp_ns, samples[move.last - 1].stamp_ns);
     move.earth_turn = exp_rotation(earth_rate * duration_s);
     // Rate noise integrated over the move: white density^2 * duration (per axis).
     move.angle_sigma_rad = result.noise.rate_density_rad_s_per_sqrt_hz * std::sqrt(duration_s);
@@ -321,7 +323,7 @@ CalibrationResult calibrate(const std::vector<io::ImuRecord>& samples, const Cal
     MoveReport report;
     report.from = fitted[m];
     report.to = fitted[m + 1];
-    report.duration_s = samples[unweighted.last - 1].stamp_s - samples[unweighted.first - 1].stamp_s;
+    report.duration_s = seconds_between(samples[unweighted.first - 1].stamp_ns, samples[unweighted.last - 1].stamp_ns);
     report.angle_rad =
         result.rests[report.from].attitude_body_to_enu.angularDistance(result.rests[report.to].attitude_body_to_enu);
     unweighted(blocks.accelerometer_bias, blocks.accelerometer_k, blocks.gyro_bias, blocks.gyro_k,

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "imu_lab/calib/static_intervals.h"
+#include "imu_lab/common/stamps.h"
 
 namespace imu_lab {
 namespace calib {
@@ -122,7 +123,7 @@ struct MoveResidual {
     std::array<T, 4> integrated = {T(1), T(0), T(0), T(0)};
     for (std::size_t k = first; k < last; ++k) {
       const io::ImuRecord& sample = (*samples)[k];
-      const double dt = sample.stamp_s - (*samples)[k - 1].stamp_s;
+      const double dt = seconds_between((*samples)[k - 1].stamp_ns, sample.stamp_ns);
       Vector3<T> rate = sample.angular_rate_rad_s.cast<T>() - b_g;
       if (g_sensitivity) {
         rate -= g_sensitivity_matrix * (accelerometer_inverse * (sample.specific_force_m_s2.cast<T>() - b_a));

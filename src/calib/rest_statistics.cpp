@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
 
 namespace imu_lab {
 namespace calib {
@@ -64,7 +65,8 @@ void add_drift_at_the_rest_scale(const std::vector<io::ImuRecord>& samples, Rest
 RestStatistics rest_statistics(const std::vector<io::ImuRecord>& samples, const std::vector<StaticInterval>& intervals,
                                double block_s) {
   if (samples.size() < 2 || intervals.empty()) throw InputError("calibration recording: no static intervals");
-  const double sample_interval_s = (samples.back().stamp_s - samples.front().stamp_s) / (samples.size() - 1);
+  const double sample_interval_s =
+      seconds_between(samples.front().stamp_ns, samples.back().stamp_ns) / (samples.size() - 1);
   const std::size_t block = std::max<std::size_t>(1, std::lround(block_s / sample_interval_s));
   const auto rate = [](const io::ImuRecord& s) { return s.angular_rate_rad_s; };
   const auto force = [](const io::ImuRecord& s) { return s.specific_force_m_s2; };
@@ -75,7 +77,7 @@ RestStatistics rest_statistics(const std::vector<io::ImuRecord>& samples, const 
   for (const StaticInterval& interval : intervals) {
     RestMeans rest;
     rest.interval = interval;
-    rest.start_s = samples[interval.begin].stamp_s;
+    rest.start_s = seconds_from_stamp_ns(samples[interval.begin].stamp_ns);
     rest.duration_s = interval.size() * sample_interval_s;
     rest.mean_rate_rad_s = mean_over(samples, interval.begin, interval.end, rate);
     rest.mean_force_m_s2 = mean_over(samples, interval.begin, interval.end, force);

@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+#include <string>
 
 #include "imu_lab/common/config_error.h"
-#include "imu_lab/common/robust_statistics.h"
 #include "imu_lab/common/earth_constants.h"
+#include "imu_lab/common/robust_statistics.h"
+#include "imu_lab/common/stamps.h"
 
 namespace imu_lab {
 namespace calib {
@@ -14,14 +15,14 @@ StaticDetection detect_static_intervals(const std::vector<io::ImuRecord>& sample
                                         const StaticDetectionOptions& options) {
   if (samples.size() < 2) throw InputError("calibration recording: fewer than 2 samples");
   for (std::size_t k = 1; k < samples.size(); ++k) {
-    if (!(samples[k].stamp_s > samples[k - 1].stamp_s)) {
-      std::ostringstream message;
-      message << "calibration recording: stamps not increasing at sample " << k << " (" << samples[k].stamp_s
-              << " s after " << samples[k - 1].stamp_s << " s); record in order or sort the bag";
-      throw InputError(message.str());
+    if (samples[k].stamp_ns <= samples[k - 1].stamp_ns) {
+      throw InputError("calibration recording: stamps not increasing at sample " + std::to_string(k) + " (" +
+                       format_stamp_s(samples[k].stamp_ns) + " s after " + format_stamp_s(samples[k - 1].stamp_ns) +
+                       " s); record in order or sort the bag");
     }
   }
-  const double sample_interval_s = (samples.back().stamp_s - samples.front().stamp_s) / (samples.size() - 1);
+  const double sample_interval_s =
+      seconds_between(samples.front().stamp_ns, samples.back().stamp_ns) / (samples.size() - 1);
   const std::size_t window = std::max<std::size_t>(1, std::lround(options.window_s / sample_interval_s));
   const std::size_t window_count = samples.size() / window;
   if (window_count < 3) throw InputError("calibration recording: too short to look for static intervals");

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
 
 #include "imu_lab/emulator/sensor_channel.h"
 
@@ -48,7 +49,8 @@ EmulatedSample ImuEmulator::next() {
   const Eigen::Vector3d true_force = truth_increment.delta_velocity_m_s / interval_s_;
 
   EmulatedSample sample;
-  sample.stamp_s = settings_.start_time_s + static_cast<double>(sample_index_) * interval_s_;
+  sample.stamp_ns = stamp_ns_from_seconds(settings_.start_time_s) +
+                    stamp_ns_from_seconds(static_cast<double>(sample_index_) * interval_s_);
   const SensorTemperature temperature{truth_increment.mean_temperature_c, truth_increment.mean_temperature_rate_c_s};
   sample.angular_rate_rad_s = gyro_->measure(true_rate, true_force, elapsed_start_s, interval_s_, temperature);
   sample.specific_force_m_s2 =
@@ -65,8 +67,8 @@ EmulatedSample ImuEmulator::next() {
   sample.specific_force_variance_m2_s4 = accelerometer_variance_;
 
   const TruthState truth = motion_->truth_at(static_cast<double>(sample_index_) * interval_s_);
-  sample.truth.stamp_s = sample.stamp_s;
-  sample.truth.attitude_body_to_enu = truth.attitude_body_to_enu;
+  sample.truth.stamp_ns = sample.stamp_ns;
+  sample.truth.q_body_to_enu = truth.attitude_body_to_enu;
   // What the sample should read without errors: the interval averages the sensor measured.
   sample.truth.angular_rate_rad_s = true_rate;
   sample.truth.specific_force_m_s2 = true_force;

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/identify/units.h"
 #include "imu_lab/io/csv_header_inference.h"
 
@@ -343,16 +344,6 @@ class RowParser {
 };
 
 }  // namespace
-
-std::string format_stamp_s(std::int64_t stamp_ns) {
-  const bool negative = stamp_ns < 0;
-  const std::uint64_t magnitude = negative ? 0 - static_cast<std::uint64_t>(stamp_ns) : stamp_ns;
-  char text[40];
-  std::snprintf(text, sizeof text, "%s%llu.%09llu", negative ? "-" : "",
-                static_cast<unsigned long long>(magnitude / 1000000000ULL),
-                static_cast<unsigned long long>(magnitude % 1000000000ULL));
-  return text;
-}
 
 AngularRateUnit parse_angular_rate_unit(const std::string& name, const std::string& source, const std::string& key) {
   return parse_name<AngularRateUnit>(

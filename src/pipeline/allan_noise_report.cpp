@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/identify/bootstrap.h"
 #include "imu_lab/identify/kalibr_yaml.h"
 #include "imu_lab/identify/noise_report.h"
@@ -62,7 +63,7 @@ identify::TriadFit fit_sensor(SensorKind sensor, const AllanRunDescription& run,
 }
 
 double seconds_from(std::int64_t stamp_ns, std::int64_t first_stamp_ns) {
-  return 1e-9 * static_cast<double>(stamp_ns - first_stamp_ns);
+  return seconds_between(first_stamp_ns, stamp_ns);
 }
 
 identify::ReportMetadata report_metadata(const AllanRunDescription& run, const allan::StreamingSnapshot& snapshot) {

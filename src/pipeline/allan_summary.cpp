@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "imu_lab/common/stamps.h"
+
 namespace imu_lab {
 namespace pipeline {
 namespace {
@@ -82,7 +84,7 @@ void emit_channels(YAML::Emitter& out, const AllanRunDescription& run, const all
 }
 
 void emit_impulse_event(YAML::Emitter& out, const allan::ImpulseEvent& event, std::int64_t first_stamp_ns) {
-  const auto from_start_s = [&](std::int64_t stamp_ns) { return (stamp_ns - first_stamp_ns) * 1e-9; };
+  const auto from_start_s = [&](std::int64_t stamp_ns) { return seconds_between(first_stamp_ns, stamp_ns); };
   out << YAML::BeginMap;
   out << YAML::Key << "onset_from_start_s" << YAML::Value << from_start_s(event.onset_stamp_ns);
   out << YAML::Key << "window_from_start_s" << YAML::Value << YAML::Flow << YAML::BeginSeq
@@ -198,13 +200,13 @@ std::string format_impulse_events(const std::string& prefix, const allan::Impuls
                 static_cast<long long>(screen.dropped_sample_count),
                 screen.event_count > 0 ? "; the run is split at each" : "");
   std::string text = prefix + line;
-  const auto from_start_s = [&](std::int64_t stamp_ns) { return (stamp_ns - screen.first_stamp_ns) * 1e-9; };
+  const auto from_start_s = [&](std::int64_t stamp_ns) { return seconds_between(screen.first_stamp_ns, stamp_ns); };
   for (std::size_t i = 0; i < screen.events.size(); ++i) {
     const allan::ImpulseEvent& event = screen.events[i];
     std::snprintf(line, sizeof line,
                   "  event %zu: onset %.2f s from the start (stamp %.9f s), dropped %.2f-%.2f s, peak %.1f scales in "
                   "%s at %.2f s; over the threshold:",
-                  i + 1, from_start_s(event.onset_stamp_ns), event.onset_stamp_ns * 1e-9,
+                  i + 1, from_start_s(event.onset_stamp_ns), seconds_from_stamp_ns(event.onset_stamp_ns),
                   from_start_s(event.start_stamp_ns), from_start_s(event.end_stamp_ns), event.peak_sigma,
                   kAllanChannelNames.at(event.peak_channel), from_start_s(event.peak_stamp_ns));
     text += prefix + line;

@@ -1,18 +1,17 @@
 #include "imu_lab/pipeline/navigation_csv.h"
 
-#include <cinttypes>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 
 #include "imu_lab/common/atomic_file.h"
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
 
 namespace imu_lab {
 namespace pipeline {
 namespace {
 
-constexpr std::int64_t kNanosecondsPerSecond = 1000000000;
 constexpr int kTrajectoryColumns = 17;
 
 // Round-trip precision: a reader gets back the exact doubles.
@@ -26,35 +25,12 @@ void write_values(std::ostream& out, std::initializer_list<double> values) {
 
 }  // namespace
 
-std::string format_stamp(std::int64_t stamp_ns) {
-  char buffer[48];
-  const char* sign = stamp_ns < 0 ? "-" : "";
-  const std::int64_t magnitude = stamp_ns < 0 ? -stamp_ns : stamp_ns;
-  std::snprintf(buffer, sizeof buffer, "%s%" PRId64 ".%09" PRId64, sign, magnitude / kNanosecondsPerSecond,
-                magnitude % kNanosecondsPerSecond);
-  return buffer;
-}
-
-std::int64_t parse_stamp(const std::string& text) {
-  const bool negative = !text.empty() && text[0] == '-';
-  const std::string body = negative ? text.substr(1) : text;
-  const auto dot = body.find('.');
-  const std::string seconds = body.substr(0, dot);
-  std::string fraction = dot == std::string::npos ? "" : body.substr(dot + 1);
-  const bool digits = !seconds.empty() && seconds.find_first_not_of("0123456789") == std::string::npos &&
-                      fraction.size() <= 9 && fraction.find_first_not_of("0123456789") == std::string::npos;
-  if (!digits) throw InputError("'" + text + "' is not a stamp in seconds.nanoseconds");
-  fraction.append(9 - fraction.size(), '0');
-  const std::int64_t magnitude = std::stoll(seconds) * kNanosecondsPerSecond + std::stoll(fraction);
-  return negative ? -magnitude : magnitude;
-}
-
 void write_trajectory_csv(const std::string& path, const std::vector<NavigationSolution>& solutions) {
   write_file_atomically(path, [&](std::ostream& out) {
     out << "stamp_s,latitude_rad,longitude_rad,height_m,east_m,north_m,up_m,velocity_east_m_s,velocity_north_m_s,"
            "velocity_up_m_s,roll_rad,pitch_rad,yaw_rad,qw,qx,qy,qz\n";
     for (const NavigationSolution& s : solutions) {
-      out << format_stamp(s.stamp_ns);
+      out << format_stamp_s(s.stamp_ns);
       write_values(out, {s.latitude_rad, s.longitude_rad, s.height_m, s.position_enu_m.x(), s.position_enu_m.y(),
                          s.position_enu_m.z(), s.velocity_enu_m_s.x(), s.velocity_enu_m_s.y(), s.velocity_enu_m_s.z(),
                          s.roll_pitch_yaw_rad.x(), s.roll_pitch_yaw_rad.y(), s.roll_pitch_yaw_rad.z(),
@@ -70,7 +46,7 @@ void write_error_csv(const std::string& path, const std::vector<NavigationError>
            "height_error_m,velocity_error_east_m_s,velocity_error_north_m_s,velocity_error_up_m_s,"
            "attitude_error_east_rad,attitude_error_north_rad,attitude_error_up_rad\n";
     for (const NavigationError& e : errors) {
-      out << format_stamp(e.stamp_ns);
+      out << format_stamp_s(e.stamp_ns);
       write_values(out, {e.time_since_alignment_s, e.position_error_enu_m.x(), e.position_error_enu_m.y(),
                          e.position_error_enu_m.z(), e.horizontal_position_error_m, e.height_error_m,
                          e.velocity_error_enu_m_s.x(), e.velocity_error_enu_m_s.y(), e.velocity_error_enu_m_s.z(),
@@ -101,7 +77,7 @@ std::vector<NavigationSolution> read_trajectory_csv(const std::string& path) {
       throw InputError(path + ":" + std::to_string(line_number) + ": a value is not a number");
     }
     NavigationSolution s;
-    s.stamp_ns = parse_stamp(cells[0]);
+    s.stamp_ns = parse_stamp_s(cells[0]);
     s.latitude_rad = v[0];
     s.longitude_rad = v[1];
     s.height_m = v[2];

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/common/usable_imu_values.h"
 #include "imu_lab/emulator/static_motion.h"
 #include "imu_lab/nav/alignment_error_budget.h"
@@ -12,7 +13,6 @@ namespace imu_lab {
 namespace pipeline {
 namespace {
 
-constexpr double kSecondsPerNanosecond = 1e-9;
 // Smoothing of the typical interval: follows a slow rate change, ignores single jitter spikes.
 constexpr double kTypicalIntervalSmoothing = 0.01;
 
@@ -74,12 +74,12 @@ std::optional<SampleOutcome> NavigationSession::begin_sample(std::int64_t stamp_
   new_solution_ = false;
   if (divergence_) {
     return skip(SampleOutcome::kHalted, counters_.halted,
-                "navigation stopped at " + std::to_string(divergence_->stamp_ns * kSecondsPerNanosecond) + " s (" +
-                    divergence_->problem + "); waiting to be re-initialised");
+                "navigation stopped at " + format_stamp_s(divergence_->stamp_ns) + " s (" + divergence_->problem +
+                    "); waiting to be re-initialised");
   }
   if (previous_stamp_ns_ && stamp_ns <= *previous_stamp_ns_) {
     return skip(SampleOutcome::kSkippedUnordered, counters_.unordered,
-                "stamp " + std::to_string(stamp_ns * kSecondsPerNanosecond) + " s is not after the previous one");
+                "stamp " + format_stamp_s(stamp_ns) + " s is not after the previous one");
   }
   interval_start_ns = previous_stamp_ns_;
   previous_stamp_ns_ = stamp_ns;
@@ -121,7 +121,7 @@ SampleOutcome NavigationSession::add_rates(std::int64_t stamp_ns, const Eigen::V
     last_stamp_ns_ = stamp_ns;
     return SampleOutcome::kStarted;
   }
-  const double interval_s = static_cast<double>(stamp_ns - *start_ns) * kSecondsPerNanosecond;
+  const double interval_s = seconds_between(*start_ns, stamp_ns);
   if (is_gap(interval_s, typical_interval_s_)) {
     return skip(
         SampleOutcome::kSkippedGap, counters_.gaps,
@@ -154,7 +154,7 @@ SampleOutcome NavigationSession::add_increment(std::int64_t stamp_ns, const nav:
     start_navigation(stamp_ns, given_attitude(settings_));
     return SampleOutcome::kStarted;
   }
-  if (start_ns && is_gap(static_cast<double>(stamp_ns - *start_ns) * kSecondsPerNanosecond, increment.dt_s)) {
+  if (start_ns && is_gap(seconds_between(*start_ns, stamp_ns), increment.dt_s)) {
     ++counters_.gaps;
     last_problem_ = "gap before this increment; coning/sculling history restarted";
     if (navigating()) navigator_.initialise(navigator_.state());  // forgets the previous increment
@@ -213,7 +213,7 @@ void NavigationSession::start_navigation(std::int64_t stamp_ns, AlignmentResult 
   result.stamp_ns = stamp_ns;
   result.roll_pitch_yaw_rad = roll_pitch_yaw_from_quaternion(result.q_body_to_enu);
   nav::NavState initial;
-  initial.stamp_s = static_cast<double>(stamp_ns) * kSecondsPerNanosecond;
+  initial.stamp_s = seconds_from_stamp_ns(stamp_ns);
   initial.q_body_to_enu = result.q_body_to_enu;
   initial.velocity_enu_m_s = settings_.initial_velocity_enu_m_s;  // zero with an alignment (validate)
   initial.latitude_rad = settings_.latitude_rad;

@@ -1,5 +1,6 @@
 #include "imu_lab/pipeline/navigation_solution.h"
 
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/nav/rotation.h"
 
 namespace imu_lab {
@@ -25,7 +26,7 @@ NavigationError navigation_error(const NavigationSolution& solution, const io::T
                                  const nav::LocalEnuFrame& world, std::int64_t alignment_stamp_ns) {
   NavigationError error;
   error.stamp_ns = solution.stamp_ns;
-  error.time_since_alignment_s = static_cast<double>(solution.stamp_ns - alignment_stamp_ns) * 1e-9;
+  error.time_since_alignment_s = seconds_between(alignment_stamp_ns, solution.stamp_ns);
   error.position_error_enu_m =
       solution.position_enu_m - world.enu_m(truth.latitude_rad, truth.longitude_rad, truth.height_m);
   error.horizontal_position_error_m = error.position_error_enu_m.head<2>().norm();

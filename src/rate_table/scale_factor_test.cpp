@@ -7,6 +7,7 @@
 
 #include "imu_lab/calib/rest_statistics.h"
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
 
 namespace imu_lab {
 namespace rate_table {
@@ -138,7 +139,7 @@ ScaleFactorTestResult run_scale_factor_test(const std::vector<io::ImuRecord>& sa
   const Eigen::Vector3d axis_body = setup.axis_body();
   std::vector<double> stamps_s, table_rate_rad_s;
   for (const io::ImuRecord& sample : samples) {
-    stamps_s.push_back(sample.stamp_s);
+    stamps_s.push_back(seconds_from_stamp_ns(sample.stamp_ns));
     table_rate_rad_s.push_back(sample.angular_rate_rad_s.dot(axis_body));
   }
   result.detection = detect_plateaus(stamps_s, table_rate_rad_s, options.plateaus);

@@ -8,6 +8,7 @@
 
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/format_number.h"
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/spectrum/autocorrelation.h"
 
 namespace imu_lab {
@@ -57,7 +58,8 @@ double uniform_sample_interval_s(const std::vector<double>& stamps_s, double tol
 SpectrumAnalysis analyse_spectra(const std::vector<io::ImuRecord>& samples, const SpectrumOptions& options) {
   SpectrumAnalysis analysis;
   std::vector<double> stamps(samples.size());
-  std::transform(samples.begin(), samples.end(), stamps.begin(), [](const io::ImuRecord& s) { return s.stamp_s; });
+  std::transform(samples.begin(), samples.end(), stamps.begin(),
+                 [](const io::ImuRecord& s) { return seconds_from_stamp_ns(s.stamp_ns); });
   analysis.tau0_s = uniform_sample_interval_s(stamps, options.interval_tolerance);
   analysis.sample_count = samples.size();
   analysis.confidence = options.confidence;

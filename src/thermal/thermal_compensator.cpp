@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/common/usable_imu_values.h"
 
 namespace imu_lab {
@@ -10,25 +11,26 @@ namespace thermal {
 ThermalCompensator::ThermalCompensator(ThermalModel model, double max_temperature_age_s)
     : model_(std::move(model)), max_temperature_age_s_(max_temperature_age_s) {}
 
-bool ThermalCompensator::add_temperature(double stamp_s, double temperature_c, std::vector<CompensatedSample>* ready) {
-  if (!temperature_.add(stamp_s, temperature_c)) return false;
+bool ThermalCompensator::add_temperature(std::int64_t stamp_ns, double temperature_c,
+                                         std::vector<CompensatedSample>* ready) {
+  if (!temperature_.add(stamp_ns, temperature_c)) return false;
   release(false, ready);
   return true;
 }
 
-bool ThermalCompensator::add_second_temperature(double stamp_s, double temperature_c,
+bool ThermalCompensator::add_second_temperature(std::int64_t stamp_ns, double temperature_c,
                                                 std::vector<CompensatedSample>* ready) {
-  if (!second_temperature_.add(stamp_s, temperature_c)) return false;
+  if (!second_temperature_.add(stamp_ns, temperature_c)) return false;
   release(false, ready);
   return true;
 }
 
 bool ThermalCompensator::add_imu(const io::ImuRecord& reading, std::vector<CompensatedSample>* ready) {
-  if (!(reading.stamp_s > newest_imu_stamp_s_) || !is_usable_imu_vector(reading.angular_rate_rad_s) ||
-      !is_usable_imu_vector(reading.specific_force_m_s2)) {
+  if ((newest_imu_stamp_ns_ && reading.stamp_ns <= *newest_imu_stamp_ns_) ||
+      !is_usable_imu_vector(reading.angular_rate_rad_s) || !is_usable_imu_vector(reading.specific_force_m_s2)) {
     return false;
   }
-  newest_imu_stamp_s_ = reading.stamp_s;
+  newest_imu_stamp_ns_ = reading.stamp_ns;
   waiting_.push_back(reading);
   release(false, ready);
   return true;
@@ -36,39 +38,41 @@ bool ThermalCompensator::add_imu(const io::ImuRecord& reading, std::vector<Compe
 
 void ThermalCompensator::flush(std::vector<CompensatedSample>* ready) { release(true, ready); }
 
-bool ThermalCompensator::has_reading_after(const TemperatureHistory& history, double stamp_s) const {
-  return !history.empty() && history.newest_stamp_s() >= stamp_s;
+bool ThermalCompensator::has_reading_after(const TemperatureHistory& history, std::int64_t stamp_ns) const {
+  return !history.empty() && history.newest_stamp_ns() >= stamp_ns;
 }
 
 void ThermalCompensator::release(bool everything, std::vector<CompensatedSample>* ready) {
   while (!waiting_.empty()) {
-    const double stamp_s = waiting_.front().stamp_s;
-    const bool bracketed = has_reading_after(temperature_, stamp_s) &&
-                           (!model_.uses_second_sensor || has_reading_after(second_temperature_, stamp_s));
-    const bool given_up = newest_imu_stamp_s_ - stamp_s > max_temperature_age_s_;
+    const std::int64_t stamp_ns = waiting_.front().stamp_ns;
+    const bool bracketed = has_reading_after(temperature_, stamp_ns) &&
+                           (!model_.uses_second_sensor || has_reading_after(second_temperature_, stamp_ns));
+    const bool given_up = seconds_between(stamp_ns, *newest_imu_stamp_ns_) > max_temperature_age_s_;
     if (!(bracketed || given_up || everything)) break;
     ready->push_back(compensate(waiting_.front()));
     waiting_.pop_front();
   }
   // The rate needs one window of history; interpolation needs the reading before.
-  const double keep_from_s = (waiting_.empty() ? newest_imu_stamp_s_ : waiting_.front().stamp_s) -
-                             model_.rate_window_s - max_temperature_age_s_;
-  temperature_.drop_before(keep_from_s);
-  second_temperature_.drop_before(keep_from_s);
+  if (!newest_imu_stamp_ns_) return;
+  const std::int64_t keep_from_ns = (waiting_.empty() ? *newest_imu_stamp_ns_ : waiting_.front().stamp_ns) -
+                                    stamp_ns_from_seconds(model_.rate_window_s + max_temperature_age_s_);
+  temperature_.drop_before(keep_from_ns);
+  second_temperature_.drop_before(keep_from_ns);
 }
 
 CompensatedSample ThermalCompensator::compensate(const io::ImuRecord& reading) const {
   CompensatedSample out;
   out.corrected = reading;
-  const auto temperature_c = temperature_.temperature_at(reading.stamp_s, max_temperature_age_s_);
+  const auto temperature_c = temperature_.temperature_at(reading.stamp_ns, max_temperature_age_s_);
   std::optional<double> second_c;
-  if (model_.uses_second_sensor) second_c = second_temperature_.temperature_at(reading.stamp_s, max_temperature_age_s_);
+  if (model_.uses_second_sensor)
+    second_c = second_temperature_.temperature_at(reading.stamp_ns, max_temperature_age_s_);
   if (!temperature_c || (model_.uses_second_sensor && !second_c)) {
     out.status = CompensatedSample::Status::kStale;
     return out;
   }
   out.input.temperature_c = *temperature_c;
-  out.input.rate_c_s = temperature_.rate_at(reading.stamp_s, model_.rate_window_s);
+  out.input.rate_c_s = temperature_.rate_at(reading.stamp_ns, model_.rate_window_s);
   out.input.second_temperature_c = second_c;
   const ThermalCorrection correction =
       correct(model_, reading.angular_rate_rad_s, reading.specific_force_m_s2, out.input);

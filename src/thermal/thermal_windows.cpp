@@ -7,14 +7,15 @@
 #include <sstream>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
 
 namespace imu_lab {
 namespace thermal {
 namespace {
 
-std::string stale_message(const char* which, double stamp_s, double age_s, double max_age_s) {
+std::string stale_message(const char* which, std::int64_t stamp_ns, double age_s, double max_age_s) {
   std::ostringstream text;
-  text << std::fixed << std::setprecision(3) << "the " << which << " is stale at IMU stamp " << stamp_s
+  text << std::fixed << std::setprecision(3) << "the " << which << " is stale at IMU stamp " << format_stamp_s(stamp_ns)
        << " s: the nearest reading is " << age_s << " s away (maximum age " << max_age_s
        << " s); check that the thermosensor was recorded through the whole test, or raise the maximum "
           "temperature age";
@@ -33,29 +34,28 @@ ThermalWindowAverager::ThermalWindowAverager(const WindowSettings& settings, con
     : settings_(settings), temperature_(temperature), second_temperature_(second_temperature) {}
 
 void ThermalWindowAverager::add(const io::ImuRecord& reading) {
-  if (first_stamp_s_ && !(reading.stamp_s > last_stamp_s_)) {
-    std::ostringstream text;
-    text << std::setprecision(15) << "IMU stamps go backwards or repeat at " << reading.stamp_s << " s (previous "
-         << last_stamp_s_ << " s); re-record or sort the bag by header stamp";
-    throw InputError(text.str());
+  if (first_stamp_ns_ && reading.stamp_ns <= last_stamp_ns_) {
+    throw InputError("IMU stamps go backwards or repeat at " + format_stamp_s(reading.stamp_ns) + " s (previous " +
+                     format_stamp_s(last_stamp_ns_) + " s); re-record or sort the bag by header stamp");
   }
-  const auto temperature_c = temperature_.temperature_at(reading.stamp_s, settings_.max_temperature_age_s);
+  const auto temperature_c = temperature_.temperature_at(reading.stamp_ns, settings_.max_temperature_age_s);
   if (!temperature_c) {
-    throw InputError(stale_message("temperature", reading.stamp_s, temperature_.age_at(reading.stamp_s),
+    throw InputError(stale_message("temperature", reading.stamp_ns, temperature_.age_at(reading.stamp_ns),
                                    settings_.max_temperature_age_s));
   }
   std::optional<double> second_c;
   if (second_temperature_) {
-    second_c = second_temperature_->temperature_at(reading.stamp_s, settings_.max_temperature_age_s);
+    second_c = second_temperature_->temperature_at(reading.stamp_ns, settings_.max_temperature_age_s);
     if (!second_c) {
-      throw InputError(stale_message("second temperature", reading.stamp_s,
-                                     second_temperature_->age_at(reading.stamp_s), settings_.max_temperature_age_s));
+      throw InputError(stale_message("second temperature", reading.stamp_ns,
+                                     second_temperature_->age_at(reading.stamp_ns), settings_.max_temperature_age_s));
     }
   }
-  if (!first_stamp_s_) first_stamp_s_ = reading.stamp_s;
-  const double interval_s = reading.stamp_s - last_stamp_s_;
-  last_stamp_s_ = reading.stamp_s;
-  const long index = static_cast<long>(std::floor((reading.stamp_s - *first_stamp_s_) / settings_.window_s));
+  if (!first_stamp_ns_) first_stamp_ns_ = reading.stamp_ns;
+  const double interval_s = seconds_between(last_stamp_ns_, reading.stamp_ns);
+  last_stamp_ns_ = reading.stamp_ns;
+  const double since_first_s = seconds_between(*first_stamp_ns_, reading.stamp_ns);
+  const long index = static_cast<long>(std::floor(since_first_s / settings_.window_s));
   if (index != window_index_) {
     if (count_ > 0) close_window();
     window_index_ = index;
@@ -74,17 +74,18 @@ void ThermalWindowAverager::add(const io::ImuRecord& reading) {
   rate_square_sum_ += rate.cwiseProduct(rate);
   force_sum_ += force;
   force_square_sum_ += force.cwiseProduct(force);
-  stamp_sum_ += reading.stamp_s - *first_stamp_s_;
+  stamp_sum_ += since_first_s;
   temperature_sum_ += *temperature_c;
-  rate_c_s_sum_ += temperature_.rate_at(reading.stamp_s, settings_.rate_window_s);
+  rate_c_s_sum_ += temperature_.rate_at(reading.stamp_ns, settings_.rate_window_s);
   if (second_c) second_sum_ += *second_c;
 }
 
 void ThermalWindowAverager::close_window() {
   const double n = static_cast<double>(count_);
   ThermalWindow window;
-  window.start_s = *first_stamp_s_ + static_cast<double>(window_index_) * settings_.window_s;
-  window.mid_stamp_s = *first_stamp_s_ + stamp_sum_ / n;
+  const double first_stamp_s = seconds_from_stamp_ns(*first_stamp_ns_);
+  window.start_s = first_stamp_s + static_cast<double>(window_index_) * settings_.window_s;
+  window.mid_stamp_s = first_stamp_s + stamp_sum_ / n;
   window.sample_count = count_;
   window.mean_angular_rate_rad_s = rate_offset_ + rate_sum_ / n;
   window.mean_specific_force_m_s2 = force_offset_ + force_sum_ / n;

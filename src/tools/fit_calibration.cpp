@@ -13,12 +13,13 @@
 #include "imu_lab/common/atomic_file.h"
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/progress.h"
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
-#include "imu_lab/ros_io/node/config_paths.h"
 #include "imu_lab/ros_io/bag/imu_bag_reader.h"
 #include "imu_lab/ros_io/bag/recording_arguments.h"
 #include "imu_lab/ros_io/bag/strict_imu_reading.h"
+#include "imu_lab/ros_io/node/config_paths.h"
 
 namespace {
 
@@ -114,7 +115,8 @@ int main(int argc, char** argv) {
       options.held_out_positions.push_back(k);
     }
     const auto result = imu_lab::calib::calibrate(samples, options);
-    const double rate_hz = (samples.size() - 1) / (samples.back().stamp_s - samples.front().stamp_s);
+    const double rate_hz =
+        (samples.size() - 1) / imu_lab::seconds_between(samples.front().stamp_ns, samples.back().stamp_ns);
     const std::string report = imu_lab::calib::calibration_report(result);
     // The three files are one set: all new, or (on any failure) all as they were.
     imu_lab::OutputSet outputs;

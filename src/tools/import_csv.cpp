@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
 #include "imu_lab/io/csv_import_config.h"
@@ -101,7 +102,7 @@ int main(int argc, char** argv) {
     const double span_s = 1e-9 * static_cast<double>(summary.last_stamp_ns - summary.first_stamp_ns);
     if (!summary.recognised.empty()) std::printf("%s: %s: %s\n", kTool, c.csv_path.c_str(), summary.recognised.c_str());
     if (summary.relative_time_offset_ns != 0) {
-      using imu_lab::io::format_stamp_s;
+      using imu_lab::format_stamp_s;
       std::printf(
           "%s: %s: the time column is relative (it starts at %s s, before any epoch ROS time can hold): "
           "%s s added to every stamp (--time-offset-s gives another offset, 0 keeps it)\n",

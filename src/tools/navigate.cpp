@@ -19,12 +19,13 @@
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/format_number.h"
 #include "imu_lab/common/progress.h"
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
-#include "imu_lab/ros_io/bag/bag_navigation.h"
-#include "imu_lab/ros_io/node/config_paths.h"
 #include "imu_lab/pipeline/navigation_csv.h"
+#include "imu_lab/ros_io/bag/bag_navigation.h"
 #include "imu_lab/ros_io/bag/recording_arguments.h"
+#include "imu_lab/ros_io/node/config_paths.h"
 
 namespace {
 
@@ -203,7 +204,7 @@ void print_summary(const CommandLine& c, const imu_lab::ros_io::BagNavigationRes
       static_cast<unsigned long long>(n.unordered), static_cast<unsigned long long>(n.gaps));
   const auto& a = *result.alignment;
   std::printf("alignment (%s, %.1f s, ends %s): roll %.6f pitch %.6f yaw %.6f deg; %s\n", a.method.c_str(),
-              a.duration_s, imu_lab::pipeline::format_stamp(a.stamp_ns).c_str(), a.roll_pitch_yaw_rad.x() / kDegToRad,
+              a.duration_s, imu_lab::format_stamp_s(a.stamp_ns).c_str(), a.roll_pitch_yaw_rad.x() / kDegToRad,
               a.roll_pitch_yaw_rad.y() / kDegToRad, a.roll_pitch_yaw_rad.z() / kDegToRad,
               predicted_error_text(a, c.settings.expected_errors.has_value()).c_str());
   if (!c.initial_state_source.empty()) {
@@ -213,7 +214,7 @@ void print_summary(const CommandLine& c, const imu_lab::ros_io::BagNavigationRes
   }
   const auto& last = result.solutions.back();
   std::printf("final (%s): lat %.9f lon %.9f deg, height %.3f m, ENU %.3f %.3f %.3f m\n",
-              imu_lab::pipeline::format_stamp(last.stamp_ns).c_str(), last.latitude_rad / kDegToRad,
+              imu_lab::format_stamp_s(last.stamp_ns).c_str(), last.latitude_rad / kDegToRad,
               last.longitude_rad / kDegToRad, last.height_m, last.position_enu_m.x(), last.position_enu_m.y(),
               last.position_enu_m.z());
   if (result.errors.empty()) return;

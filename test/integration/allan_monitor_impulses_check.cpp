@@ -32,8 +32,8 @@ std::size_t write_knocked_bag(const std::string& path) {
   const double interval_s = 1.0 / kEmulatedRate_hz;
   const auto count = static_cast<std::size_t>(kDuration_s * kEmulatedRate_hz);
   for (std::size_t n = 1; n <= count; ++n) {
-    const ros::Time stamp = imu_lab::ros_io::sample_stamp(kEmulatedStart_s, interval_s, n);
-    auto message = imu_lab::ros_io::to_messages(emulator.next(), stamp, interval_s, "imu_link").raw;
+    auto message = imu_lab::ros_io::to_messages(emulator.next(), interval_s, "imu_link").raw;
+    const ros::Time stamp = message.header.stamp;
     const double t = (n - 1) * interval_s - kKnock_s;
     if (t >= 0.0) {
       const double ringing = std::exp(-t / 0.1) * std::cos(2.0 * M_PI * 12.0 * t);

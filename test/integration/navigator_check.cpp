@@ -19,10 +19,11 @@
 #include <string>
 
 #include "connection_support.h"
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/nav/earth_model.h"
 #include "imu_lab/pipeline/navigation_csv.h"
-#include "imu_lab/ros_io/msg/navigation_messages.h"
 #include "imu_lab/pipeline/navigation_settings.h"
+#include "imu_lab/ros_io/msg/navigation_messages.h"
 
 namespace {
 
@@ -85,7 +86,7 @@ TEST(StrapdownNavigatorNode, PublishesTheNavigateToolsSolutionAndTheTransform) {
   double worst_attitude_rad = 0.0;
   for (const auto& expected : reference) {
     const auto found = odometry.find(imu_lab::ros_io::to_ros_time(expected.stamp_ns));
-    ASSERT_NE(found, odometry.end()) << "no odometry at " << imu_lab::pipeline::format_stamp(expected.stamp_ns);
+    ASSERT_NE(found, odometry.end()) << "no odometry at " << imu_lab::format_stamp_s(expected.stamp_ns);
     const auto& pose = found->second.pose.pose;
     const Eigen::Vector3d position(pose.position.x, pose.position.y, pose.position.z);
     const Eigen::Quaterniond q(pose.orientation.w, pose.orientation.x, pose.orientation.y, pose.orientation.z);

@@ -14,6 +14,7 @@
 #include <functional>
 #include <string>
 
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/pipeline/navigation_csv.h"
 
 namespace {
@@ -109,7 +110,7 @@ TEST(NavigatorDivergence, StopsReportsAndStartsAgainOnlyWhenTold) {
 
   feeder.feed(1, 1e50);
   const std::int64_t absurd_ns = feeder.stamp_ns();
-  const std::string where = imu_lab::pipeline::format_stamp(absurd_ns);
+  const std::string where = imu_lab::format_stamp_s(absurd_ns);
   ASSERT_TRUE(feeder.feed_until([&] {
     const DiagnosticStatus& s = feeder.last_status();
     return s.level == DiagnosticStatus::ERROR && s.message.find("navigation stopped") != std::string::npos &&

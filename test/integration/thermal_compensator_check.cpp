@@ -37,8 +37,8 @@ std::map<std::int64_t, imu_lab::thermal::CompensatedSample> reference_of(const s
   std::vector<std::int64_t> stamps_ns;  // exact, in the order the samples come out
   std::size_t next_temperature = 0;
   imu_lab::ros_io::for_each_imu(bag, "/imu/raw", [&](const imu_lab::io::ImuRecord& r) {
-    while (next_temperature < temperatures.size() && temperatures[next_temperature].stamp_s <= r.stamp_s) {
-      compensator.add_temperature(temperatures[next_temperature].stamp_s, temperatures[next_temperature].temperature_c,
+    while (next_temperature < temperatures.size() && temperatures[next_temperature].stamp_ns <= r.stamp_ns) {
+      compensator.add_temperature(temperatures[next_temperature].stamp_ns, temperatures[next_temperature].temperature_c,
                                   &ready);
       ++next_temperature;
     }

@@ -129,7 +129,8 @@ LiveChain run_live_chain(const std::string& bag_path, bool thermal, bool calibra
       }
     } else if (thermal && instance.getTopic() == "/imu/temperature") {
       const auto message = instance.instantiate<sensor_msgs::Temperature>();
-      compensator.add_temperature(message->header.stamp.toSec(), message->temperature, &ready);
+      compensator.add_temperature(static_cast<std::int64_t>(message->header.stamp.toNSec()), message->temperature,
+                                  &ready);
     }
     publish(ready);
   }

@@ -75,7 +75,7 @@ TEST(ImportCsvTool, LoggerFileWithAYamlMappingBecomesImuAndTemperatureMessages) 
   const auto temperatures = read_temperatures(directory + "/log.bag");
   ASSERT_EQ(temperatures.size(), 2u);
   EXPECT_DOUBLE_EQ(temperatures[1].temperature_c, 24.75);
-  EXPECT_DOUBLE_EQ(temperatures[1].stamp_s, imu[2].stamp_s);
+  EXPECT_EQ(temperatures[1].stamp_ns, imu[2].stamp_ns);
 
   // The same by options alone; an option overrides the YAML.
   const auto by_options =

@@ -54,11 +54,11 @@ TEST(ImuBagReader, ReadsTheRealCompressedBagsWithTheirUnevenStamps) {
     const std::string path = std::string(IMU_LAB_REFERENCE_DIR) + "/real_bags/" + bag.file;
     const std::string topic = choose_imu_topic(path, "");
     EXPECT_EQ(topic, "/imu/data_raw");
-    double previous = 0.0;
+    std::int64_t previous_ns = 0;
     std::size_t unordered = 0;
     const std::size_t count = for_each_imu(path, topic, [&](const imu_lab::io::ImuRecord& record) {
-      if (record.stamp_s <= previous) ++unordered;
-      previous = record.stamp_s;
+      if (record.stamp_ns <= previous_ns) ++unordered;
+      previous_ns = record.stamp_ns;
     });
     EXPECT_EQ(count, bag.count) << bag.file;
     EXPECT_LT(unordered, count / 100) << bag.file;

@@ -14,11 +14,12 @@
 #include <sstream>
 #include <utility>
 
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/nav/alignment_error_budget.h"
 #include "imu_lab/nav/earth_model.h"
-#include "imu_lab/ros_io/bag/imu_bag_reader.h"
 #include "imu_lab/pipeline/navigation_csv.h"
 #include "imu_lab/pipeline/navigation_settings.h"
+#include "imu_lab/ros_io/bag/imu_bag_reader.h"
 #include "ros_test_support.h"
 
 #ifndef IMU_LAB_CONFIG_DIR
@@ -239,8 +240,7 @@ TEST_F(NavigateTool, RefusesABagThatMakesTheStateUnusable) {
   const auto run = run_tool("navigate", absurd + " --alignment-duration-s 10 --out " + out);
   EXPECT_EQ(run.exit_code, 1) << run.output;
   EXPECT_NE(run.output.find("absurd.bag"), std::string::npos) << run.output;
-  EXPECT_NE(run.output.find("unusable at stamp " + imu_lab::pipeline::format_stamp(stamp_ns)), std::string::npos)
-      << run.output;
+  EXPECT_NE(run.output.find("unusable at stamp " + imu_lab::format_stamp_s(stamp_ns)), std::string::npos) << run.output;
   EXPECT_FALSE(imu_lab::test_support::file_exists(out));
   EXPECT_FALSE(imu_lab::test_support::file_exists(*directory_ + "/absurd_errors.csv"));
 }

@@ -149,8 +149,7 @@ inline EmulatedRun emulate_table_run(const emulator::SensorProfile& profile, con
   result.samples.reserve(count);
   for (std::size_t k = 0; k < count; ++k) {
     const emulator::EmulatedSample sample = imu.next();
-    result.samples.push_back(
-        io::make_imu_record(sample.stamp_s, sample.angular_rate_rad_s, sample.specific_force_m_s2));
+    result.samples.push_back(emulator::to_imu_record(sample));
   }
   return result;
 }

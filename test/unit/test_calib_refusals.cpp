@@ -5,6 +5,7 @@
 
 #include "calib_test_support.h"
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
 
 namespace imu_lab {
 namespace {
@@ -84,8 +85,7 @@ TEST(CalibRefusals, NoStaticIntervalsInAContinuousRotation) {
   imu.next();  // the table starts at rest: skip past the first instant
   for (int k = 0; k < 3000; ++k) {
     const auto sample = imu.next();
-    if (sample.stamp_s > 1.0)
-      samples.push_back(io::make_imu_record(sample.stamp_s, sample.angular_rate_rad_s, sample.specific_force_m_s2));
+    if (sample.stamp_ns > kNanosecondsPerSecond) samples.push_back(emulator::to_imu_record(sample));
   }
   calib::CalibrationOptions options;
   options.site.latitude_rad = scenario.latitude_rad;

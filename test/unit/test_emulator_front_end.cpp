@@ -13,6 +13,7 @@
 #include <utility>
 #include <variant>
 
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/emulator/analytic_profile_avar.h"
 #include "imu_lab/emulator/imu_emulator.h"
 #include "imu_lab/emulator/scenario.h"
@@ -175,12 +176,12 @@ TEST(EmulatorScaleFactorNonlinearity, RateTablePlateausAgainstHandComputedValues
     start_s += 60.0;
     previous_rate = plateau.table_rate_deg_s;
     EmulatedSample sample, reference;
-    while (sample.stamp_s < middle_s) {
+    while (seconds_from_stamp_ns(sample.stamp_ns) < middle_s) {
       sample = emulator.next();
       reference = ideal.next();
       // Exact truth: the same kinematics as the error-free IMU's, bit for bit.
       ASSERT_EQ(sample.truth.angular_rate_rad_s, reference.truth.angular_rate_rad_s);
-      ASSERT_EQ(sample.truth.attitude_body_to_enu.coeffs(), reference.truth.attitude_body_to_enu.coeffs());
+      ASSERT_EQ(sample.truth.q_body_to_enu.coeffs(), reference.truth.q_body_to_enu.coeffs());
     }
     const double w = sample.truth.angular_rate_rad_s.z();
     EXPECT_NEAR(w, plateau.table_rate_deg_s * kDeg, 6e-5);  // the Earth rate's Up component

@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/emulator/imu_emulator.h"
 #include "imu_lab/emulator/sensor_channel.h"
 #include "test_emulator_paths.h"
@@ -273,7 +274,7 @@ TEST_P(EmulatorShippedProfiles, LoadsAndRunsFourSeconds) {
     ASSERT_TRUE(sample.angular_rate_rad_s.allFinite() && sample.specific_force_m_s2.allFinite());
     force_sum += sample.specific_force_m_s2;
   }
-  EXPECT_NEAR(sample.stamp_s, 104.0, 1e-9);
+  EXPECT_EQ(sample.stamp_ns, 104 * kNanosecondsPerSecond);
   // Gravity seen through bias, scale and nonlinearity: a consumer part is off by ~0.4 m/s^2.
   EXPECT_NEAR((force_sum / count).norm(), 9.8157, 0.5) << GetParam().file;
   EXPECT_GT(sample.angular_rate_variance_rad2_s2.minCoeff(), 0.0);

@@ -27,7 +27,7 @@ TEST(EmulatorScenarioFiles, EveryShippedScenarioLoadsAndRuns) {
       const EmulatedSample s = emulator.next();
       ASSERT_TRUE(s.angular_rate_rad_s.allFinite() && s.specific_force_m_s2.allFinite()) << entry.path();
       ASSERT_TRUE(std::isfinite(s.temperature_c)) << entry.path();
-      ASSERT_NEAR(s.truth.attitude_body_to_enu.norm(), 1.0, 1e-12) << entry.path();
+      ASSERT_NEAR(s.truth.q_body_to_enu.norm(), 1.0, 1e-12) << entry.path();
     }
     // The truth is defined to the scenario's end (and beyond).
     auto motion = make_motion_source(scenario);

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/emulator/earth_model.h"
 #include "imu_lab/emulator/imu_emulator.h"
 #include "test_emulator_paths.h"
@@ -169,15 +170,16 @@ TEST(EmulatorStatic, StampsIncrementsAndTruth) {
   ImuEmulator emulator(profile, scenario, {250.0, 1.7e9, 3});
   for (int k = 1; k <= 1000; ++k) {
     const EmulatedSample sample = emulator.next();
-    ASSERT_EQ(sample.stamp_s, 1.7e9 + k / 250.0);  // end of the interval, from the index
+    // End of the interval, from the index, exact: 250 Hz is 4 ms.
+    ASSERT_EQ(sample.stamp_ns, 1700000000 * kNanosecondsPerSecond + k * std::int64_t{4000000});
     ASSERT_EQ(sample.delta_angle_rad, sample.angular_rate_rad_s * (1.0 / 250.0));
     ASSERT_EQ(sample.delta_velocity_m_s, sample.specific_force_m_s2 * (1.0 / 250.0));
-    ASSERT_EQ(sample.truth.stamp_s, sample.stamp_s);
+    ASSERT_EQ(sample.truth.stamp_ns, sample.stamp_ns);
     ASSERT_EQ(sample.temperature_c, 31.5);
   }
   const EmulatedSample sample = emulator.next();
   const Eigen::Quaterniond expected = attitude_from_roll_pitch_yaw(5 * kDeg, 6 * kDeg, 7 * kDeg);
-  EXPECT_LT(sample.truth.attitude_body_to_enu.angularDistance(expected), 1e-15);
+  EXPECT_LT(sample.truth.q_body_to_enu.angularDistance(expected), 1e-15);
   EXPECT_EQ(sample.truth.velocity_enu_m_s, Eigen::Vector3d::Zero());
   EXPECT_NEAR(sample.truth.latitude_rad, -33.9 * kDeg, 1e-15);
   EXPECT_EQ(sample.truth.height_m, 150.0);

@@ -32,27 +32,12 @@ constexpr double kPositionBound_m = 0.05;  // the requirement
 
 std::string config_path(const std::string& relative) { return std::string(IMU_LAB_CONFIG_DIR) + "/" + relative; }
 
-std::int64_t stamp_ns(double stamp_s) { return std::llround(stamp_s * 1e9); }
-
-imu_lab::io::TruthRecord truth_record(const imu_lab::emulator::TruthSample& truth) {
-  imu_lab::io::TruthRecord record;
-  record.stamp_ns = stamp_ns(truth.stamp_s);
-  record.q_body_to_enu = truth.attitude_body_to_enu;
-  record.angular_rate_rad_s = truth.angular_rate_rad_s;
-  record.specific_force_m_s2 = truth.specific_force_m_s2;
-  record.latitude_rad = truth.latitude_rad;
-  record.longitude_rad = truth.longitude_rad;
-  record.height_m = truth.height_m;
-  record.velocity_enu_m_s = truth.velocity_enu_m_s;
-  return record;
-}
-
 // The navigate tool's settings for --no-align on a bag with truth: everything from the first sample.
 imu_lab::pipeline::NavigationSettings settings_from_truth(const imu_lab::emulator::ScenarioConfig& scenario,
-                                                          const imu_lab::emulator::TruthSample& truth) {
+                                                          const imu_lab::io::TruthRecord& truth) {
   imu_lab::pipeline::NavigationSettings settings;
   settings.align = false;
-  settings.initial_attitude_body_to_enu = truth.attitude_body_to_enu;
+  settings.initial_attitude_body_to_enu = truth.q_body_to_enu;
   settings.initial_velocity_enu_m_s = truth.velocity_enu_m_s;
   settings.latitude_rad = truth.latitude_rad;
   settings.longitude_rad = truth.longitude_rad;
@@ -89,9 +74,9 @@ TEST_P(NavigateIdealImu, StartedFromTheTruthEndsWithin5cmWithEitherInput) {
     increment.dt_s = emulator.sample_interval_s();
     return increment;
   };
-  ASSERT_EQ(rates.add_rates(stamp_ns(first.stamp_s), first.angular_rate_rad_s, first.specific_force_m_s2),
+  ASSERT_EQ(rates.add_rates(first.stamp_ns, first.angular_rate_rad_s, first.specific_force_m_s2),
             SampleOutcome::kStarted);
-  ASSERT_EQ(increments.add_increment(stamp_ns(first.stamp_s), to_increment(first)), SampleOutcome::kStarted);
+  ASSERT_EQ(increments.add_increment(first.stamp_ns, to_increment(first)), SampleOutcome::kStarted);
 
   RunErrors rate_errors, increment_errors;
   const auto track = [&](const NavigationSession& session, const imu_lab::io::TruthRecord& truth, RunErrors& errors) {
@@ -104,7 +89,7 @@ TEST_P(NavigateIdealImu, StartedFromTheTruthEndsWithin5cmWithEitherInput) {
   const long samples = std::lround(scenario.duration_s * kRateHz);
   for (long k = 1; k < samples; ++k) {
     const imu_lab::emulator::EmulatedSample s = emulator.next();
-    const auto truth = truth_record(s.truth);
+    const imu_lab::io::TruthRecord& truth = s.truth;
     ASSERT_EQ(rates.add_rates(truth.stamp_ns, s.angular_rate_rad_s, s.specific_force_m_s2), SampleOutcome::kNavigated);
     ASSERT_EQ(increments.add_increment(truth.stamp_ns, to_increment(s)), SampleOutcome::kNavigated);
     if (k % 200 == 0 || k == samples - 1) {  // once a second and at the end

@@ -61,8 +61,7 @@ std::vector<io::ImuRecord> emulate(const emulator::SensorProfile& profile, std::
   std::vector<io::ImuRecord> samples;
   const auto count = static_cast<std::size_t>(scenario.duration_s * rate_hz);
   for (std::size_t k = 0; k < count; ++k) {
-    const emulator::EmulatedSample s = emulator.next();
-    samples.push_back(io::make_imu_record(s.stamp_s, s.angular_rate_rad_s, s.specific_force_m_s2));
+    samples.push_back(emulator::to_imu_record(emulator.next()));
   }
   return samples;
 }

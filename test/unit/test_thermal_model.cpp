@@ -9,6 +9,7 @@
 #include <random>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/thermal/thermal_compensator.h"
 #include "imu_lab/thermal/thermal_model_yaml.h"
 
@@ -59,13 +60,15 @@ TEST(ThermalModel, ClampsOutsideTheTestedRangeAndFlagsIt) {
 
 TEST(ThermalModel, TemperatureHistoryMatchesByStampAndEstimatesTheRate) {
   thermal::TemperatureHistory history;
-  for (int i = 0; i <= 1000; ++i) EXPECT_TRUE(history.add(100.0 + 0.1 * i, 10.0 + 0.01 * i));  // 0.1 degC/s
-  EXPECT_FALSE(history.add(150.0, 0.0));                                                       // out of order: refused
-  EXPECT_NEAR(*history.temperature_at(150.05, 1.0), 10.0 + 0.01 * 500.5, 1e-9);
-  EXPECT_NEAR(history.rate_at(180.0, 20.0), 0.1, 1e-9);
-  EXPECT_NEAR(*history.temperature_at(200.5, 1.0), 20.0, 1e-12);  // held at the end within the age
-  EXPECT_FALSE(history.temperature_at(201.5, 1.0).has_value());   // stale
-  EXPECT_EQ(history.rate_at(100.05, 20.0), 0.0);                  // not enough history yet
+  for (int i = 0; i <= 1000; ++i)
+    EXPECT_TRUE(history.add(stamp_ns_from_seconds(100.0 + 0.1 * i), 10.0 + 0.01 * i));  // 0.1 degC/s
+  EXPECT_FALSE(history.add(stamp_ns_from_seconds(150.0), 0.0));                         // out of order: refused
+  EXPECT_NEAR(*history.temperature_at(stamp_ns_from_seconds(150.05), 1.0), 10.0 + 0.01 * 500.5, 1e-9);
+  EXPECT_NEAR(history.rate_at(stamp_ns_from_seconds(180.0), 20.0), 0.1, 1e-9);
+  EXPECT_NEAR(*history.temperature_at(stamp_ns_from_seconds(200.5), 1.0), 20.0,
+              1e-12);  // held at the end within the age
+  EXPECT_FALSE(history.temperature_at(stamp_ns_from_seconds(201.5), 1.0).has_value());  // stale
+  EXPECT_EQ(history.rate_at(stamp_ns_from_seconds(100.05), 20.0), 0.0);                 // not enough history yet
 }
 
 // The node's compensator must give the same output whatever the interleaving of the topics.
@@ -89,7 +92,8 @@ TEST(ThermalModel, CompensatorOutputDoesNotDependOnArrivalOrder) {
       if (take_imu) {
         compensator.add_imu(readings[imu++], &out);
       } else {
-        compensator.add_temperature(temperatures[temperature].first, temperatures[temperature].second, &out);
+        compensator.add_temperature(stamp_ns_from_seconds(temperatures[temperature].first),
+                                    temperatures[temperature].second, &out);
         ++temperature;
       }
     }
@@ -100,7 +104,7 @@ TEST(ThermalModel, CompensatorOutputDoesNotDependOnArrivalOrder) {
   ASSERT_EQ(first.size(), readings.size());
   ASSERT_EQ(second.size(), readings.size());
   for (std::size_t i = 0; i < first.size(); ++i) {
-    ASSERT_EQ(first[i].corrected.stamp_s, second[i].corrected.stamp_s);
+    ASSERT_EQ(first[i].corrected.stamp_ns, second[i].corrected.stamp_ns);
     ASSERT_EQ(first[i].corrected.specific_force_m_s2, second[i].corrected.specific_force_m_s2) << i;
     ASSERT_NE(first[i].status, thermal::CompensatedSample::Status::kStale) << i;
   }
@@ -109,7 +113,7 @@ TEST(ThermalModel, CompensatorOutputDoesNotDependOnArrivalOrder) {
 TEST(ThermalModel, CompensatorReportsStaleTemperature) {
   thermal::ThermalCompensator compensator(example_model(), 0.5);
   std::vector<thermal::CompensatedSample> out;
-  compensator.add_temperature(0.0, 25.0, &out);
+  compensator.add_temperature(std::int64_t{0}, 25.0, &out);
   for (int i = 1; i <= 300; ++i)
     compensator.add_imu(io::make_imu_record(0.01 * i, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()), &out);
   compensator.flush(&out);
@@ -124,7 +128,7 @@ TEST(ThermalModel, CompensatorReportsStaleTemperature) {
 TEST(ThermalModel, CompensatorRefusesUnusableSamples) {
   thermal::ThermalCompensator compensator(example_model(), 0.5);
   std::vector<thermal::CompensatedSample> out;
-  compensator.add_temperature(0.0, 25.0, &out);
+  compensator.add_temperature(std::int64_t{0}, 25.0, &out);
   EXPECT_TRUE(
       compensator.add_imu(io::make_imu_record(0.01, Eigen::Vector3d(1e100, 0.0, 0.0), Eigen::Vector3d::UnitZ()), &out));
   EXPECT_FALSE(

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/thermal/thermal_fit.h"
 #include "imu_lab/thermal/thermal_model.h"
 
@@ -105,7 +106,7 @@ TEST(ThermalRefusals, NoStaticWindowAndNoSecondSensor) {
 
 TEST(ThermalRefusals, StaleOrMissingTemperatureStopsTheAveraging) {
   thermal::TemperatureHistory history;
-  for (int i = 0; i <= 100; ++i) history.add(1000.0 + i, 20.0);
+  for (int i = 0; i <= 100; ++i) history.add((1000 + i) * kNanosecondsPerSecond, 20.0);
   thermal::WindowSettings settings;
   settings.max_temperature_age_s = 2.0;
   thermal::ThermalWindowAverager averager(settings, history, nullptr);
@@ -130,7 +131,7 @@ TEST(ThermalRefusals, StaleOrMissingTemperatureStopsTheAveraging) {
 // short.
 TEST(ThermalWindows, JitteredStampsFillTheirWindowsAndAGapDoesNot) {
   thermal::TemperatureHistory history;
-  for (int i = 0; i <= 700; ++i) history.add(1000.0 + i, 20.0);
+  for (int i = 0; i <= 700; ++i) history.add((1000 + i) * kNanosecondsPerSecond, 20.0);
   thermal::WindowSettings settings;
   thermal::ThermalWindowAverager averager(settings, history, nullptr);
   std::uint64_t state = 16;

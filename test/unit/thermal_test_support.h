@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/emulator/imu_emulator.h"
 #include "imu_lab/emulator/thermal_profile.h"
 #include "imu_lab/thermal/thermal_fit.h"
@@ -58,9 +59,9 @@ inline ThermalRun emulate_thermal_run(const emulator::SensorProfile& profile, co
   run.readings.reserve(count);
   for (std::size_t k = 0; k < count; ++k) {
     const emulator::EmulatedSample sample = imu.next();
-    run.readings.push_back(io::make_imu_record(sample.stamp_s, sample.angular_rate_rad_s, sample.specific_force_m_s2));
-    run.temperature.add(sample.stamp_s, sample.temperature_c);
-    if (sample.second_temperature_c) run.second_temperature.add(sample.stamp_s, *sample.second_temperature_c);
+    run.readings.push_back(emulator::to_imu_record(sample));
+    run.temperature.add(sample.stamp_ns, sample.temperature_c);
+    if (sample.second_temperature_c) run.second_temperature.add(sample.stamp_ns, *sample.second_temperature_c);
     const double dt = run.sample_interval_s;
     const double rate_c_s =
         (temperatures.sensor_temperature_c((k + 1) * dt) - temperatures.sensor_temperature_c(k * dt)) / dt;
@@ -93,7 +94,7 @@ struct EffectSeries {
 
 inline EffectSeries model_effect(const ThermalRun& run, const thermal::ThermalModel& model, double window_s) {
   EffectSeries out;
-  const double start_s = run.readings.front().stamp_s;
+  const std::int64_t start_ns = run.readings.front().stamp_ns;
   long current = -1;
   std::array<double, 6> truth{}, removed{};
   double rate_sum = 0.0;
@@ -117,16 +118,16 @@ inline EffectSeries model_effect(const ThermalRun& run, const thermal::ThermalMo
   };
   for (std::size_t k = 0; k < run.readings.size(); ++k) {
     const auto& reading = run.readings[k];
-    const long index = static_cast<long>(std::floor((reading.stamp_s - start_s) / window_s));
+    const long index = static_cast<long>(std::floor(seconds_between(start_ns, reading.stamp_ns) / window_s));
     if (index != current) {
       close();
       current = index;
     }
     thermal::ThermalInput input;
-    input.temperature_c = *run.temperature.temperature_at(reading.stamp_s, 1.0);
-    input.rate_c_s = run.temperature.rate_at(reading.stamp_s, model.rate_window_s);
+    input.temperature_c = *run.temperature.temperature_at(reading.stamp_ns, 1.0);
+    input.rate_c_s = run.temperature.rate_at(reading.stamp_ns, model.rate_window_s);
     if (!run.second_temperature.empty())
-      input.second_temperature_c = run.second_temperature.temperature_at(reading.stamp_s, 1.0);
+      input.second_temperature_c = run.second_temperature.temperature_at(reading.stamp_ns, 1.0);
     const auto corrected = thermal::correct(model, reading.angular_rate_rad_s, reading.specific_force_m_s2, input);
     for (int i = 0; i < 3; ++i) {
       truth[i] += run.true_gyro_effect_rad_s[k][i];

@@ -1,9 +1,10 @@
 // The IMU emulator: sensor profile + motion source + settings -> one sample per step.
 // Sample k covers [start_time_s + k dt, start_time_s + (k+1) dt]; its stamp is the END of the
-// interval (so the first stamp is start_time_s + dt). Rates are exact interval averages and
-// increments are average * dt. The motion source runs on scenario time (0 at start_time_s).
-// Temperature terms of the profile see the interval's mean temperature and its rate. Same profile, scenario and
-// settings (seed) -> bit-identical output.
+// interval (so the first stamp is start_time_s + dt), in integer nanoseconds rounded as ROS rounds
+// a time plus a duration (start_time_s and (k+1) dt each to the nanosecond, then added). Rates are exact interval
+// averages and increments are average * dt. The motion source runs on scenario time (0 at start_time_s). Temperature
+// terms of the profile see the interval's mean temperature and its rate. Same profile, scenario and settings (seed) ->
+// bit-identical output.
 #pragma once
 
 #include <Eigen/Core>
@@ -15,6 +16,7 @@
 #include "imu_lab/emulator/motion_source.h"
 #include "imu_lab/emulator/scenario.h"
 #include "imu_lab/emulator/sensor_profile.h"
+#include "imu_lab/io/imu_records.h"
 
 namespace imu_lab {
 namespace emulator {
@@ -25,27 +27,11 @@ struct EmulatorSettings {
   std::uint64_t seed = 1;
 };
 
-// Truth of one sample: attitude, position, velocity and temperature at the stamp (the end of the
-// interval); angular rate and specific force averaged over the interval, exactly the averages the
-// sensor measured (the motion's integrals / dt), so an error-free sensor reads them bit for bit.
-struct TruthSample {
-  double stamp_s = 0.0;
-  Eigen::Quaterniond attitude_body_to_enu = Eigen::Quaterniond::Identity();
-  Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();   // body axes, interval average
-  Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();  // body axes, interval average
-  double latitude_rad = 0.0;
-  double longitude_rad = 0.0;
-  double height_m = 0.0;
-  Eigen::Vector3d velocity_enu_m_s = Eigen::Vector3d::Zero();
-  double temperature_c = 0.0;
-  std::optional<double> second_temperature_c;  // when the scenario has a second thermosensor
-};
-
 // What one step of the emulator gives: the sensor's output (rates, increments, temperatures, the
 // noise variances a message's covariances carry) with the truth it was made from; the ROS layer
 // turns it into messages (ros_io/msg/emulator_messages.h).
 struct EmulatedSample {
-  double stamp_s = 0.0;                                           // end of the interval
+  std::int64_t stamp_ns = 0;                                      // end of the interval (common/stamps.h)
   Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();   // interval average
   Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();  // interval average
   Eigen::Vector3d delta_angle_rad = Eigen::Vector3d::Zero();      // = average * dt
@@ -57,8 +43,16 @@ struct EmulatedSample {
   // Excludes biases, random walk and deterministic terms. Constant over a run.
   Eigen::Vector3d angular_rate_variance_rad2_s2 = Eigen::Vector3d::Zero();
   Eigen::Vector3d specific_force_variance_m2_s4 = Eigen::Vector3d::Zero();
-  TruthSample truth;
+  // Truth at the same stamp: attitude, position, velocity and temperatures at the end of the
+  // interval; angular rate and specific force averaged over the interval, exactly the averages the
+  // sensor measured (the motion's integrals / dt), so an error-free sensor reads them bit for bit.
+  io::TruthRecord truth;
 };
+
+// The sample's output as a recording of it would be read back.
+inline io::ImuRecord to_imu_record(const EmulatedSample& sample) {
+  return io::ImuRecord{sample.stamp_ns, sample.angular_rate_rad_s, sample.specific_force_m_s2};
+}
 
 class TriadChannel;  // sensor_channel.h
 

@@ -128,9 +128,6 @@ struct CsvImportResult {
 CsvImportResult parse_imu_csv_text(const std::string& text, const CsvImportOptions& options,
                                    const std::string& source = "csv");
 
-// Integer nanoseconds -> exact decimal seconds ("-2.500000000"), for messages.
-std::string format_stamp_s(std::int64_t stamp_ns);
-
 // Exact decimal text -> integer nanoseconds in `unit` ("1700000000.123456789" s, "1.5e3" ms,
 // "-2"); rounds to the nearest ns. Empty on anything else or on overflow of int64.
 std::optional<std::int64_t> parse_decimal_time_ns(const std::string& text, TimeUnit unit);

@@ -6,16 +6,17 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include <cmath>
 #include <cstdint>
+#include <optional>
+
+#include "imu_lab/common/stamps.h"
 
 namespace imu_lab {
 namespace io {
 
 // sensor_msgs/Imu: one sample at its header stamp.
 struct ImuRecord {
-  double stamp_s = 0.0;       // header stamp, never the bag's receive time
-  std::int64_t stamp_ns = 0;  // the same, exact: differences of stamp_s near 1e9 s lose ~0.1 us
+  std::int64_t stamp_ns = 0;  // header stamp, never the bag's receive time (common/stamps.h)
   Eigen::Vector3d angular_rate_rad_s = Eigen::Vector3d::Zero();
   Eigen::Vector3d specific_force_m_s2 = Eigen::Vector3d::Zero();
   // A triad whose covariance[0] is -1 carries no data (sensor_msgs/Imu's convention, e.g. a driver
@@ -26,13 +27,12 @@ struct ImuRecord {
   bool has_specific_force = true;
 };
 
-// A record with both triads at stamp_s, its exact stamp stamp_s rounded to the nanosecond (an
-// emulated or synthetic sample; records read from a recording carry the message's own stamp).
+// A record with both triads at stamp_s rounded to the nanosecond, for a synthetic sample (records
+// read from a recording, or emulated, carry their own integer stamp: ImuRecord{stamp_ns, ...}).
 inline ImuRecord make_imu_record(double stamp_s, const Eigen::Vector3d& angular_rate_rad_s,
                                  const Eigen::Vector3d& specific_force_m_s2) {
   ImuRecord record;
-  record.stamp_s = stamp_s;
-  record.stamp_ns = std::llround(stamp_s * 1e9);
+  record.stamp_ns = stamp_ns_from_seconds(stamp_s);
   record.angular_rate_rad_s = angular_rate_rad_s;
   record.specific_force_m_s2 = specific_force_m_s2;
   return record;
@@ -46,7 +46,8 @@ struct IncrementRecord {
   Eigen::Vector3d delta_velocity_m_s = Eigen::Vector3d::Zero();
 };
 
-// imu_lab/ImuTruth: the emulator's ground truth at the stamp (frames as in nav/nav_state.h).
+// imu_lab/ImuTruth: the emulator's ground truth at the stamp (frames as in nav/nav_state.h); the
+// emulator makes it, the ROS layer writes and reads it.
 struct TruthRecord {
   std::int64_t stamp_ns = 0;
   Eigen::Quaterniond q_body_to_enu = Eigen::Quaterniond::Identity();
@@ -56,11 +57,13 @@ struct TruthRecord {
   double longitude_rad = 0.0;
   double height_m = 0.0;
   Eigen::Vector3d velocity_enu_m_s = Eigen::Vector3d::Zero();
+  double temperature_c = 0.0;
+  std::optional<double> second_temperature_c;  // when the scenario has a second thermosensor (not in the message)
 };
 
 // sensor_msgs/Temperature: one thermosensor reading at its header stamp.
 struct TemperatureRecord {
-  double stamp_s = 0.0;
+  std::int64_t stamp_ns = 0;
   double temperature_c = 0.0;
 };
 

@@ -20,10 +20,6 @@
 namespace imu_lab {
 namespace pipeline {
 
-std::string format_stamp(std::int64_t stamp_ns);
-// Inverse of format_stamp; throws InputError for text that is not a stamp.
-std::int64_t parse_stamp(const std::string& text);
-
 void write_trajectory_csv(const std::string& path, const std::vector<NavigationSolution>& solutions);
 void write_error_csv(const std::string& path, const std::vector<NavigationError>& errors);
 

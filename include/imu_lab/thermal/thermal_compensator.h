@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <vector>
 
 #include "imu_lab/thermal/temperature_history.h"
@@ -30,8 +31,12 @@ class ThermalCompensator {
 
   // Each returns the samples that became decidable, in stamp order. Out-of-order or non-finite
   // readings are refused (false / counted) and change nothing.
-  bool add_temperature(double stamp_s, double temperature_c, std::vector<CompensatedSample>* ready);
-  bool add_second_temperature(double stamp_s, double temperature_c, std::vector<CompensatedSample>* ready);
+  // Stamps in integer nanoseconds (common/stamps.h).
+  bool add_temperature(std::int64_t stamp_ns, double temperature_c, std::vector<CompensatedSample>* ready);
+  bool add_second_temperature(std::int64_t stamp_ns, double temperature_c, std::vector<CompensatedSample>* ready);
+  // Seconds would be truncated to nanoseconds silently: not accepted.
+  bool add_temperature(double, double, std::vector<CompensatedSample>*) = delete;
+  bool add_second_temperature(double, double, std::vector<CompensatedSample>*) = delete;
   bool add_imu(const io::ImuRecord& reading, std::vector<CompensatedSample>* ready);
   // Decides every waiting sample with what has arrived (end of a bag).
   void flush(std::vector<CompensatedSample>* ready);
@@ -41,7 +46,7 @@ class ThermalCompensator {
 
  private:
   void release(bool everything, std::vector<CompensatedSample>* ready);
-  bool has_reading_after(const TemperatureHistory& history, double stamp_s) const;
+  bool has_reading_after(const TemperatureHistory& history, std::int64_t stamp_ns) const;
   CompensatedSample compensate(const io::ImuRecord& reading) const;
 
   ThermalModel model_;
@@ -49,7 +54,7 @@ class ThermalCompensator {
   TemperatureHistory temperature_;
   TemperatureHistory second_temperature_;
   std::deque<io::ImuRecord> waiting_;
-  double newest_imu_stamp_s_ = -1.0;
+  std::optional<std::int64_t> newest_imu_stamp_ns_;
 };
 
 }  // namespace thermal

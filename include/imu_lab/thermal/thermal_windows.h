@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -16,8 +17,8 @@ namespace imu_lab {
 namespace thermal {
 
 struct ThermalWindow {
-  double start_s = 0.0;  // window [start, start + window)
-  double mid_stamp_s = 0.0;
+  double start_s = 0.0;      // header stamp in seconds (common/stamps.h); window [start, start + window)
+  double mid_stamp_s = 0.0;  // the mean stamp of its samples, in seconds
   std::size_t sample_count = 0;
   Eigen::Vector3d mean_angular_rate_rad_s = Eigen::Vector3d::Zero();
   Eigen::Vector3d mean_specific_force_m_s2 = Eigen::Vector3d::Zero();
@@ -61,13 +62,14 @@ class ThermalWindowAverager {
   const TemperatureHistory& temperature_;
   const TemperatureHistory* second_temperature_;
   std::vector<ThermalWindow> windows_;
-  std::optional<double> first_stamp_s_;
-  double last_stamp_s_ = 0.0;
+  std::optional<std::int64_t> first_stamp_ns_;
+  std::int64_t last_stamp_ns_ = 0;
   std::vector<double> window_intervals_s_;  // between the current window's samples, for the fill check
   long window_index_ = -1;
   std::size_t count_ = 0;
   Eigen::Vector3d rate_sum_, rate_square_sum_, force_sum_, force_square_sum_;
   Eigen::Vector3d rate_offset_, force_offset_;  // first sample of the window, against cancellation
+  // stamp_sum_: seconds after first_stamp_ns_
   double stamp_sum_ = 0.0, temperature_sum_ = 0.0, rate_c_s_sum_ = 0.0, second_sum_ = 0.0;
 };
 

@@ -10,11 +10,12 @@
 
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/format_number.h"
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/ros_io/bag/atomic_bag.h"
-#include "imu_lab/ros_io/node/calibration_corrector_node.h"
 #include "imu_lab/ros_io/bag/imu_bag_reader.h"
 #include "imu_lab/ros_io/bag/strict_imu_reading.h"
 #include "imu_lab/ros_io/msg/thermal_compensated_message.h"
+#include "imu_lab/ros_io/node/calibration_corrector_node.h"
 #include "imu_lab/thermal/thermal_compensator.h"
 
 namespace imu_lab {
@@ -115,10 +116,10 @@ class BagCorrector {
     std::vector<thermal::CompensatedSample> ready;
     // Strictly ordered finite samples are always taken; the queue stays in step with the compensator's.
     if (!compensator_->add_imu(record, &ready)) {
-      throw InputError("bag " + bag_->path() + ", topic " + summary_->imu_topic + ": the sample at " +
-                       format_number(record.stamp_s, 16) +
-                       " s is too close to the previous one for the thermal "
-                       "compensator's seconds; nothing was written");
+      // The strict check above already refused what the compensator refuses; kept as a guard.
+      throw InputError("bag " + bag_->path() + ", topic " + summary_->imu_topic +
+                       ": the thermal compensator refused the sample at " + format_stamp_s(record.stamp_ns) +
+                       " s; nothing was written");
     }
     waiting_.push_back({message, instance.getTime()});
     write_compensated(ready);
@@ -129,10 +130,10 @@ class BagCorrector {
     ++topic->readings;
     ++summary_->temperature_messages;
     std::vector<thermal::CompensatedSample> ready;
-    const double stamp_s = message->header.stamp.toSec();
+    const auto stamp_ns = static_cast<std::int64_t>(message->header.stamp.toNSec());
     const double temperature_c = message->temperature;
-    const bool taken = topic == &temperature_ ? compensator_->add_temperature(stamp_s, temperature_c, &ready)
-                                              : compensator_->add_second_temperature(stamp_s, temperature_c, &ready);
+    const bool taken = topic == &temperature_ ? compensator_->add_temperature(stamp_ns, temperature_c, &ready)
+                                              : compensator_->add_second_temperature(stamp_ns, temperature_c, &ready);
     if (!taken) ++topic->refused;
     write_compensated(ready);
   }

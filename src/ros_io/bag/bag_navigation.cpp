@@ -3,13 +3,12 @@
 #include <unordered_map>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/pipeline/navigation_csv.h"
 
 namespace imu_lab {
 namespace ros_io {
 namespace {
-
-constexpr double kSecondsPerNanosecond = 1e-9;
 
 bool bag_has_topic(const BagRecording& recording, const std::string& topic, const std::string& datatype) {
   for (const TopicInfo& info : list_topics(recording)) {
@@ -37,13 +36,11 @@ class BagRun {
     ++result_.messages;
     if ((pipeline::is_skipped(outcome) || outcome == pipeline::SampleOutcome::kAlignmentFailed) &&
         result_.first_problem.empty()) {
-      result_.first_problem =
-          "at stamp " + std::to_string(stamp_ns * kSecondsPerNanosecond) + " s: " + session_.last_problem();
+      result_.first_problem = "at stamp " + format_stamp_s(stamp_ns) + " s: " + session_.last_problem();
     }
     if (!session_.new_solution()) return;
-    const bool due =
-        result_.solutions.empty() ||
-        (stamp_ns - result_.solutions.back().stamp_ns) * kSecondsPerNanosecond >= options_.output_interval_s - 1e-9;
+    const bool due = result_.solutions.empty() ||
+                     seconds_between(result_.solutions.back().stamp_ns, stamp_ns) >= options_.output_interval_s - 1e-9;
     if (due) result_.solutions.push_back(pipeline::make_solution(session_, world_));
   }
 
@@ -95,7 +92,7 @@ BagNavigationResult navigate_bag(const BagRecording& recording, const BagNavigat
   result.alignment = run.session().alignment();
   if (const auto& divergence = run.session().divergence()) {
     throw InputError("bag " + recording.name() + ", topic " + result.topic +
-                     ": the navigation state became unusable at stamp " + pipeline::format_stamp(divergence->stamp_ns) +
+                     ": the navigation state became unusable at stamp " + format_stamp_s(divergence->stamp_ns) +
                      " s (" + divergence->problem +
                      "); nothing written (check the samples around that stamp and their units)");
   }
@@ -157,7 +154,7 @@ std::optional<TruthRecord> truth_at_start(const BagRecording& recording, const B
     return found.record;
   }
   throw InputError("bag " + recording.name() + ": " + options.truth_topic + " has no sample at " +
-                   pipeline::format_stamp(*start_ns) + " s, the first stamp of " + topic +
+                   format_stamp_s(*start_ns) + " s, the first stamp of " + topic +
                    " where the run starts; give the initial state instead");
 }
 

@@ -40,8 +40,8 @@ std::uint64_t write_emulated_bag(emulator::ImuEmulator& emulator, const Emulated
   AtomicBag bag(bag_path);
   for (std::uint64_t i = 0; i < sample_count; ++i) {
     const emulator::EmulatedSample sample = emulator.next();
-    const ros::Time stamp = sample_stamp(emulator.settings().start_time_s, interval_s, emulator.samples_emitted());
-    const EmulatorMessages messages = to_messages(sample, stamp, interval_s, options.frame_id);
+    const EmulatorMessages messages = to_messages(sample, interval_s, options.frame_id);
+    const ros::Time& stamp = messages.raw.header.stamp;
     bag.write(options.topics.raw, stamp, messages.raw);
     if (options.write_temperature) {
       bag.write(options.topics.temperature, stamp, messages.temperature);

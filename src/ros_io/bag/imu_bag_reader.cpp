@@ -15,6 +15,9 @@
 #include <optional>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
+#include "imu_lab/ros_io/msg/emulator_messages.h"
+#include "imu_lab/ros_io/msg/vector_message.h"
 #include "imu_wire_fields.h"
 
 namespace imu_lab {
@@ -41,8 +44,6 @@ std::string describe(const std::vector<TopicInfo>& topics) {
   return text.empty() ? " (none)" : text;
 }
 
-Eigen::Vector3d to_eigen(const geometry_msgs::Vector3& vector) { return {vector.x, vector.y, vector.z}; }
-
 // covariance[0] == -1: the triad carries no data (sensor_msgs/Imu); its values become NaN.
 ImuRecord make_imu_record(const ros::Time& stamp, const geometry_msgs::Vector3& angular_velocity,
                           double angular_velocity_covariance_0, const geometry_msgs::Vector3& linear_acceleration,
@@ -50,19 +51,12 @@ ImuRecord make_imu_record(const ros::Time& stamp, const geometry_msgs::Vector3& 
   constexpr double kNoData = -1.0;
   const Eigen::Vector3d missing = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
   ImuRecord record;
-  record.stamp_s = stamp.toSec();
   record.stamp_ns = static_cast<std::int64_t>(stamp.toNSec());
   record.has_angular_rate = angular_velocity_covariance_0 != kNoData;
   record.has_specific_force = linear_acceleration_covariance_0 != kNoData;
-  record.angular_rate_rad_s = record.has_angular_rate ? to_eigen(angular_velocity) : missing;
-  record.specific_force_m_s2 = record.has_specific_force ? to_eigen(linear_acceleration) : missing;
+  record.angular_rate_rad_s = record.has_angular_rate ? eigen_from_message(angular_velocity) : missing;
+  record.specific_force_m_s2 = record.has_specific_force ? eigen_from_message(linear_acceleration) : missing;
   return record;
-}
-
-std::string stamp_text(std::int64_t stamp_ns) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.9f s", stamp_ns * 1e-9);
-  return text;
 }
 
 std::int64_t stamp_ns_of(const ImuWireFields& message) { return static_cast<std::int64_t>(message.stamp.toNSec()); }
@@ -82,8 +76,8 @@ IncrementRecord to_increment_record(const imu_lab::ImuIncrement& message) {
   IncrementRecord record;
   record.stamp_ns = static_cast<std::int64_t>(message.header.stamp.toNSec());
   record.interval_s = message.interval_s;
-  record.delta_angle_rad = to_eigen(message.delta_angle_rad);
-  record.delta_velocity_m_s = to_eigen(message.delta_velocity_m_s);
+  record.delta_angle_rad = eigen_from_message(message.delta_angle_rad);
+  record.delta_velocity_m_s = eigen_from_message(message.delta_velocity_m_s);
   return record;
 }
 
@@ -134,9 +128,9 @@ OpenBag::OpenBag(const BagRecording& recording)
     if (after.path == before.path) throw InputError("bag " + after.path + " is named twice in one recording");
     if (after.begin <= before.end) {
       throw InputError("bags " + before.path + " and " + after.path + " overlap in recording time (" + before.path +
-                       " ends at " + stamp_text(static_cast<std::int64_t>(before.end.toNSec())) + ", " + after.path +
-                       " starts at " + stamp_text(static_cast<std::int64_t>(after.begin.toNSec())) +
-                       "): they are not the split files of one recording");
+                       " ends at " + format_stamp_s(static_cast<std::int64_t>(before.end.toNSec())) + " s, " +
+                       after.path + " starts at " + format_stamp_s(static_cast<std::int64_t>(after.begin.toNSec())) +
+                       " s" + "): they are not the split files of one recording");
     }
   }
 }
@@ -176,17 +170,17 @@ std::size_t OpenBag::stream(const std::string& topic, const std::string& datatyp
         if (read_in_file == 0 && last_stamp_ns) {
           if (stamp_ns <= *last_stamp_ns) {
             throw InputError("bags " + last_path + " and " + file->path + " are out of order on " + topic + ": " +
-                             last_path + "'s last stamp " + stamp_text(*last_stamp_ns) + " is not before " +
-                             file->path + "'s first " + stamp_text(stamp_ns) +
+                             last_path + "'s last stamp " + format_stamp_s(*last_stamp_ns) + " s is not before " +
+                             file->path + "'s first " + format_stamp_s(stamp_ns) + " s" +
                              " (overlapping files, or files of different recordings)");
           }
           joins_.push_back({last_path, file->path, (stamp_ns - *last_stamp_ns) * 1e-9});
         }
         if (!first_stamp_ns) {
           first_stamp_ns = stamp_ns;
-          window_begin_ns = stamp_ns + std::llround(window_.start_s * 1e9);
+          window_begin_ns = stamp_ns + stamp_ns_from_seconds(window_.start_s);
           window_end_ns = std::isinf(window_.end_s) ? std::numeric_limits<std::int64_t>::max()
-                                                    : stamp_ns + std::llround(window_.end_s * 1e9);
+                                                    : stamp_ns + stamp_ns_from_seconds(window_.end_s);
         }
         ++read;
         ++read_in_file;
@@ -279,27 +273,16 @@ std::size_t OpenBag::for_each_increment(const std::string& topic,
 
 std::size_t OpenBag::for_each_truth(const std::string& topic,
                                     const std::function<void(const TruthRecord&)>& on_record) {
-  return stream<imu_lab::ImuTruth>(topic, "imu_lab/ImuTruth", [&](const imu_lab::ImuTruth& message) {
-    TruthRecord record;
-    record.stamp_ns = static_cast<std::int64_t>(message.header.stamp.toNSec());
-    record.q_body_to_enu =
-        Eigen::Quaterniond(message.orientation.w, message.orientation.x, message.orientation.y, message.orientation.z);
-    record.angular_rate_rad_s = to_eigen(message.angular_velocity_rad_s);
-    record.specific_force_m_s2 = to_eigen(message.specific_force_m_s2);
-    record.latitude_rad = message.latitude_rad;
-    record.longitude_rad = message.longitude_rad;
-    record.height_m = message.height_m;
-    record.velocity_enu_m_s = to_eigen(message.velocity_enu_m_s);
-    on_record(record);
-  });
+  return stream<imu_lab::ImuTruth>(topic, "imu_lab/ImuTruth",
+                                   [&](const imu_lab::ImuTruth& message) { on_record(to_truth_record(message)); });
 }
 
 std::size_t OpenBag::for_each_temperature(const std::string& topic,
                                           const std::function<void(const TemperatureRecord&)>& on_record) {
-  return stream<sensor_msgs::Temperature>(topic, "sensor_msgs/Temperature",
-                                          [&](const sensor_msgs::Temperature& message) {
-                                            on_record({message.header.stamp.toSec(), message.temperature});
-                                          });
+  return stream<sensor_msgs::Temperature>(
+      topic, "sensor_msgs/Temperature", [&](const sensor_msgs::Temperature& message) {
+        on_record({static_cast<std::int64_t>(message.header.stamp.toNSec()), message.temperature});
+      });
 }
 
 std::size_t OpenBag::count_in_files(const std::string& topic) const {

@@ -81,11 +81,11 @@ CsvExportReport export_bag_to_csv(const BagRecording& recording, const CsvExport
       (request.temperature_required || bag_has_topic(recording, request.temperature_topic))) {
     report.temperature_topic = choose_topic(recording, request.temperature_topic, "sensor_msgs/Temperature");
   }
-  // Readings by header stamp (toSec of the same ros::Time gives the same double on both topics).
-  std::map<double, double> temperature_by_stamp;
+  // Readings by header stamp: a temperature goes on the row of the IMU sample with the same stamp.
+  std::map<std::int64_t, double> temperature_by_stamp;
   if (!report.temperature_topic.empty()) {
     for_each_temperature(recording, report.temperature_topic, [&](const TemperatureRecord& record) {
-      temperature_by_stamp[record.stamp_s] = record.temperature_c;
+      temperature_by_stamp[record.stamp_ns] = record.temperature_c;
     });
   }
   io::CsvExportOptions format = request.format;
@@ -97,7 +97,7 @@ CsvExportReport export_bag_to_csv(const BagRecording& recording, const CsvExport
       sample.stamp_ns = record.stamp_ns;
       sample.angular_rate_rad_s = record.angular_rate_rad_s;
       sample.specific_force_m_s2 = record.specific_force_m_s2;
-      const auto reading = temperature_by_stamp.find(record.stamp_s);
+      const auto reading = temperature_by_stamp.find(record.stamp_ns);
       if (reading != temperature_by_stamp.end()) {
         sample.temperature_c = reading->second;
         temperature_by_stamp.erase(reading);

@@ -4,17 +4,12 @@
 #include <vector>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/common/usable_imu_values.h"
 
 namespace imu_lab {
 namespace ros_io {
 namespace {
-
-std::string seconds_text(std::int64_t stamp_ns) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.9f s", stamp_ns * 1e-9);
-  return text;
-}
 
 const char* const kNoDataMark = "covariance[0] = -1, sensor_msgs/Imu's mark for a triad the driver does not provide";
 
@@ -56,7 +51,7 @@ void StrictImuCheck::throw_if_refused(const BagRecording& recording, const std::
   if (problems.empty()) return;
   std::string text;
   for (const std::string& problem : problems) text += (text.empty() ? "" : "; ") + problem;
-  const std::string first = first_bad_stamp_ns_ ? ", the first at " + seconds_text(*first_bad_stamp_ns_) : "";
+  const std::string first = first_bad_stamp_ns_ ? ", the first at " + format_stamp_s(*first_bad_stamp_ns_) + " s" : "";
   throw InputError("bag " + recording.name() + ", topic " + topic + ": " + text + first +
                    "; this tool uses every sample, so nothing was computed or written: repair the "
                    "recording (or cut the bad part out with `rosbag filter`)");

@@ -20,7 +20,7 @@ std::size_t read_temperatures(const BagRecording& recording, const std::string& 
   }
   std::size_t refused = 0;
   const std::size_t count = for_each_temperature(recording, topic, [&](const TemperatureRecord& record) {
-    if (!history->add(record.stamp_s, record.temperature_c)) ++refused;
+    if (!history->add(record.stamp_ns, record.temperature_c)) ++refused;
   });
   if (count == 0)
     throw InputError("bag " + recording.name() + ": topic " + topic + " has no messages; the " + role +

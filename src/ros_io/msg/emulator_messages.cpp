@@ -13,17 +13,42 @@ void set_diagonal(boost::array<double, 9>& covariance, const Eigen::Vector3d& va
 
 }  // namespace
 
-ros::Time sample_stamp(double start_time_s, double interval_s, std::uint64_t n) {
-  ros::Time start;
-  start.fromSec(start_time_s);
-  return start + ros::Duration(static_cast<double>(n) * interval_s);
+imu_lab::ImuTruth to_truth_message(const io::TruthRecord& truth, const std_msgs::Header& header) {
+  imu_lab::ImuTruth message;
+  message.header = header;
+  message.orientation.w = truth.q_body_to_enu.w();
+  message.orientation.x = truth.q_body_to_enu.x();
+  message.orientation.y = truth.q_body_to_enu.y();
+  message.orientation.z = truth.q_body_to_enu.z();
+  set_vector_message(message.angular_velocity_rad_s, truth.angular_rate_rad_s);
+  set_vector_message(message.specific_force_m_s2, truth.specific_force_m_s2);
+  message.latitude_rad = truth.latitude_rad;
+  message.longitude_rad = truth.longitude_rad;
+  message.height_m = truth.height_m;
+  set_vector_message(message.velocity_enu_m_s, truth.velocity_enu_m_s);
+  message.temperature_c = truth.temperature_c;
+  return message;
 }
 
-EmulatorMessages to_messages(const emulator::EmulatedSample& sample, const ros::Time& stamp, double interval_s,
-                             const std::string& frame_id) {
+io::TruthRecord to_truth_record(const imu_lab::ImuTruth& message) {
+  io::TruthRecord record;
+  record.stamp_ns = static_cast<std::int64_t>(message.header.stamp.toNSec());
+  record.q_body_to_enu =
+      Eigen::Quaterniond(message.orientation.w, message.orientation.x, message.orientation.y, message.orientation.z);
+  record.angular_rate_rad_s = eigen_from_message(message.angular_velocity_rad_s);
+  record.specific_force_m_s2 = eigen_from_message(message.specific_force_m_s2);
+  record.latitude_rad = message.latitude_rad;
+  record.longitude_rad = message.longitude_rad;
+  record.height_m = message.height_m;
+  record.velocity_enu_m_s = eigen_from_message(message.velocity_enu_m_s);
+  record.temperature_c = message.temperature_c;
+  return record;
+}
+
+EmulatorMessages to_messages(const emulator::EmulatedSample& sample, double interval_s, const std::string& frame_id) {
   EmulatorMessages out;
   std_msgs::Header header;
-  header.stamp = stamp;
+  header.stamp.fromNSec(static_cast<std::uint64_t>(sample.stamp_ns));
   header.frame_id = frame_id;
 
   out.raw.header = header;
@@ -43,19 +68,7 @@ EmulatorMessages to_messages(const emulator::EmulatedSample& sample, const ros::
     out.second_temperature->temperature = *sample.second_temperature_c;
   }
 
-  const emulator::TruthSample& truth = sample.truth;
-  out.truth.header = header;
-  out.truth.orientation.w = truth.attitude_body_to_enu.w();
-  out.truth.orientation.x = truth.attitude_body_to_enu.x();
-  out.truth.orientation.y = truth.attitude_body_to_enu.y();
-  out.truth.orientation.z = truth.attitude_body_to_enu.z();
-  set_vector_message(out.truth.angular_velocity_rad_s, truth.angular_rate_rad_s);
-  set_vector_message(out.truth.specific_force_m_s2, truth.specific_force_m_s2);
-  out.truth.latitude_rad = truth.latitude_rad;
-  out.truth.longitude_rad = truth.longitude_rad;
-  out.truth.height_m = truth.height_m;
-  set_vector_message(out.truth.velocity_enu_m_s, truth.velocity_enu_m_s);
-  out.truth.temperature_c = truth.temperature_c;
+  out.truth = to_truth_message(sample.truth, header);
 
   out.increment.header = header;
   out.increment.interval_s = interval_s;

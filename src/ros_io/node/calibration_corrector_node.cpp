@@ -5,16 +5,14 @@
 #include <cmath>
 
 #include "imu_lab/calib/calibration_file.h"
-#include "imu_lab/ros_io/node/node_parameters.h"
 #include "imu_lab/ros_io/msg/vector_message.h"
+#include "imu_lab/ros_io/node/node_parameters.h"
 
 namespace imu_lab {
 namespace ros_io {
 namespace {
 
 constexpr double kLogThrottle_s = 5.0;
-
-Eigen::Vector3d vector_of(const geometry_msgs::Vector3& v) { return Eigen::Vector3d(v.x, v.y, v.z); }
 
 // K^-1 C K^-T for a known covariance; -1 in element 0 ("unknown", REP-145) stays as it is.
 void carry_covariance(boost::array<double, 9>& covariance, const Eigen::Matrix3d& k_inverse) {
@@ -30,7 +28,7 @@ void carry_covariance(boost::array<double, 9>& covariance, const Eigen::Matrix3d
 sensor_msgs::Imu corrected_message(const sensor_msgs::Imu& input, const calib::ImuCalibration& calibration) {
   sensor_msgs::Imu output = input;
   const calib::CorrectedSample corrected =
-      calibration.correct(vector_of(input.angular_velocity), vector_of(input.linear_acceleration));
+      calibration.correct(eigen_from_message(input.angular_velocity), eigen_from_message(input.linear_acceleration));
   set_vector_message(output.angular_velocity, corrected.angular_rate_rad_s);
   set_vector_message(output.linear_acceleration, corrected.specific_force_m_s2);
   carry_covariance(output.angular_velocity_covariance, calibration.gyro.scale_misalignment.inverse());

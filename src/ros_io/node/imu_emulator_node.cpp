@@ -4,8 +4,8 @@
 #include <boost/make_shared.hpp>
 #include <cmath>
 
-#include "imu_lab/ros_io/node/config_paths.h"
 #include "imu_lab/ros_io/msg/emulator_messages.h"
+#include "imu_lab/ros_io/node/config_paths.h"
 #include "imu_lab/ros_io/node/node_parameters.h"
 
 namespace imu_lab {
@@ -49,8 +49,7 @@ ImuEmulatorNode::ImuEmulatorNode(ros::NodeHandle& node, ros::NodeHandle& private
 void ImuEmulatorNode::publish_next() {
   const emulator::EmulatedSample sample = emulator_->next();
   const double interval_s = emulator_->sample_interval_s();
-  const ros::Time stamp = sample_stamp(emulator_->settings().start_time_s, interval_s, emulator_->samples_emitted());
-  EmulatorMessages messages = to_messages(sample, stamp, interval_s, frame_id_);
+  EmulatorMessages messages = to_messages(sample, interval_s, frame_id_);
   // Shared pointers: a nodelet in the same manager gets this very message (no serialisation, no copy).
   raw_publisher_.publish(boost::make_shared<sensor_msgs::Imu>(std::move(messages.raw)));
   temperature_publisher_.publish(boost::make_shared<sensor_msgs::Temperature>(std::move(messages.temperature)));

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/common/usable_imu_values.h"
 #include "imu_lab/ros_io/node/node_parameters.h"
 
@@ -74,7 +75,7 @@ StampVerdict InputHealth::check_stamp(std::int64_t stamp_ns) {
     ++out_of_order_.total;
     return StampVerdict::kOutOfOrder;
   }
-  const double interval_s = (stamp_ns - previous_stamp_ns_) * 1e-9;
+  const double interval_s = seconds_between(previous_stamp_ns_, stamp_ns);
   previous_stamp_ns_ = stamp_ns;
   if (!rate_known()) {
     learn_interval(interval_s);

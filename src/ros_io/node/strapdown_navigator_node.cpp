@@ -2,9 +2,11 @@
 
 #include <cmath>
 
-#include "imu_lab/common/site_limits.h"
 #include "imu_lab/common/format_number.h"
+#include "imu_lab/common/site_limits.h"
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/pipeline/navigation_csv.h"
+#include "imu_lab/ros_io/msg/vector_message.h"
 #include "imu_lab/ros_io/node/navigation_parameters.h"
 #include "imu_lab/ros_io/node/node_parameters.h"
 
@@ -83,8 +85,8 @@ void StrapdownNavigatorNode::on_increment(const imu_lab::ImuIncrement::ConstPtr&
   nav::ImuIncrement increment;
   const auto& a = message->delta_angle_rad;
   const auto& v = message->delta_velocity_m_s;
-  increment.delta_angle_rad = Eigen::Vector3d(a.x, a.y, a.z);
-  increment.delta_velocity_m_s = Eigen::Vector3d(v.x, v.y, v.z);
+  increment.delta_angle_rad = eigen_from_message(a);
+  increment.delta_velocity_m_s = eigen_from_message(v);
   increment.dt_s = message->interval_s;
   health_->check_stamp(static_cast<std::int64_t>(message->header.stamp.toNSec()));
   const bool values_usable = health_->check_triads(increment.delta_angle_rad, increment.delta_velocity_m_s);
@@ -166,10 +168,9 @@ void StrapdownNavigatorNode::report(diagnostic_updater::DiagnosticStatusWrapper&
   if (const auto& divergence = session_->divergence()) {
     // Every report until told to start again: the condition persists, unlike the input problems.
     status.mergeSummary(diagnostic_msgs::DiagnosticStatus::ERROR,
-                        "navigation stopped: state unusable at stamp " + pipeline::format_stamp(divergence->stamp_ns) +
-                            " s (" + divergence->problem + "); call " + reinitialise_service_.getService() +
-                            " to start again");
-    status.add("navigation stopped at stamp [s]", pipeline::format_stamp(divergence->stamp_ns));
+                        "navigation stopped: state unusable at stamp " + format_stamp_s(divergence->stamp_ns) + " s (" +
+                            divergence->problem + "); call " + reinitialise_service_.getService() + " to start again");
+    status.add("navigation stopped at stamp [s]", format_stamp_s(divergence->stamp_ns));
     status.add("samples ignored since", counters.halted);
   }
 }

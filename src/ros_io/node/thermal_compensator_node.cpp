@@ -4,9 +4,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/ros_io/bag/imu_bag_reader.h"
-#include "imu_lab/ros_io/node/node_parameters.h"
 #include "imu_lab/ros_io/msg/thermal_compensated_message.h"
+#include "imu_lab/ros_io/node/node_parameters.h"
 #include "imu_lab/thermal/thermal_model_yaml.h"
 
 namespace imu_lab {
@@ -68,7 +69,7 @@ void ThermalCompensatorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message) {
     ROS_WARN_THROTTLE(kLogThrottle_s,
                       "thermal_compensator: dropped an IMU sample at %.9f (NaN/Inf, beyond +-1e100, a "
                       "triad not provided, or its stamp is not after the previous one; counted in diagnostics)",
-                      record.stamp_s);
+                      seconds_from_stamp_ns(record.stamp_ns));
     return;
   }
   waiting_messages_.push_back(message);
@@ -78,7 +79,8 @@ void ThermalCompensatorNode::on_imu(const sensor_msgs::Imu::ConstPtr& message) {
 void ThermalCompensatorNode::on_temperature(const sensor_msgs::Temperature::ConstPtr& message) {
   std::lock_guard<std::mutex> lock(mutex_);
   std::vector<thermal::CompensatedSample> ready;
-  if (!compensator_->add_temperature(message->header.stamp.toSec(), message->temperature, &ready)) {
+  if (!compensator_->add_temperature(static_cast<std::int64_t>(message->header.stamp.toNSec()), message->temperature,
+                                     &ready)) {
     health_->count(temperature_dropped_condition_);
     ROS_WARN_THROTTLE(kLogThrottle_s,
                       "thermal_compensator: dropped a temperature reading at %.9f (NaN or stamp "
@@ -92,7 +94,8 @@ void ThermalCompensatorNode::on_temperature(const sensor_msgs::Temperature::Cons
 void ThermalCompensatorNode::on_second_temperature(const sensor_msgs::Temperature::ConstPtr& message) {
   std::lock_guard<std::mutex> lock(mutex_);
   std::vector<thermal::CompensatedSample> ready;
-  if (!compensator_->add_second_temperature(message->header.stamp.toSec(), message->temperature, &ready)) {
+  if (!compensator_->add_second_temperature(static_cast<std::int64_t>(message->header.stamp.toNSec()),
+                                            message->temperature, &ready)) {
     health_->count(temperature_dropped_condition_);
   }
   publish(ready);
@@ -107,7 +110,7 @@ void ThermalCompensatorNode::publish(const std::vector<thermal::CompensatedSampl
       ROS_WARN_THROTTLE(kLogThrottle_s,
                         "thermal_compensator: no temperature within the maximum age of the IMU stamp "
                         "%.9f; sample not published (is %s being published?)",
-                        sample.corrected.stamp_s, temperature_subscriber_.getTopic().c_str());
+                        seconds_from_stamp_ns(sample.corrected.stamp_ns), temperature_subscriber_.getTopic().c_str());
       continue;
     }
     if (sample.status == Status::kClamped) {

@@ -38,13 +38,12 @@ struct EmulatorMessages {
 // `frame_id` names the sensor frame (REP-145). The Imu orientation is marked unknown
 // (covariance[0] = -1): a raw IMU does not estimate attitude. Covariance diagonals are the
 // profile's per-sample stationary noise variances.
-EmulatorMessages to_messages(const emulator::EmulatedSample& sample, const ros::Time& stamp, double interval_s,
-                             const std::string& frame_id);
+// Every header carries the sample's integer stamp (emulator/imu_emulator.h).
+EmulatorMessages to_messages(const emulator::EmulatedSample& sample, double interval_s, const std::string& frame_id);
 
-// Header stamp of the n-th sample (n counts from 1; the stamp is the end of the interval), in
-// whole nanoseconds from the start time: a double near 1e9 s resolves only ~0.1 us, which would
-// show as false jitter in every stamp-based tau0 and gap check downstream.
-ros::Time sample_stamp(double start_time_s, double interval_s, std::uint64_t n);
+// imu_lab/ImuTruth both ways (the message has no second temperature; read back it is empty).
+imu_lab::ImuTruth to_truth_message(const io::TruthRecord& truth, const std_msgs::Header& header);
+io::TruthRecord to_truth_record(const imu_lab::ImuTruth& message);
 
 }  // namespace ros_io
 }  // namespace imu_lab

@@ -1,5 +1,5 @@
-// An Eigen vector into any geometry_msgs type with x, y, z fields (Vector3, Point): the one
-// conversion every node and tool that publishes or writes them shares.
+// An Eigen vector into any geometry_msgs type with x, y, z fields (Vector3, Point) and back: the
+// one conversion every node and tool that publishes, writes or reads them shares.
 #pragma once
 
 #include <Eigen/Core>
@@ -12,6 +12,11 @@ void set_vector_message(Vector3Like& message, const Eigen::Vector3d& v) {
   message.x = v.x();
   message.y = v.y();
   message.z = v.z();
+}
+
+template <class Vector3Like>
+Eigen::Vector3d eigen_from_message(const Vector3Like& message) {
+  return Eigen::Vector3d(message.x, message.y, message.z);
 }
 
 }  // namespace ros_io
