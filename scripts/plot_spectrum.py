@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Plot the spectrum tool's CSV files: per triad, each axis's one-sided PSD (log-log; the x axis's
-confidence interval shaded, the same factors hold for every axis), and each axis's autocorrelation
-with the white-noise band.
+confidence interval shaded, the same factors hold for every axis) with the identified model's PSD
+dashed where the CSV has one (`spectrum --model`), and each axis's autocorrelation with the
+white-noise band.
 
     scripts/plot_spectrum.py spectrum_psd.csv spectrum_autocorrelation.csv spectrum.png
 
@@ -29,6 +30,11 @@ def main(psd_path, autocorrelation_path, png_path):
             channel = f"{triad}_{axis}"
             key = next(name for name in psd[0] if name.startswith(channel + "_psd_") and name.endswith("_per_hz"))
             line, = top.loglog(frequency, [float(row[key]) for row in psd], lw=0.6, label=axis)
+            model = next((name for name in psd[0] if name.startswith(channel + "_model_psd_")), None)
+            if model is not None:
+                # A model density of 0 (a ramp-only model, DC) has no place on a log axis.
+                top.loglog(frequency, [float(row[model]) if float(row[model]) > 0 else float("nan") for row in psd],
+                           lw=1.0, ls="--", color=line.get_color(), label=f"{axis}: model")
             if axis == "x":
                 top.fill_between(frequency, [float(row[key + "_lower"]) for row in psd],
                                  [float(row[key + "_upper"]) for row in psd], color=line.get_color(), alpha=0.15,

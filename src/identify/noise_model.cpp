@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "imu_lab/noise/analytic_avar.h"
+#include "imu_lab/noise/analytic_psd.h"
 
 namespace imu_lab {
 namespace identify {
@@ -100,6 +101,47 @@ double term_avar(const Term& term, double tau_s) {
 double model_avar(const NoiseModel& model, double tau_s) {
   double total = noise::white_rate_avar(model.output_quantization_density, tau_s);
   for (const Term& term : model.terms) total += term_avar(term, tau_s);
+  return total;
+}
+
+double term_psd(const Term& term, double frequency_hz, double tau0_s) {
+  const double a = term.amplitude;
+  switch (term.kind) {
+    case TermKind::kWhiteAngle: return noise::white_angle_psd(a, tau0_s, frequency_hz);
+    case TermKind::kWhiteRate:
+      if (term.shape > 0.0) {  // as in term_avar: the low-passed white noise is a Markov process
+        const double time_constant_s = 1.0 / (kTwoPi * term.shape);
+        return noise::markov_psd(a / time_constant_s, time_constant_s, frequency_hz);
+      }
+      return noise::white_rate_psd(a);
+    case TermKind::kBiasInstability: return noise::bias_instability_psd(a, term.shape, frequency_hz);
+    case TermKind::kRandomWalk: return noise::random_walk_psd(a, frequency_hz);
+    case TermKind::kRateRamp: return 0.0;
+    case TermKind::kMarkov: return noise::markov_psd(a / term.shape, term.shape, frequency_hz);
+    case TermKind::kSinusoid: return 0.0;
+    case TermKind::kZeroDcFamily: return noise::zero_dc_family_psd(2.0, a * a, term.shape, frequency_hz);
+    case TermKind::kResonance: return noise::resonance_psd(a, term.shape, term.width, frequency_hz);
+  }
+  throw std::invalid_argument("unknown noise term kind");
+}
+
+double sampled_term_psd(const Term& term, double frequency_hz, double tau0_s) {
+  // Flat and periodic densities are their own interval-averaged, aliased PSD.
+  const bool flat = term.kind == TermKind::kWhiteRate && !(term.shape > 0.0);
+  if (flat || term.kind == TermKind::kWhiteAngle) return term_psd(term, frequency_hz, tau0_s);
+  if (term.kind == TermKind::kRateRamp || term.kind == TermKind::kSinusoid) return 0.0;
+  return noise::interval_averaged_psd([&](double f) { return term_psd(term, f, tau0_s); }, frequency_hz, tau0_s);
+}
+
+double model_psd(const NoiseModel& model, double frequency_hz, double tau0_s) {
+  double total = noise::white_rate_psd(model.output_quantization_density);
+  for (const Term& term : model.terms) total += term_psd(term, frequency_hz, tau0_s);
+  return total;
+}
+
+double sampled_model_psd(const NoiseModel& model, double frequency_hz, double tau0_s) {
+  double total = noise::white_rate_psd(model.output_quantization_density);
+  for (const Term& term : model.terms) total += sampled_term_psd(term, frequency_hz, tau0_s);
   return total;
 }
 

@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <sstream>
 
@@ -268,6 +269,18 @@ std::map<std::string, double> read_noise_report_values(const std::string& yaml_t
   };
   walk(root, "");
   return values;
+}
+
+std::map<std::string, double> read_noise_report_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError("cannot read noise report " + path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  try {
+    return read_noise_report_values(text.str());
+  } catch (const InputError& error) {
+    throw InputError(path + ": " + error.what());
+  }
 }
 
 }  // namespace identify

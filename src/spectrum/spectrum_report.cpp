@@ -9,7 +9,9 @@
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/format_number.h"
 #include "imu_lab/common/stamps.h"
+#include "imu_lab/repeatability/lot.h"
 #include "imu_lab/spectrum/autocorrelation.h"
+#include "imu_lab/spectrum/model_spectrum.h"
 
 namespace imu_lab {
 namespace spectrum {
@@ -97,11 +99,31 @@ SpectrumAnalysis analyse_spectra(const std::vector<io::ImuRecord>& samples, cons
   return analysis;
 }
 
+std::vector<std::string> overlay_noise_models(SpectrumAnalysis& analysis,
+                                              const std::map<std::string, double>& noise_report_values) {
+  // A lot of one unit: typical_model's medians are that unit's own values.
+  const std::vector<repeatability::LotUnit> report{{"model", noise_report_values}};
+  std::vector<std::string> drawn;
+  for (ChannelSpectrum& channel : analysis.channels) {
+    std::string report_channel = channel.name;
+    if (report_channel.rfind("accelerometer_", 0) == 0) report_channel = "accel_" + report_channel.substr(14);
+    const identify::NoiseModel model = repeatability::typical_model(report, report_channel);
+    if (model.terms.empty()) continue;
+    channel.model_density = model_density(model, channel.psd, analysis.tau0_s);
+    channel.model_has_rate_ramp = std::any_of(model.terms.begin(), model.terms.end(), [](const identify::Term& t) {
+      return t.kind == identify::TermKind::kRateRamp;
+    });
+    drawn.push_back(channel.name);
+  }
+  return drawn;
+}
+
 std::string psd_csv(const SpectrumAnalysis& analysis) {
   std::string text = "frequency_hz,degrees_of_freedom";
   for (const ChannelSpectrum& c : analysis.channels) {
     const std::string column = c.name + "_psd_" + squared_unit(c.unit) + "_per_hz";
     text += "," + column + "," + column + "_lower," + column + "_upper";
+    if (!c.model_density.empty()) text += "," + c.name + "_model_psd_" + squared_unit(c.unit) + "_per_hz";
   }
   text += "\n";
   const PowerSpectrum& first = analysis.channels.front().psd;
@@ -111,6 +133,7 @@ std::string psd_csv(const SpectrumAnalysis& analysis) {
       const DensityInterval interval = density_interval(c.psd, bin, analysis.confidence);
       text += "," + format_number(c.psd.density[bin]) + "," + format_number(interval.lower) + "," +
               format_number(interval.upper);
+      if (!c.model_density.empty()) text += "," + format_number(c.model_density[bin]);
     }
     text += "\n";
   }
@@ -185,6 +208,18 @@ std::string spectrum_summary(const SpectrumAnalysis& analysis) {
                      " segments of " + std::to_string(first.segment_length) + ", resolution " +
                      format_printf(first.resolution_hz, "%.4g") + " Hz, " +
                      format_printf(first.degrees_of_freedom, "%.1f") + " degrees of freedom per bin\n";
+  for (const ChannelSpectrum& channel : analysis.channels) {
+    if (channel.model_density.empty()) continue;
+    // The model's share of the estimate: the median ratio over the bins (1 where they agree).
+    std::vector<double> ratios;
+    for (std::size_t bin = 1; bin < channel.model_density.size(); ++bin) {
+      if (channel.model_density[bin] > 0.0) ratios.push_back(channel.psd.density[bin] / channel.model_density[bin]);
+    }
+    std::nth_element(ratios.begin(), ratios.begin() + ratios.size() / 2, ratios.end());
+    text += channel.name + " model drawn: estimate / model median " +
+            format_printf(ratios.empty() ? 0.0 : ratios[ratios.size() / 2], "%.3g") +
+            (channel.model_has_rate_ramp ? " (its rate ramp left out: no stationary PSD)" : "") + "\n";
+  }
   for (const TriadCorrelation& triad : analysis.triads) {
     for (const AxisCorrelation& c : triad.by_factor) {
       text += triad.triad + " axis correlation at " + format_printf(c.averaging_time_s, "%.4g") + " s: xy " +

@@ -31,10 +31,11 @@ PowerSpectrum welch_psd(const std::vector<double>& values, double tau0_s, const 
     throw InputError("Welch PSD: the record holds values that are not finite");
   }
   std::vector<double> window(length);
-  double window_power = 0.0;
+  double window_power = 0.0, window_sum = 0.0;
   for (std::size_t k = 0; k < length; ++k) {
     window[k] = 0.5 * (1.0 - std::cos(2.0 * kPi * static_cast<double>(k) / static_cast<double>(length)));
     window_power += window[k] * window[k];
+    window_sum += window[k];
   }
   const std::size_t bins = length / 2 + 1;
   PowerSpectrum spectrum;
@@ -56,6 +57,8 @@ PowerSpectrum welch_psd(const std::vector<double>& values, double tau0_s, const 
   // Periodogram |X|^2 tau0 / sum(w^2) is the two-sided density; doubled except at 0 and Nyquist.
   const double scale = tau0_s / (window_power * static_cast<double>(spectrum.segment_count));
   spectrum.resolution_hz = 1.0 / (static_cast<double>(length) * tau0_s);
+  spectrum.equivalent_noise_bandwidth_hz =
+      static_cast<double>(length) * window_power / (window_sum * window_sum) * spectrum.resolution_hz;
   spectrum.frequency_hz.resize(bins);
   for (std::size_t bin = 0; bin < bins; ++bin) {
     const bool edge = bin == 0 || 2 * bin == length;

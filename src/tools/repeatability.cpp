@@ -37,14 +37,6 @@ std::vector<std::string> split_files(const std::string& run) {
   }
 }
 
-std::string read_noise_report(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw imu_lab::InputError("cannot read noise report " + path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 rep::RunSummary read_run(const std::string& run, const imu_lab::io::TimeWindow& window, const std::string& topic) {
   const imu_lab::ros_io::BagRecording recording(split_files(run), window);
   const std::string chosen = imu_lab::ros_io::choose_imu_topic(recording, topic);
@@ -132,8 +124,7 @@ int main(int argc, char** argv) {
       for (std::size_t k = 0; k < runs.size(); ++k) {
         summaries.push_back(read_run(runs[k], window, topic));
         if (!noise_reports.empty()) {
-          summaries.back().terms =
-              rep::identified_terms(imu_lab::identify::read_noise_report_values(read_noise_report(noise_reports[k])));
+          summaries.back().terms = rep::identified_terms(imu_lab::identify::read_noise_report_file(noise_reports[k]));
         }
         std::fprintf(stderr, "repeatability: run %zu/%zu %s: %zu samples\n", k + 1, runs.size(),
                      summaries.back().name.c_str(), summaries.back().sample_count);

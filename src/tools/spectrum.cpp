@@ -12,6 +12,7 @@
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
+#include "imu_lab/identify/noise_report.h"
 #include "imu_lab/spectrum/spectrum_report.h"
 #include "imu_lab/ros_io/node/config_paths.h"
 #include "imu_lab/ros_io/bag/imu_bag_reader.h"
@@ -22,7 +23,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Power spectral densities, autocorrelations and cross-axis correlation of a static recording."};
   using namespace imu_lab::option_range;
   imu_lab::ros_io::RecordingArguments recording;
-  std::string topic, out_directory = "spectrum_report";
+  std::string topic, out_directory = "spectrum_report", model_path;
   bool no_plot = false;
   imu_lab::spectrum::SpectrumOptions options;
   imu_lab::ros_io::add_recording_arguments(app, recording, "static bag", true);
@@ -42,6 +43,9 @@ int main(int argc, char** argv) {
   app.add_option("--confidence", options.confidence, "of every interval (PSD, correlation, white-noise band)")
       ->capture_default_str()
       ->check(between(0.5, 0.999));
+  app.add_option("--model", model_path,
+                 "noise.yaml of the `allan` tool: each channel's identified model drawn over its PSD (a column "
+                 "<channel>_model_psd_... in spectrum_psd.csv, a dashed line in the plot)");
   app.add_flag("--no-plot", no_plot, "do not write spectrum.png");
   if (const auto status = imu_lab::parse_tool_options("spectrum", app, argc, argv)) return *status;
 
@@ -52,7 +56,13 @@ int main(int argc, char** argv) {
     std::vector<imu_lab::io::ImuRecord> samples;
     imu_lab::ros_io::for_each_imu_strictly(bag, topic,
                                            [&](const imu_lab::io::ImuRecord& record) { samples.push_back(record); });
-    const imu_lab::spectrum::SpectrumAnalysis analysis = imu_lab::spectrum::analyse_spectra(samples, options);
+    imu_lab::spectrum::SpectrumAnalysis analysis = imu_lab::spectrum::analyse_spectra(samples, options);
+    if (!model_path.empty()) {
+      const auto drawn =
+          imu_lab::spectrum::overlay_noise_models(analysis, imu_lab::identify::read_noise_report_file(model_path));
+      if (drawn.empty())
+        throw imu_lab::InputError(model_path + ": no channel of this recording has a noise model there");
+    }
 
     imu_lab::OutputSet outputs;
     const std::string staging = outputs.stage_directory(out_directory);

@@ -2,8 +2,9 @@
 // whose gyro axes are correlated by noise.white_rate.axis_correlation. Every file written; the
 // estimated correlation matrix holds the profile's matrix inside its interval at tau0 and after
 // averaging (the accelerometer's, independent, holds the identity); the PSD is the white density
-// 2 N^2 (one-sided). Bad options exit 2 naming the option, a record too short for what is asked
-// exits 1 naming it, and neither writes anything.
+// 2 N^2 (one-sided); `--model` draws the noise `allan` identifies over it. Bad options exit 2
+// naming the option, a record too short for what is asked (or a missing model) exits 1 naming it,
+// and neither writes anything.
 #include <gtest/gtest.h>
 
 #include <yaml-cpp/yaml.h>
@@ -100,6 +101,55 @@ TEST(SpectrumTool, WritesEveryFileAndFindsTheProfilesCorrelation) {
   EXPECT_NEAR(sum / bins / expected, 1.0, 5.0 * std::sqrt(2.0 / (nu * bins / 2.0)));
 }
 
+// `allan` identifies the bag's noise, `spectrum --model` draws it: every channel gets a model
+// column, the plot is written, and over bins 1 .. 2046 the estimate's mean over the model's is 1
+// within 5 sigma of the estimate's mean (as above) and of the identified N (its sigma in noise.yaml,
+// doubled for N^2).
+TEST(SpectrumTool, DrawsTheIdentifiedModel) {
+  const std::string allan_out = scratch_directory() + "/allan", out = scratch_directory() + "/report";
+  const auto identified = run_tool("allan", correlated_bag() + " -o " + allan_out);
+  ASSERT_EQ(identified.exit_code, 0) << identified.output;
+  const auto result = run_tool("spectrum", correlated_bag() + " --model " + allan_out + "/noise.yaml --out " + out);
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("gyro_x model drawn: estimate / model median"), std::string::npos) << result.output;
+  if (file_exists("/usr/bin/python3")) EXPECT_TRUE(file_exists(out + "/spectrum.png")) << result.output;
+  const YAML::Node noise = YAML::LoadFile(allan_out + "/noise.yaml");
+  const YAML::Node white = noise["triads"]["gyro"]["axes"]["gyro_x"]["terms"]["white_rate"];
+  const double n_relative_sigma =
+      white["N_rad_s_per_sqrt_hz_sigma"].as<double>() / white["N_rad_s_per_sqrt_hz"].as<double>();
+
+  std::ifstream csv(out + "/spectrum_psd.csv");
+  std::string line;
+  std::getline(csv, line);
+  std::vector<std::string> header;
+  std::stringstream names(line);
+  for (std::string name; std::getline(names, name, ',');) header.push_back(name);
+  std::size_t estimate_column = 0, model_column = 0;
+  int model_columns = 0;
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    if (header[i] == "gyro_x_psd_rad2_s2_per_hz") estimate_column = i;
+    if (header[i] == "gyro_x_model_psd_rad2_s2_per_hz") model_column = i;
+    model_columns += header[i].find("_model_psd_") != std::string::npos ? 1 : 0;
+  }
+  EXPECT_EQ(model_columns, 6) << line;
+  ASSERT_GT(model_column, estimate_column) << line;
+  double estimate_sum = 0.0, model_sum = 0.0, nu = 0.0;
+  int bins = 0;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> fields;
+    std::stringstream row(line);
+    for (std::string field; std::getline(row, field, ',');) fields.push_back(field);
+    if (bins > 0 && std::stod(fields[1]) != nu) break;  // Nyquist
+    nu = std::stod(fields[1]);
+    estimate_sum += std::stod(fields[estimate_column]);
+    model_sum += std::stod(fields[model_column]);
+    ++bins;
+  }
+  ASSERT_EQ(bins, 2047);
+  const double sigma = std::hypot(std::sqrt(2.0 / (nu * bins / 2.0)), 2.0 * n_relative_sigma);
+  EXPECT_NEAR(estimate_sum / model_sum, 1.0, 5.0 * sigma) << "N relative sigma " << n_relative_sigma;
+}
+
 TEST(SpectrumTool, BadOptionsExitTwoAndTooShortARecordExitsOneNamingIt) {
   const std::string& bag = correlated_bag();
   const std::string out = scratch_directory();
@@ -112,6 +162,7 @@ TEST(SpectrumTool, BadOptionsExitTwoAndTooShortARecordExitsOneNamingIt) {
       {"--averaging-factors 0", 2, {"--averaging-factors"}},
       {"--confidence 1", 2, {"--confidence"}},
       {"--averaging-factors 1 5000 --no-plot", 1, {bag, "averaging factor 5000 leaves 6 blocks"}},
+      {"--model /nonexistent/noise.yaml --no-plot", 1, {"cannot read noise report /nonexistent/noise.yaml"}},
       {"--segment-length 65536 --no-plot",
        1,
        {bag, "gyro_x: Welch PSD: 30000 samples, fewer than one segment of 65536"}},

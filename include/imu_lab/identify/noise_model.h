@@ -60,6 +60,19 @@ double term_avar(const Term& term, double tau_s);
 // The terms plus the output quantization.
 double model_avar(const NoiseModel& model, double tau_s);
 
+// Two-sided PSD of one term's rate at f [u^2/Hz], the density whose integral (doc/noise_families.md
+// eq. (1)) is term_avar (noise/analytic_psd.h). A sinusoid's power is in its two lines
+// (noise::sinusoid_line_power at +-f) and a rate ramp, being deterministic, has no stationary
+// PSD: both give 0 here. tau0_s is needed for the white angle term only.
+double term_psd(const Term& term, double frequency_hz, double tau0_s);
+// The PSD of the term's samples every tau0, each the interval average of the rate
+// (noise::interval_averaged_psd), for |f| <= 1 / (2 tau0): what a Welch estimate of a record
+// estimates. Lines and ramps give 0 as above.
+double sampled_term_psd(const Term& term, double frequency_hz, double tau0_s);
+// The terms plus the output quantization (white: N_q^2 in both).
+double model_psd(const NoiseModel& model, double frequency_hz, double tau0_s);
+double sampled_model_psd(const NoiseModel& model, double frequency_hz, double tau0_s);
+
 // Report names of the model's terms in order: kind names, Markov terms numbered by increasing
 // correlation time ("markov_1", "markov_2"), sinusoids and resonances by increasing frequency.
 std::vector<std::string> term_names(const NoiseModel& model);

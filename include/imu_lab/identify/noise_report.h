@@ -44,6 +44,8 @@ void write_noise_report(const std::string& path, const std::vector<TriadFit>& tr
 // ("triads.gyro.axes.gyro_x.terms.white_rate.N_rad_s_per_sqrt_hz"). Throws InputError if the
 // text is not a noise report.
 std::map<std::string, double> read_noise_report_values(const std::string& yaml_text);
+// The same from a file; InputError names the file when it cannot be read or is not a report.
+std::map<std::string, double> read_noise_report_file(const std::string& path);
 
 }  // namespace identify
 }  // namespace imu_lab

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,10 @@ struct ChannelSpectrum {
   std::string unit;  // of the values: "rad_s" or "m_s2"
   PowerSpectrum psd;
   std::vector<double> autocorrelation;  // lags 0 .. max_lag
+  // The identified noise model's density over the estimate, per bin (model_spectrum.h); empty
+  // without a model for this channel.
+  std::vector<double> model_density;
+  bool model_has_rate_ramp = false;  // left out of model_density (no stationary PSD)
 };
 
 struct TriadCorrelation {
@@ -56,8 +61,17 @@ double uniform_sample_interval_s(const std::vector<double>& stamps_s, double tol
 // factor; a channel without variance; non-uniform stamps), naming what to change.
 SpectrumAnalysis analyse_spectra(const std::vector<io::ImuRecord>& samples, const SpectrumOptions& options);
 
+// Draws each channel's identified model over its estimate: the model of the channel
+// (gyro_x .. accel_z in the report) in a noise report's values, as identify::
+// read_noise_report_values gives them from the `allan` tool's noise.yaml (read as
+// repeatability::typical_model reads a unit's report). A channel the report gives no terms for
+// gets none. Returns the names of the channels that got one.
+std::vector<std::string> overlay_noise_models(SpectrumAnalysis& analysis,
+                                              const std::map<std::string, double>& noise_report_values);
+
 // frequency_hz, degrees_of_freedom, then per channel <name>_psd_<unit^2>_per_hz, _lower, _upper
-// (the confidence interval); bins 1 .. Nyquist (DC carries no information once the mean is removed).
+// (the confidence interval) and, where a model is drawn, <name>_model_psd_<unit^2>_per_hz (one-sided
+// like the estimate); bins 1 .. Nyquist (DC carries no information once the mean is removed).
 std::string psd_csv(const SpectrumAnalysis& analysis);
 // lag_s, white_band, then one column per channel.
 std::string autocorrelation_csv(const SpectrumAnalysis& analysis);

@@ -21,6 +21,9 @@ struct PowerSpectrum {
   std::size_t segment_length = 0;
   std::size_t segment_count = 0;
   double resolution_hz = 0.0;  // bin spacing 1 / (segment_length tau0)
+  // The window's equivalent noise bandwidth, L sum(w^2) / (sum w)^2 bins (1.5 for Hann; Harris
+  // 1978): a sinusoid of power P centred on a bin reads P / this there.
+  double equivalent_noise_bandwidth_hz = 0.0;
   // Equivalent degrees of freedom of each bin away from 0 and Nyquist, for a spectrum that is
   // smooth over a few bins: 2 K / (1 + 2 (1 - 1/K) c^2) for K segments, c the correlation of
   // neighbouring windowed segments (sum of w_k w_(k+L/2) over sum of w_k^2: 1/6 for Hann at 50 %
