@@ -177,6 +177,10 @@ std::string format_allan_summary(const AllanRunDescription& run, const allan::St
   emit_timing(out, snapshot.timing, run.engine.stamp_policy == allan::StampPolicy::kStop);
   emit_impulses(out, run);
   emit_channels(out, run, snapshot);
+  if (run.warm_up) {
+    out << YAML::Key << "warm_up_removed" << YAML::Value
+        << "the fitted transients, before the statistics (warm_up.yaml)";
+  }
   out << YAML::Key << "confidence" << YAML::Value << run.engine.confidence;
   out << YAML::Key << "points_per_decade" << YAML::Value << run.engine.points_per_decade;
   out << YAML::Key << "max_tau_s" << YAML::Value << run.engine.max_tau_s;

@@ -52,6 +52,10 @@ void print_summary(const imu_lab::ros_io::AllanBagPassResult& result, const imu_
     }
   }
   std::printf("%s", imu_lab::pipeline::format_impulse_events("allan: ", result.impulses).c_str());
+  if (result.warm_up) {
+    std::printf("allan: warm-up removed (warm_up.yaml):\n%s",
+                imu_lab::pipeline::format_warm_up_lines("allan:   ", result.input, *result.warm_up).c_str());
+  }
   std::printf("allan: output steps (LSB; none: not quantised): %s\n",
               imu_lab::pipeline::format_output_steps(result.input, result.output_steps).c_str());
   for (const auto& path : files.written) std::printf("allan: wrote %s\n", path.c_str());
@@ -105,6 +109,15 @@ int main(int argc, char** argv) {
   app.add_option("--impulse-threshold", options.screen.threshold_sigma,
                  "a sample deviating from its local level by more than this many robust scales is a knock or spike")
       ->capture_default_str();
+  app.add_flag("--remove-warm-up", options.warm_up.enabled,
+               "fit each channel's power-on warm-up (constant + up to --warm-up-terms exponentials, on block means) "
+               "and remove it before the analysis; the models, sigmas and the trend left go to warm_up.yaml");
+  app.add_option("--warm-up-block-s", options.warm_up.block_s, "block length of the means the warm-up fit sees [s]")
+      ->capture_default_str();
+  app.add_option("--warm-up-terms", options.warm_up.fit.max_terms,
+                 "most exponentials tried; each one is kept only if an F-test on the fit accepts it")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 3));
   app.add_flag("--progress", progress, "progress bar on stderr even when it is not a terminal");
   app.add_flag("--no-plot", no_plot, "do not write allan.png");
   app.add_flag("--no-identify", no_identify, "do not fit the noise model (no noise.yaml, kalibr_imu.yaml)");
@@ -123,6 +136,7 @@ int main(int argc, char** argv) {
 
   const imu_lab::ToolInput bag_input = recording.tool_input(options.topic);
   return imu_lab::run_tool_main("allan", bag_input, [&] {
+    imu_lab::pipeline::check_warm_up_options(options.warm_up);
     if (!(options.screen.threshold_sigma > imu_lab::allan::kScaleClipSigma)) {
       throw imu_lab::ConfigError("allan", "--impulse-threshold", "must be a number of scales above 3 (default 12)");
     }
@@ -138,6 +152,7 @@ int main(int argc, char** argv) {
     run.engine = result.engine;
     run.impulses = result.impulses;
     run.output_steps = result.output_steps;
+    run.warm_up = result.warm_up;
     const auto files = imu_lab::ros_io::write_allan_report(out_directory, run, result.snapshot, !no_plot, identify);
     print_summary(result, files);
     return 0;

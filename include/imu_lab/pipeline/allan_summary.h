@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "imu_lab/allan/impulse_screen.h"
@@ -12,6 +13,7 @@
 #include "imu_lab/allan/streaming_allan.h"
 #include "imu_lab/io/recording_window.h"
 #include "imu_lab/pipeline/allan_samples.h"
+#include "imu_lab/pipeline/allan_warm_up.h"
 
 namespace imu_lab {
 namespace pipeline {
@@ -27,6 +29,7 @@ struct AllanRunDescription {
   std::int64_t skipped_before_checkpoint = 0;          // live only: replayed samples a resumed node skipped
   allan::ImpulseScreenReport impulses;                 // the screen before the engine
   std::vector<allan::ChannelOutputStep> output_steps;  // per channel (empty: not watched)
+  std::optional<AllanWarmUp> warm_up;                  // the transients removed first (allan --remove-warm-up)
 };
 
 std::string format_allan_summary(const AllanRunDescription& run, const allan::StreamingSnapshot& snapshot);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <functional>
 #include <thread>
 #include <vector>
 
@@ -23,6 +24,20 @@ using SampleBatch = std::vector<pipeline::AllanSample>;
 // Thrown inside the reader's callback to stop the bag iteration when the consumer gave up.
 struct ReadingCancelled {};
 
+// Every message of the topic as an Allan sample; `on_imu` also sees each sensor_msgs/Imu record.
+void for_each_sample(OpenBag& bag, const std::string& topic, pipeline::AllanInput input,
+                     const std::function<void(const pipeline::AllanSample&)>& add,
+                     const std::function<void(const ImuRecord&)>& on_imu = {}) {
+  if (input == pipeline::AllanInput::kRate) {
+    bag.for_each_imu(topic, [&](const ImuRecord& record) {
+      if (on_imu) on_imu(record);
+      add(pipeline::to_allan_sample(record));
+    });
+  } else {
+    bag.for_each_increment(topic, [&](const IncrementRecord& record) { add(pipeline::to_allan_sample(record)); });
+  }
+}
+
 void read_batches(OpenBag& bag, const std::string& topic, pipeline::AllanInput input, BoundedQueue<SampleBatch>& queue,
                   AllanBagPassResult& result) {
   SampleBatch batch;
@@ -34,16 +49,20 @@ void read_batches(OpenBag& bag, const std::string& topic, pipeline::AllanInput i
     batch = SampleBatch();
     batch.reserve(kBatchSamples);
   };
-  if (input == pipeline::AllanInput::kRate) {
-    bag.for_each_imu(topic, [&](const ImuRecord& record) {
-      result.messages_without_angular_rate += record.has_angular_rate ? 0 : 1;
-      result.messages_without_specific_force += record.has_specific_force ? 0 : 1;
-      add(pipeline::to_allan_sample(record));
-    });
-  } else {
-    bag.for_each_increment(topic, [&](const IncrementRecord& record) { add(pipeline::to_allan_sample(record)); });
-  }
+  for_each_sample(bag, topic, input, add, [&](const ImuRecord& record) {
+    result.messages_without_angular_rate += record.has_angular_rate ? 0 : 1;
+    result.messages_without_specific_force += record.has_specific_force ? 0 : 1;
+  });
   if (!batch.empty()) queue.push(std::move(batch));
+}
+
+// The warm-up removal's first pass: every sample's values into block means, then the fits.
+pipeline::AllanWarmUp fit_warm_up_first(OpenBag& bag, const std::string& topic, pipeline::AllanInput input,
+                                        const pipeline::AllanWarmUpOptions& options) {
+  thermal::WarmUpBlockMeans blocks(pipeline::kAllanChannelCount, options.block_s);
+  for_each_sample(bag, topic, input,
+                  [&](const pipeline::AllanSample& sample) { blocks.push(sample.stamp_ns, sample.values.data()); });
+  return pipeline::fit_allan_warm_up(blocks, options);
 }
 
 }  // namespace
@@ -74,6 +93,10 @@ AllanBagPassResult run_allan_bag_pass(const BagRecording& recording, const Allan
   screen_options.gap_factor = result.engine.gap_factor;
   allan::ImpulseScreen screen(screen_options);
   allan::OutputStepDetector steps(pipeline::kAllanChannelCount);
+  if (options.warm_up.enabled) {
+    pipeline::check_warm_up_options(options.warm_up);
+    result.warm_up = fit_warm_up_first(bag, result.topic, options.input, options.warm_up);
+  }
 
   BoundedQueue<SampleBatch> queue(kQueuedBatches);
   std::exception_ptr reader_error;
@@ -96,8 +119,9 @@ AllanBagPassResult run_allan_bag_pass(const BagRecording& recording, const Allan
   };
   try {
     while (std::optional<SampleBatch> batch = queue.pop()) {
-      for (const pipeline::AllanSample& sample : *batch) {
+      for (pipeline::AllanSample& sample : *batch) {
         steps.push(sample.values.data());
+        if (result.warm_up) result.warm_up->remove_from(sample);
         screen.push(sample.stamp_ns, sample.values.data(), passed);
       }
       push_passed();

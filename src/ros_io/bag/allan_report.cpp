@@ -16,7 +16,8 @@ std::vector<std::string> report_file_names() {
   for (const allan::Statistic statistic : allan::kStreamingStatistics) {
     names.push_back(std::string(allan::statistic_name(statistic)) + ".csv");
   }
-  for (const char* name : {"allan_summary.yaml", "allan.png", "noise.yaml", "kalibr_imu.yaml"}) names.push_back(name);
+  for (const char* name : {"allan_summary.yaml", "allan.png", "noise.yaml", "kalibr_imu.yaml", "warm_up.yaml"})
+    names.push_back(name);
   for (const char* channel : pipeline::kAllanChannelNames) names.push_back(pipeline::partial_curves_file_name(channel));
   return names;
 }
@@ -42,6 +43,10 @@ AllanReportFiles write_allan_report(const std::string& directory, const pipeline
     const std::string name = std::string(allan::statistic_name(statistic)) + ".csv";
     io::write_stability_csv(staging + "/" + name, channel_curves(snapshot, statistic));
     files.written.push_back(name);
+  }
+  if (run.warm_up) {
+    write_file_atomically(staging + "/warm_up.yaml", pipeline::format_warm_up_yaml(run.input, *run.warm_up, snapshot));
+    files.written.push_back("warm_up.yaml");
   }
   // After the curves (a failed fit keeps them) and before the plot (it draws the partial curves).
   files.noise = pipeline::write_allan_noise_report(staging, run, snapshot, identify);

@@ -3,11 +3,15 @@
 // samples (a bounded queue, so memory stays bounded for any bag length) while the calling thread
 // pushes them through the impulse screen (impulse_screen.h: knocks and spikes are recorded and
 // their samples dropped, so the engine splits the run there) into the streaming engine, and
-// watches every value for the output's step (output_step.h); nothing is written anywhere.
+// watches every value for the output's step (output_step.h); nothing is written anywhere. With
+// the warm-up removal on, a first pass over the bag fits each channel's warm-up transient
+// (pipeline/allan_warm_up.h) and the pass above sees the values with it subtracted (the output
+// step is watched on the values as read).
 #pragma once
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +19,7 @@
 #include "imu_lab/allan/output_step.h"
 #include "imu_lab/allan/streaming_allan.h"
 #include "imu_lab/pipeline/allan_samples.h"
+#include "imu_lab/pipeline/allan_warm_up.h"
 #include "imu_lab/ros_io/bag/imu_bag_reader.h"
 
 namespace imu_lab {
@@ -28,6 +33,7 @@ struct AllanBagPassOptions {
   allan::StreamingOptions engine;
   // channel_count and gap_factor are set from the engine's.
   allan::ImpulseScreenOptions screen;
+  pipeline::AllanWarmUpOptions warm_up;  // off by default
   // Called on the computing thread after each batch: messages processed and the topic's total.
   std::function<void(std::size_t processed, std::size_t total)> on_progress;
 };
@@ -48,6 +54,7 @@ struct AllanBagPassResult {
   allan::StreamingSnapshot snapshot;
   allan::ImpulseScreenReport impulses;                 // events found (and samples dropped) before the engine
   std::vector<allan::ChannelOutputStep> output_steps;  // per channel, over every message's values
+  std::optional<pipeline::AllanWarmUp> warm_up;        // the transients removed (warm_up.enabled only)
 };
 
 // `recording` is one bag or the split files of one, and the window to analyse (imu_bag_reader.h).
