@@ -119,13 +119,8 @@ std::vector<Eigen::Vector3d> monte_carlo_sum_of_squares(const emulator::Scenario
     settings.seed = 1000 + run;
     emulator::ImuEmulator imu(profile, scenario, settings);
     nav::Navigator navigator;
-    nav::NavState initial;
-    initial.q_body_to_enu = start.attitude_body_to_enu;
-    initial.velocity_enu_m_s = start.velocity_enu_m_s;
-    initial.latitude_rad = start.latitude_rad;
-    initial.longitude_rad = start.longitude_rad;
-    initial.height_m = start.height_m;
-    navigator.initialise(initial);
+    navigator.initialise({0.0, start.attitude_body_to_enu, start.velocity_enu_m_s, start.latitude_rad,
+                          start.longitude_rad, start.height_m});
     std::size_t next = 0;
     const long long samples = std::llround(kHorizon_s * kRateHz);
     for (long long k = 1; k <= samples && next < kCheckTimes_s.size(); ++k) {
