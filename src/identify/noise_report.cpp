@@ -297,7 +297,10 @@ std::vector<ReportedAxisModel> read_reported_axis_models(const std::string& yaml
   read_noise_report_values(yaml_text);  // the format check
   const YAML::Node root = YAML::Load(yaml_text);
   const std::string triad_key = "triads." + sensor_prefix(sensor);
-  const YAML::Node axes = root["triads"][sensor_prefix(sensor)]["axes"];
+  // Step by step: indexing a missing node again throws yaml-cpp's own error.
+  const YAML::Node triads = root["triads"];
+  const YAML::Node triad = triads && triads.IsMap() ? triads[sensor_prefix(sensor)] : YAML::Node();
+  const YAML::Node axes = triad && triad.IsMap() ? triad["axes"] : YAML::Node();
   if (!axes || !axes.IsMap()) throw InputError("noise report: no " + triad_key + ".axes (was that triad identified?)");
   std::vector<ReportedAxisModel> models;
   for (int axis = 0; axis < 3; ++axis) {
@@ -312,6 +315,7 @@ std::vector<ReportedAxisModel> read_reported_axis_models(const std::string& yaml
     for (const auto& entry : terms) {
       const std::string name = entry.first.as<std::string>();
       const std::string term_key = axis_key + ".terms." + name;
+      if (!entry.second.IsMap()) throw InputError("noise report: " + term_key + " is not a map");
       const YAML::Node status = entry.second["status"];
       if (!status || !status.IsScalar()) throw InputError("noise report: no " + term_key + ".status");
       if (status.as<std::string>() != "present") continue;
@@ -334,8 +338,9 @@ std::vector<ReportedAxisModel> read_reported_axis_models(const std::string& yaml
       }
       reported.model.terms.push_back(term);
     }
-    const YAML::Node front_end = node["front_end"];
-    if (front_end && front_end["low_pass"] && front_end["low_pass"].as<std::string>() != "none") {
+    const YAML::Node front_end = node["front_end"] && node["front_end"].IsMap() ? node["front_end"] : YAML::Node();
+    const YAML::Node low_pass = front_end ? front_end["low_pass"] : YAML::Node();
+    if (low_pass && low_pass.IsScalar() && low_pass.as<std::string>() != "none") {
       const std::string corner =
           parameter_key(shape_symbol(TermKind::kWhiteRate), shape_units(TermKind::kWhiteRate)[0].key);
       const double corner_hz = reported_number(front_end[corner], axis_key + ".front_end." + corner);
