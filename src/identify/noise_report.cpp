@@ -271,13 +271,115 @@ std::map<std::string, double> read_noise_report_values(const std::string& yaml_t
   return values;
 }
 
-std::map<std::string, double> read_noise_report_file(const std::string& path) {
+namespace {
+
+std::string report_file_text(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError("cannot read noise report " + path);
   std::ostringstream text;
   text << in.rdbuf();
+  return text.str();
+}
+
+// A finite number at `node`, or InputError naming the dotted key.
+double reported_number(const YAML::Node& node, const std::string& key) {
+  double value = 0.0;
+  if (!node || !node.IsScalar() || !YAML::convert<double>::decode(node, value) || !std::isfinite(value)) {
+    throw InputError("noise report: " + key + " is missing or not a finite number");
+  }
+  return value;
+}
+
+// "markov_2" -> markov: report names number the kinds that can repeat (term_names).
+TermKind reported_kind(const std::string& name) {
+  std::string kind = name;
+  const std::size_t underscore = kind.rfind('_');
+  if (underscore != std::string::npos && underscore + 1 < kind.size() &&
+      kind.find_first_not_of("0123456789", underscore + 1) == std::string::npos) {
+    kind.resize(underscore);
+  }
+  return term_kind_from_name(kind);
+}
+}  // namespace
+
+std::vector<ReportedAxisModel> read_reported_axis_models(const std::string& yaml_text, SensorKind sensor) {
+  read_noise_report_values(yaml_text);  // the format check
+  const YAML::Node root = YAML::Load(yaml_text);
+  const std::string triad_key = "triads." + sensor_prefix(sensor);
+  // Step by step: indexing a missing node again throws yaml-cpp's own error.
+  const YAML::Node triads = root["triads"];
+  const YAML::Node triad = triads && triads.IsMap() ? triads[sensor_prefix(sensor)] : YAML::Node();
+  const YAML::Node axes = triad && triad.IsMap() ? triad["axes"] : YAML::Node();
+  if (!axes || !axes.IsMap()) throw InputError("noise report: no " + triad_key + ".axes (was that triad identified?)");
+  std::vector<ReportedAxisModel> models;
+  for (int axis = 0; axis < 3; ++axis) {
+    ReportedAxisModel reported;
+    reported.axis = axis_name(sensor, axis);
+    const std::string axis_key = triad_key + ".axes." + reported.axis;
+    const YAML::Node node = axes[reported.axis];
+    if (!node || !node.IsMap()) throw InputError("noise report: no " + axis_key);
+    reported.tau0_s = reported_number(node["tau0_s"], axis_key + ".tau0_s");
+    const YAML::Node terms = node["terms"];
+    if (!terms || !terms.IsMap()) throw InputError("noise report: no " + axis_key + ".terms");
+    for (const auto& entry : terms) {
+      const std::string name = entry.first.as<std::string>();
+      const std::string term_key = axis_key + ".terms." + name;
+      if (!entry.second.IsMap()) throw InputError("noise report: " + term_key + " is not a map");
+      const YAML::Node status = entry.second["status"];
+      if (!status || !status.IsScalar()) throw InputError("noise report: no " + term_key + ".status");
+      if (status.as<std::string>() != "present") continue;
+      Term term;
+      try {
+        term.kind = reported_kind(name);
+      } catch (const std::invalid_argument&) {
+        throw InputError("noise report: " + term_key + " is not a term imu_lab knows");
+      }
+      const std::string amplitude =
+          parameter_key(amplitude_symbol(term.kind), amplitude_units(sensor, term.kind)[0].key);
+      term.amplitude = reported_number(entry.second[amplitude], term_key + "." + amplitude);
+      if (has_shape(term.kind) && term.kind != TermKind::kWhiteRate) {
+        const std::string shape = parameter_key(shape_symbol(term.kind), shape_units(term.kind)[0].key);
+        term.shape = reported_number(entry.second[shape], term_key + "." + shape);
+      }
+      if (!width_symbol(term.kind).empty()) {
+        const std::string width = parameter_key(width_symbol(term.kind), shape_units(term.kind)[0].key);
+        term.width = reported_number(entry.second[width], term_key + "." + width);
+      }
+      reported.model.terms.push_back(term);
+    }
+    const YAML::Node front_end = node["front_end"] && node["front_end"].IsMap() ? node["front_end"] : YAML::Node();
+    const YAML::Node low_pass = front_end ? front_end["low_pass"] : YAML::Node();
+    if (low_pass && low_pass.IsScalar() && low_pass.as<std::string>() != "none") {
+      const std::string corner =
+          parameter_key(shape_symbol(TermKind::kWhiteRate), shape_units(TermKind::kWhiteRate)[0].key);
+      const double corner_hz = reported_number(front_end[corner], axis_key + ".front_end." + corner);
+      for (Term& term : reported.model.terms) {
+        if (term.kind == TermKind::kWhiteRate) term.shape = corner_hz;
+      }
+    }
+    const std::string step_key = "output_quantization_step_" + rate_unit_key(sensor);
+    if (front_end && front_end[step_key]) {
+      const double step = reported_number(front_end[step_key], axis_key + ".front_end." + step_key);
+      reported.model.output_quantization_density = step * std::sqrt(reported.tau0_s / 12.0);
+    }
+    models.push_back(reported);
+  }
+  return models;
+}
+
+std::map<std::string, double> read_noise_report_file(const std::string& path) {
+  const std::string text = report_file_text(path);
   try {
-    return read_noise_report_values(text.str());
+    return read_noise_report_values(text);
+  } catch (const InputError& error) {
+    throw InputError(path + ": " + error.what());
+  }
+}
+
+std::vector<ReportedAxisModel> load_reported_axis_models(const std::string& path, SensorKind sensor) {
+  const std::string text = report_file_text(path);
+  try {
+    return read_reported_axis_models(text, sensor);
   } catch (const InputError& error) {
     throw InputError(path + ": " + error.what());
   }

@@ -72,6 +72,43 @@ TEST(IdentifyReport, NumbersRoundTripThroughTheYaml) {
   EXPECT_THROW(read_noise_report_values("a: 1"), InputError);
 }
 
+// What the attitude error budget reads back: each axis's present terms with their SI values and
+// tau0; absent terms left out; a missing value named by its dotted key.
+TEST(IdentifyReport, AxisModelsReadBackThePresentTerms) {
+  const TriadFit triad = exact_triad(SensorKind::kGyroscope, 1e-4, 1e-6);
+  const std::string text = format_noise_report({triad}, {"test", 100.0});
+  const auto axes = read_reported_axis_models(text, SensorKind::kGyroscope);
+  ASSERT_EQ(axes.size(), 3u);
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_EQ(axes[axis].axis, axis_name(SensorKind::kGyroscope, axis));
+    EXPECT_DOUBLE_EQ(axes[axis].tau0_s, triad.axes[axis].tau0_s);
+    std::vector<Term> present;
+    for (const TermEstimate& term : triad.axes[axis].terms) {
+      if (term.status == TermStatus::kPresent) present.push_back({term.kind, term.amplitude.value, 0.0});
+    }
+    ASSERT_EQ(axes[axis].model.terms.size(), present.size()) << axis;
+    for (const Term& expected : present) {
+      const auto found = std::find_if(axes[axis].model.terms.begin(), axes[axis].model.terms.end(),
+                                      [&](const Term& term) { return term.kind == expected.kind; });
+      ASSERT_NE(found, axes[axis].model.terms.end()) << term_kind_name(expected.kind);
+      EXPECT_NEAR(found->amplitude, expected.amplitude, 1e-15 * expected.amplitude);
+    }
+  }
+  EXPECT_THROW(read_reported_axis_models(text, SensorKind::kAccelerometer), InputError);
+  std::string cut = text;
+  const std::size_t at = cut.find("N_rad_s_per_sqrt_hz:");
+  ASSERT_NE(at, std::string::npos);
+  cut.replace(at, 1, "X");
+  try {
+    read_reported_axis_models(cut, SensorKind::kGyroscope);
+    ADD_FAILURE() << "a report without gyro_x's N was read";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("triads.gyro.axes.gyro_x.terms.white_rate.N_rad_s_per_sqrt_hz"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
 TEST(IdentifyReport, WrittenAtomicallyToAFile) {
   const std::vector<TriadFit> triads = {exact_triad(SensorKind::kGyroscope, 1e-4, 1e-6)};
   const std::string path = testing::TempDir() + "identify_report_test.yaml";

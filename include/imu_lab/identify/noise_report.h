@@ -47,5 +47,20 @@ std::map<std::string, double> read_noise_report_values(const std::string& yaml_t
 // The same from a file; InputError names the file when it cannot be read or is not a report.
 std::map<std::string, double> read_noise_report_file(const std::string& path);
 
+// One axis's identified model as a report gives it: the terms with status "present" (absent and
+// unconstrained terms carry bounds only and are left out), the front end's fitted or given
+// low-pass as the white rate's shape, the output quantization step as its white density
+// (step sqrt(tau0 / 12)), and the axis's tau0.
+struct ReportedAxisModel {
+  std::string axis;  // "gyro_x", ...
+  NoiseModel model;
+  double tau0_s = 0.0;
+};
+// The three axes of `sensor`'s triad. Throws InputError naming the dotted key that is missing or
+// not a number, or the triad when the report has none.
+std::vector<ReportedAxisModel> read_reported_axis_models(const std::string& yaml_text, SensorKind sensor);
+// The same from a file; every InputError names it.
+std::vector<ReportedAxisModel> load_reported_axis_models(const std::string& path, SensorKind sensor);
+
 }  // namespace identify
 }  // namespace imu_lab
