@@ -1,5 +1,6 @@
 #include "imu_lab/identify/profile_likelihood.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -22,36 +23,78 @@ void append_negligible_slot(const std::vector<FitPoint>& points, const TermSlot&
   log_parameters->push_back(std::log(kNegligibleFraction * envelope));
 }
 
+namespace {
+
+// One profile climb: the amplitude at slot_index raised from its start value in doubling steps
+// until the distance exceeds the best fit's by the critical value, then the last doubling
+// bisected. Each evaluation starts from the last one that stayed below the critical value.
+class ProfileClimb {
+ public:
+  ProfileClimb(const std::vector<FitPoint>& points, const ModelStructure& structure,
+               const std::vector<double>& log_parameters, double best_cost, int slot_index, const DataSpan& span,
+               const MomentWeights& weights, double confidence)
+      : points_(points),
+        structure_(structure),
+        span_(span),
+        weights_(weights),
+        best_cost_(best_cost),
+        // cost = J / 2
+        critical_(0.5 * chi_squared_quantile(2.0 * confidence - 1.0, 1.0)),
+        amplitude_index_(parameter_offset(structure, slot_index)),
+        current_(log_parameters),
+        low_(log_parameters[amplitude_index_]),
+        high_(low_) {}
+
+  // Doubling steps up from the start until the critical value is crossed (at most 80).
+  void bracket() {
+    for (int step = 0; step < 80; ++step) {
+      high_ = low_ + std::log(2.0);
+      if (excess_at(high_) >= critical_) break;
+      low_ = high_;
+    }
+  }
+  void bisect() {
+    const double middle = 0.5 * (low_ + high_);
+    if (excess_at(middle) >= critical_) {
+      high_ = middle;
+    } else {
+      low_ = middle;
+    }
+  }
+  // The bound lies in (low, high]; high is reported.
+  double low() const { return low_; }
+  double high() const { return high_; }
+
+ private:
+  double excess_at(double log_amplitude) {
+    std::vector<double> start = current_;
+    start[amplitude_index_] = log_amplitude;
+    const SolveOutcome outcome = solve_model(points_, structure_, start, span_, weights_, {amplitude_index_});
+    if (outcome.usable && outcome.cost < best_cost_ + critical_) current_ = outcome.log_parameters;
+    return outcome.usable ? outcome.cost - best_cost_ : critical_ + 1.0;
+  }
+
+  const std::vector<FitPoint>& points_;
+  ModelStructure structure_;
+  const DataSpan& span_;
+  const MomentWeights& weights_;
+  double best_cost_;
+  double critical_;
+  int amplitude_index_;
+  std::vector<double> current_;
+  double low_;
+  double high_;
+};
+
+}  // namespace
+
 double profile_upper_bound(const std::vector<FitPoint>& points, const ModelStructure& structure,
                            const std::vector<double>& log_parameters, double best_cost, int slot_index,
                            const DataSpan& span, const MomentWeights& weights, double confidence, int bisections) {
-  const int amplitude_index = parameter_offset(structure, slot_index);
-  // cost = J / 2
-  const double critical = 0.5 * chi_squared_quantile(2.0 * confidence - 1.0, 1.0);
-  std::vector<double> current = log_parameters;
-  const auto excess_at = [&](double log_amplitude) {
-    std::vector<double> start = current;
-    start[amplitude_index] = log_amplitude;
-    const SolveOutcome outcome = solve_model(points, structure, start, span, weights, {amplitude_index});
-    if (outcome.usable && outcome.cost < best_cost + critical) current = outcome.log_parameters;
-    return outcome.usable ? outcome.cost - best_cost : critical + 1.0;
-  };
-  double low = log_parameters[amplitude_index];
-  double high = low;
-  for (int step = 0; step < 80; ++step) {  // bracket: doubling steps up from the estimate
-    high = low + std::log(2.0);
-    if (excess_at(high) >= critical) break;
-    low = high;
-  }
-  for (int iteration = 0; iteration < bisections; ++iteration) {
-    const double middle = 0.5 * (low + high);
-    if (excess_at(middle) >= critical) {
-      high = middle;
-    } else {
-      low = middle;
-    }
-  }
-  return std::exp(high);
+  ProfileClimb climb(points, structure, log_parameters, best_cost, slot_index, span, weights, confidence);
+  climb.bracket();
+  for (int iteration = 0; iteration < bisections; ++iteration) climb.bisect();
+  return std::exp(climb.high());
 }
 
 double shaped_profile_upper_bound(const std::vector<FitPoint>& points, const ModelStructure& structure,
@@ -59,8 +102,7 @@ double shaped_profile_upper_bound(const std::vector<FitPoint>& points, const Mod
                                   const std::vector<Term>& start_shapes, const DataSpan& span,
                                   const MomentWeights& weights, double confidence) {
   constexpr double kStartFraction = 0.01;  // of the envelope: 1e-4 of the AVAR it could reach
-  constexpr int kBisections = 7;           // 2^(1/128): under 1 % in amplitude
-  double bound = std::numeric_limits<double>::quiet_NaN();
+  std::vector<ProfileClimb> climbs;
   for (const Term& shape : start_shapes) {
     const double envelope = envelope_amplitude(shape, points);
     if (!(envelope > 0.0) || !std::isfinite(envelope)) continue;
@@ -70,12 +112,30 @@ double shaped_profile_upper_bound(const std::vector<FitPoint>& points, const Mod
     start.push_back(std::log(kStartFraction * envelope));
     start.push_back(std::log(shape.shape));
     if (shape.kind == TermKind::kResonance) start.push_back(std::log(shape.width / shape.shape));
-    const double at_start =
-        profile_upper_bound(points, extended, start, best_cost, static_cast<int>(extended.slots.size()) - 1, span,
-                            weights, confidence, kBisections);
-    if (!(at_start <= bound)) bound = at_start;
+    climbs.emplace_back(points, extended, start, best_cost, static_cast<int>(extended.slots.size()) - 1, span, weights,
+                        confidence);
+    climbs.back().bracket();
   }
-  return bound;
+  if (climbs.empty()) return std::numeric_limits<double>::quiet_NaN();
+  // The largest of the climbs' bounds. A climb whose bracket ends at or below another's lower end
+  // cannot hold it (its bound <= its high <= the other's low < the other's bound), so it is not
+  // bisected further: the result equals bisecting every climb, at a fraction of the solves.
+  std::vector<ProfileClimb*> contenders;
+  for (ProfileClimb& climb : climbs) contenders.push_back(&climb);
+  const auto drop_outclassed = [&] {
+    double highest_low = -std::numeric_limits<double>::infinity();
+    for (const ProfileClimb* climb : contenders) highest_low = std::max(highest_low, climb->low());
+    contenders.erase(std::remove_if(contenders.begin(), contenders.end(),
+                                    [&](const ProfileClimb* climb) { return climb->high() <= highest_low; }),
+                     contenders.end());
+  };
+  for (int iteration = 0; iteration < kBoundBisections; ++iteration) {
+    drop_outclassed();
+    for (ProfileClimb* climb : contenders) climb->bisect();
+  }
+  double bound = -std::numeric_limits<double>::infinity();
+  for (const ProfileClimb* climb : contenders) bound = std::max(bound, climb->high());
+  return std::exp(bound);
 }
 
 }  // namespace identify

@@ -12,17 +12,23 @@
 namespace imu_lab {
 namespace identify {
 
+// Bisections of the bracket (one doubling of the amplitude) a bound gets: 2^(1/128), under 1 %
+// in amplitude. The bracket's upper end is reported, so a bound errs on the safe side.
+constexpr int kBoundBisections = 7;
+
 // slot_index's amplitude bound for the fitted (structure, log_parameters, best_cost). For an
 // absent term, first append its slot with a negligible amplitude (append_negligible_slot).
-// `bisections` halve the bracket (one doubling of the amplitude) that many times.
+// `bisections` halve the bracket that many times.
 double profile_upper_bound(const std::vector<FitPoint>& points, const ModelStructure& structure,
                            const std::vector<double>& log_parameters, double best_cost, int slot_index,
-                           const DataSpan& span, const MomentWeights& weights, double confidence, int bisections = 25);
+                           const DataSpan& span, const MomentWeights& weights, double confidence,
+                           int bisections = kBoundBisections);
 
 // Bound of an absent term whose shape the data would have to choose (Markov, sinusoid,
 // resonance): its slot is appended with a free shape at each start (unit-amplitude terms), at
 // 1 % of its envelope there, and profiled with the shape free, so the amplitude climbs wherever
-// the shape lets it fit best; the largest bound over the starts (to 1 % in amplitude).
+// the shape lets it fit best; the largest bound over the starts (to 1 % in amplitude). Only the
+// climbs that can still hold the largest bound are bisected; the result is the same.
 double shaped_profile_upper_bound(const std::vector<FitPoint>& points, const ModelStructure& structure,
                                   const std::vector<double>& log_parameters, double best_cost,
                                   const std::vector<Term>& start_shapes, const DataSpan& span,
