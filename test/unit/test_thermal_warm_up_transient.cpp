@@ -73,7 +73,7 @@ EmulatedRun emulate(const std::string& scenario_file, std::uint64_t seed, double
       values[axis + 3] = sample.specific_force_m_s2[axis];
     }
     for (int c = 0; c < 6; ++c) run.rates[c].push_back(values[c]);
-    run.blocks.push(std::llround(sample.stamp_s * 1e9), values.data());
+    run.blocks.push(sample.stamp_ns, values.data());
   }
   return run;
 }
