@@ -9,6 +9,7 @@
 
 #include "calibration_residuals.h"
 #include "imu_lab/calib/observability.h"
+#include "imu_lab/common/ceres_solver_options.h"
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/fit_quality.h"
 #include "imu_lab/common/stamps.h"
@@ -259,13 +260,7 @@ CalibrationResult calibrate(const std::vector<io::ImuRecord>& samples, const Cal
   const Observability before = analyse_observability(weighted_jacobian(problem, free_blocks), column_names);
   if (!before.unobservable.empty()) throw InputError(describe_unobservable(before.unobservable));
 
-  ceres::Solver::Options solver_options;
-  solver_options.linear_solver_type = ceres::DENSE_QR;
-  solver_options.max_num_iterations = 100;
-  solver_options.function_tolerance = 1e-14;
-  solver_options.gradient_tolerance = 1e-14;
-  solver_options.parameter_tolerance = 1e-12;
-  solver_options.num_threads = 1;
+  const ceres::Solver::Options solver_options = small_fit_solver_options({100, 1e-14, 1e-14, 1e-12});
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, &problem, &summary);
   result.solver_report = summary.BriefReport();

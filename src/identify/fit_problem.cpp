@@ -10,6 +10,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "imu_lab/common/ceres_solver_options.h"
 #include "imu_lab/noise/analytic_avar.h"
 
 namespace imu_lab {
@@ -244,14 +245,7 @@ SolveOutcome solve_model(const std::vector<FitPoint>& points, const ModelStructu
   if (!held_fixed.empty()) {
     problem.SetManifold(parameters.data(), new ceres::SubsetManifold(static_cast<int>(parameters.size()), held_fixed));
   }
-  ceres::Solver::Options options;
-  options.linear_solver_type = ceres::DENSE_QR;
-  options.max_num_iterations = 100;
-  options.function_tolerance = 1e-10;
-  options.gradient_tolerance = 1e-12;
-  options.parameter_tolerance = 1e-10;
-  options.logging_type = ceres::SILENT;
-  options.num_threads = 1;
+  const ceres::Solver::Options options = small_fit_solver_options({100, 1e-10, 1e-12, 1e-10});
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
   outcome.log_parameters = parameters;

@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "imu_lab/common/ceres_solver_options.h"
+
 namespace imu_lab {
 namespace thermal {
 namespace {
@@ -162,14 +164,7 @@ class WarmUpFitter {
       problem.SetParameterLowerBound(solution.parameters.data(), 2 + 2 * k, lowest_s_);
       problem.SetParameterUpperBound(solution.parameters.data(), 2 + 2 * k, highest_s_);
     }
-    ceres::Solver::Options solver;
-    solver.linear_solver_type = ceres::DENSE_QR;
-    solver.max_num_iterations = 200;
-    solver.function_tolerance = 1e-12;
-    solver.gradient_tolerance = 1e-14;
-    solver.parameter_tolerance = 1e-12;
-    solver.logging_type = ceres::SILENT;
-    solver.num_threads = 1;
+    const ceres::Solver::Options solver = small_fit_solver_options({200, 1e-12, 1e-14, 1e-12});
     ceres::Solver::Summary summary;
     ceres::Solve(solver, &problem, &summary);
     solution.residual_sum_of_squares = 2.0 * summary.final_cost;

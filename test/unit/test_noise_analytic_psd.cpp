@@ -50,19 +50,10 @@ double tail(double psd_scale, double mean_of_kernel_product, double tau_s, doubl
   return 4.0 * psd_scale * mean_of_kernel_product / (kPi * kPi * tau_s * tau_s * f_max_hz);
 }
 
-Term term(TermKind kind, double amplitude, double shape = 0.0, double width = 0.0) {
-  Term t;
-  t.kind = kind;
-  t.amplitude = amplitude;
-  t.shape = shape;
-  t.width = width;
-  return t;
-}
-
 TEST(NoiseAnalyticPsd, WhiteRateAndQuantizationIntegrateToTheirAvar) {
   const double tau0 = 0.01;
-  const Term white = term(TermKind::kWhiteRate, 2e-4);
-  const Term angle = term(TermKind::kWhiteAngle, 3e-6);
+  const Term white = Term{TermKind::kWhiteRate, 2e-4};
+  const Term angle = Term{TermKind::kWhiteAngle, 3e-6};
   for (int m : {1, 2, 5, 40}) {
     const double tau = m * tau0, f_max = 200.0 / tau0;
     auto psd = [&](const Term& t) { return [&t, tau0](double f) { return term_psd(t, f, tau0); }; };
@@ -83,13 +74,13 @@ TEST(NoiseAnalyticPsd, EveryColouredTermIntegratesToItsAvar) {
     std::vector<double> break_points_hz;
   };
   const std::vector<Case> cases = {
-      {term(TermKind::kWhiteRate, 2e-4, 30.0), 3e6, {}},       // behind a 30 Hz front end
-      {term(TermKind::kBiasInstability, 5e-5, 2.0), 2.0, {}},  // zero above f0: the integral ends there
-      {term(TermKind::kBiasInstability, 5e-5, 0.05), 0.05, {}},
-      {term(TermKind::kRandomWalk, 1e-5), 1e4, {}},
-      {term(TermKind::kMarkov, 3e-4, 0.7), 3e5, {}},
-      {term(TermKind::kZeroDcFamily, 1e-3, 0.2), 400.0, {}},
-      {term(TermKind::kResonance, 2e-3, 20.0, 1.5), 3e5, {}},
+      {Term{TermKind::kWhiteRate, 2e-4, 30.0}, 3e6, {}},       // behind a 30 Hz front end
+      {Term{TermKind::kBiasInstability, 5e-5, 2.0}, 2.0, {}},  // zero above f0: the integral ends there
+      {Term{TermKind::kBiasInstability, 5e-5, 0.05}, 0.05, {}},
+      {Term{TermKind::kRandomWalk, 1e-5}, 1e4, {}},
+      {Term{TermKind::kMarkov, 3e-4, 0.7}, 3e5, {}},
+      {Term{TermKind::kZeroDcFamily, 1e-3, 0.2}, 400.0, {}},
+      {Term{TermKind::kResonance, 2e-3, 20.0, 1.5}, 3e5, {}},
   };
   for (const Case& c : cases) {
     std::vector<double> breaks = c.break_points_hz;
@@ -111,20 +102,20 @@ TEST(NoiseAnalyticPsd, EveryColouredTermIntegratesToItsAvar) {
 
 TEST(NoiseAnalyticPsd, SinusoidLinesAndRampHaveNoDensity) {
   // Two lines of Omega0^2 / 4 at +-f0 in eq. (1): 4 (Omega0^2 / 4) sin^4(pi f0 tau) / (pi f0 tau)^2.
-  const Term line = term(TermKind::kSinusoid, 1e-3, 0.56);
+  const Term line = Term{TermKind::kSinusoid, 1e-3, 0.56};
   for (double tau : {0.01, 0.3, 1.0, 7.0}) {
     const double x = kPi * line.shape * tau, s = std::sin(x);
     EXPECT_NEAR(4.0 * noise::sinusoid_line_power(line.amplitude) * s * s * s * s / (x * x) / term_avar(line, tau), 1.0,
                 1e-12);
   }
   EXPECT_EQ(term_psd(line, 0.56, 0.01), 0.0);
-  EXPECT_EQ(term_psd(term(TermKind::kRateRamp, 1e-6), 0.01, 0.01), 0.0);
-  EXPECT_EQ(sampled_term_psd(term(TermKind::kRateRamp, 1e-6), 0.01, 0.01), 0.0);
+  EXPECT_EQ(term_psd(Term{TermKind::kRateRamp, 1e-6}, 0.01, 0.01), 0.0);
+  EXPECT_EQ(sampled_term_psd(Term{TermKind::kRateRamp, 1e-6}, 0.01, 0.01), 0.0);
 }
 
 TEST(NoiseAnalyticPsd, ModelIsTheSumOfItsTermsAndTheOutputQuantization) {
   NoiseModel model;
-  model.terms = {term(TermKind::kWhiteRate, 2e-4, 30.0), term(TermKind::kRandomWalk, 1e-5)};
+  model.terms = {Term{TermKind::kWhiteRate, 2e-4, 30.0}, Term{TermKind::kRandomWalk, 1e-5}};
   model.output_quantization_density = 1e-4;
   const double tau0 = 0.01, f = 3.0;
   EXPECT_DOUBLE_EQ(model_psd(model, f, tau0),
@@ -148,7 +139,7 @@ double averaged_markov_sequence_psd(double q_c, double t_c, double tau0, double 
 TEST(NoiseAnalyticPsd, SampledPsdFoldsTheAveragedAliases) {
   const double tau0 = 0.01;
   for (double t_c : {0.002, 0.0053, 0.05, 1.0}) {  // corners above, near and below Nyquist
-    const Term markov = term(TermKind::kMarkov, 3e-4, t_c);
+    const Term markov = Term{TermKind::kMarkov, 3e-4, t_c};
     for (double f : {0.01, 1.0, 17.0, 31.0, 49.0, 50.0}) {
       const double exact = averaged_markov_sequence_psd(3e-4 / t_c, t_c, tau0, f);
       // The alias sum's tail beyond 256 / tau0 is below 2 S(256 / tau0) / (pi^2 256) ~ 1e-9 relative here.
@@ -158,7 +149,7 @@ TEST(NoiseAnalyticPsd, SampledPsdFoldsTheAveragedAliases) {
   // White noise: the sinc^2 aliases sum to 1, so the flat density is its own sampled PSD.
   const double white = noise::interval_averaged_psd([](double) { return 1.0; }, 37.0, tau0, 20000);
   EXPECT_NEAR(white, 1.0, 2.0 / (kPi * kPi * 20000));
-  EXPECT_EQ(sampled_term_psd(term(TermKind::kWhiteRate, 2e-4), 37.0, tau0), 4e-8);
+  EXPECT_EQ(sampled_term_psd(Term{TermKind::kWhiteRate, 2e-4}, 37.0, tau0), 4e-8);
 }
 
 }  // namespace

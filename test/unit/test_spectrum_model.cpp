@@ -22,15 +22,6 @@ namespace {
 constexpr double kTau0S = 0.01;
 constexpr std::size_t kSegment = 1024;
 
-identify::Term term(identify::TermKind kind, double amplitude, double shape = 0.0, double width = 0.0) {
-  identify::Term t;
-  t.kind = kind;
-  t.amplitude = amplitude;
-  t.shape = shape;
-  t.width = width;
-  return t;
-}
-
 struct Comparison {
   std::size_t bins = 0, outside = 0;
   std::string first_outside;
@@ -74,16 +65,18 @@ void expect_band_mean(const PowerSpectrum& estimate, const std::vector<double>& 
 // the output's rounding. B: a 20 Hz resonance on a zero-DC family over white noise.
 identify::NoiseModel model_a() {
   identify::NoiseModel model;
-  model.terms = {term(identify::TermKind::kWhiteRate, 2e-4, 30.0), term(identify::TermKind::kRandomWalk, 2e-3),
-                 term(identify::TermKind::kMarkov, 5e-4, 0.2)};
+  model.terms = {identify::Term{identify::TermKind::kWhiteRate, 2e-4, 30.0},
+                 identify::Term{identify::TermKind::kRandomWalk, 2e-3},
+                 identify::Term{identify::TermKind::kMarkov, 5e-4, 0.2}};
   model.output_quantization_density = 5e-5;
   return model;
 }
 
 identify::NoiseModel model_b() {
   identify::NoiseModel model;
-  model.terms = {term(identify::TermKind::kWhiteRate, 1e-4), term(identify::TermKind::kResonance, 2e-3, 20.0, 1.5),
-                 term(identify::TermKind::kZeroDcFamily, 1e-4, 0.1)};
+  model.terms = {identify::Term{identify::TermKind::kWhiteRate, 1e-4},
+                 identify::Term{identify::TermKind::kResonance, 2e-3, 20.0, 1.5},
+                 identify::Term{identify::TermKind::kZeroDcFamily, 1e-4, 0.1}};
   return model;
 }
 
@@ -124,7 +117,8 @@ TEST(SpectrumModel, FlickerFollowsTheEmulatorsBank) {
   // its poles beyond the cutoff add power that eq. 5.3's sharp cutoff lacks (here 55 % over the
   // white floor from 10 to 50 Hz), so the comparison stops at f0 (bin 102).
   identify::NoiseModel model;
-  model.terms = {term(identify::TermKind::kWhiteRate, 1e-4), term(identify::TermKind::kBiasInstability, 1e-3, 10.0)};
+  model.terms = {identify::Term{identify::TermKind::kWhiteRate, 1e-4},
+                 identify::Term{identify::TermKind::kBiasInstability, 1e-3, 10.0}};
   const std::vector<double> rates = identify::simulate_rates(model, kTau0S, 200 * kSegment, 12);
   const PowerSpectrum estimate = welch_psd(rates, kTau0S, {kSegment});
   const std::vector<double> density = model_density(model, estimate, kTau0S);
@@ -138,7 +132,8 @@ TEST(SpectrumModel, SinusoidReadsItsPowerOverTheWindowsBandwidthAtItsBin) {
   identify::NoiseModel model;
   // 7.8125 Hz = bin 80 of 1024 samples at 100 Hz: a line at a bin centre.
   const double line_hz = 80.0 / (kSegment * kTau0S), amplitude = 2e-3;
-  model.terms = {term(identify::TermKind::kWhiteRate, 1e-4), term(identify::TermKind::kSinusoid, amplitude, line_hz)};
+  model.terms = {identify::Term{identify::TermKind::kWhiteRate, 1e-4},
+                 identify::Term{identify::TermKind::kSinusoid, amplitude, line_hz}};
   const std::vector<double> rates = identify::simulate_rates(model, kTau0S, 100 * kSegment, 13);
   const PowerSpectrum estimate = welch_psd(rates, kTau0S, {kSegment});
   EXPECT_NEAR(estimate.equivalent_noise_bandwidth_hz, 1.5 * estimate.resolution_hz, 1e-12);
@@ -162,7 +157,8 @@ TEST(SpectrumModel, SinusoidReadsItsPowerOverTheWindowsBandwidthAtItsBin) {
 
 TEST(SpectrumModel, RateRampIsLeftOut) {
   identify::NoiseModel model;
-  model.terms = {term(identify::TermKind::kWhiteRate, 1e-4), term(identify::TermKind::kRateRamp, 1e-5)};
+  model.terms = {identify::Term{identify::TermKind::kWhiteRate, 1e-4},
+                 identify::Term{identify::TermKind::kRateRamp, 1e-5}};
   const PowerSpectrum grid = welch_psd(std::vector<double>(64, 1.0), kTau0S, {16});
   const std::vector<double> density = model_density(model, grid, kTau0S);
   for (std::size_t bin = 1; bin < density.size(); ++bin) {
