@@ -127,7 +127,7 @@ std::vector<Eigen::Vector3d> monte_carlo_sum_of_squares(const emulator::Scenario
       const emulator::EmulatedSample sample = imu.next();
       const nav::NavState& state = navigator.update(sample.delta_angle_rad, sample.delta_velocity_m_s, 1.0 / kRateHz);
       if (k == std::llround(kCheckTimes_s[next] * kRateHz)) {
-        sums[next] += attitudeError_rad(state.q_body_to_enu, sample.truth.attitude_body_to_enu).cwiseAbs2();
+        sums[next] += attitudeError_rad(state.q_body_to_enu, sample.truth.q_body_to_enu).cwiseAbs2();
         ++next;
       }
     }
