@@ -143,6 +143,8 @@ double decay_time_s(const Term& term) {
   switch (term.kind) {
     case TermKind::kMarkov:
     case TermKind::kZeroDcFamily: return term.shape;
+    case TermKind::kZeroDcGaussian: return std::sqrt(term.shape);  // C(u) falls as exp(-pi^2 u^2 / beta)
+    case TermKind::kHighPassWhite: return 1.0 / (2.0 * kPi * term.shape);
     case TermKind::kWhiteRate: return term.shape > 0.0 ? 1.0 / (2.0 * kPi * term.shape) : 0.0;
     case TermKind::kResonance: return 1.0 / (kPi * term.width);
     default: return 0.0;
@@ -812,6 +814,12 @@ double term_structure_function(const Term& term, double lag_s, double tau0_s) {
       const std::complex<double> z(term.shape, -2.0 * kPi * u);
       return a2 / (kPi * kPi) * (1.0 / term.shape - (1.0 / z).real());
     }
+    case TermKind::kZeroDcGaussian:  // D(u) = 2 (C(0) - C(u)) of the stationary angle
+      return 2.0 * (noise::zero_dc_gaussian_angle_covariance(2.0, a2, term.shape, 0.0) -
+                    noise::zero_dc_gaussian_angle_covariance(2.0, a2, term.shape, u));
+    case TermKind::kHighPassWhite:
+      return 2.0 * (noise::high_pass_white_angle_covariance(a2, term.shape, 0.0) -
+                    noise::high_pass_white_angle_covariance(a2, term.shape, u));
     case TermKind::kResonance: {
       const double angle_sigma = term.amplitude / (2.0 * kPi * term.shape);
       return 2.0 * angle_sigma * angle_sigma * (1.0 - noise::resonance_angle_correlation(term.shape, term.width, u));

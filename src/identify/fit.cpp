@@ -239,9 +239,30 @@ void leave_out_one(TermKind kind, const NoiseModel& model, FitOptions* options) 
     case TermKind::kSinusoid: options->max_sinusoids = in_model - 1; break;
     case TermKind::kResonance: options->max_resonances = in_model - 1; break;
     case TermKind::kZeroDcFamily: options->allow_zero_dc_family = false; break;
+    case TermKind::kZeroDcGaussian: options->allow_zero_dc_gaussian = false; break;
+    case TermKind::kHighPassWhite: options->allow_high_pass_white = false; break;
   }
 }
 }  // namespace
+
+std::vector<std::string> zero_dc_term_names() {
+  return {term_kind_name(TermKind::kZeroDcFamily), term_kind_name(TermKind::kZeroDcGaussian),
+          term_kind_name(TermKind::kHighPassWhite)};
+}
+
+void allow_zero_dc_term(const std::string& term_name, FitOptions* options) {
+  if (term_name == term_kind_name(TermKind::kZeroDcFamily)) {
+    options->allow_zero_dc_family = true;
+  } else if (term_name == term_kind_name(TermKind::kZeroDcGaussian)) {
+    options->allow_zero_dc_gaussian = true;
+  } else if (term_name == term_kind_name(TermKind::kHighPassWhite)) {
+    options->allow_high_pass_white = true;
+  } else {
+    std::string known;
+    for (const std::string& name : zero_dc_term_names()) known += (known.empty() ? "" : ", ") + name;
+    throw std::invalid_argument("zero-at-DC term '" + term_name + "' is not one of " + known);
+  }
+}
 
 BandLimits band_limits(double measured_deviation, double edf) {
   const allan::DeviationBounds bounds =

@@ -208,7 +208,17 @@ void log_parameter_bounds(const ModelStructure& structure, const DataSpan& span,
         low = 0.1 / span.tau0_s;
         high = 5.0 / span.tau0_s;
         break;
-      default:  // zero-DC family beta
+      case TermKind::kHighPassWhite:
+        // Slower than the record, the high-pass is plain white noise; faster than the Nyquist
+        // frequency, it has removed all of it.
+        low = 1.0 / span.record_length_s;
+        high = nyquist_hz;
+        break;
+      case TermKind::kZeroDcGaussian:  // beta [s^2]: the PSD's peak at 1 / sqrt(beta) inside the band
+        low = span.tau0_s * span.tau0_s;
+        high = span.record_length_s * span.record_length_s;
+        break;
+      default:  // zero-DC family beta [s]
         low = span.tau0_s;
         high = span.record_length_s;
         break;

@@ -44,7 +44,7 @@ SolveOutcome best_of(const std::vector<FitPoint>& points, const ModelStructure& 
 
 bool is_extra_term(TermKind kind) {
   return kind == TermKind::kMarkov || kind == TermKind::kSinusoid || kind == TermKind::kZeroDcFamily ||
-         kind == TermKind::kResonance;
+         kind == TermKind::kResonance || kind == TermKind::kZeroDcGaussian || kind == TermKind::kHighPassWhite;
 }
 
 struct SelectionContext {
@@ -369,6 +369,8 @@ std::vector<TermSlot> candidate_slots(const FitOptions& options, const DataSpan&
   for (int i = 0; i < options.max_sinusoids; ++i) add(true, TermKind::kSinusoid);
   for (int i = 0; i < options.max_resonances; ++i) add(true, TermKind::kResonance);
   add(options.allow_zero_dc_family, TermKind::kZeroDcFamily);
+  add(options.allow_zero_dc_gaussian, TermKind::kZeroDcGaussian);
+  add(options.allow_high_pass_white, TermKind::kHighPassWhite);
   return slots;
 }
 

@@ -31,6 +31,8 @@ constexpr KindNames kKinds[] = {
     {TermKind::kSinusoid, "sinusoid", "Omega0", "f", ""},
     {TermKind::kZeroDcFamily, "zero_dc_family", "sqrt_alpha", "beta", ""},
     {TermKind::kResonance, "resonance", "rms", "f_n", "width"},
+    {TermKind::kZeroDcGaussian, "zero_dc_gaussian", "sqrt_alpha", "beta", ""},
+    {TermKind::kHighPassWhite, "high_pass_white", "sqrt_alpha", "beta", ""},
 };
 
 const KindNames& names_of(TermKind kind) {
@@ -94,6 +96,8 @@ double term_avar(const Term& term, double tau_s) {
     case TermKind::kSinusoid: return noise::sinusoid_avar(a, term.shape, tau_s);
     case TermKind::kZeroDcFamily: return noise::zero_dc_family_avar(2.0, a * a, term.shape, tau_s);
     case TermKind::kResonance: return noise::resonance_avar(a, term.shape, term.width, tau_s);
+    case TermKind::kZeroDcGaussian: return noise::zero_dc_gaussian_avar(2.0, a * a, term.shape, tau_s);
+    case TermKind::kHighPassWhite: return noise::high_pass_white_avar(a * a, term.shape, tau_s);
   }
   throw std::invalid_argument("unknown noise term kind");
 }
@@ -121,6 +125,8 @@ double term_psd(const Term& term, double frequency_hz, double tau0_s) {
     case TermKind::kSinusoid: return 0.0;
     case TermKind::kZeroDcFamily: return noise::zero_dc_family_psd(2.0, a * a, term.shape, frequency_hz);
     case TermKind::kResonance: return noise::resonance_psd(a, term.shape, term.width, frequency_hz);
+    case TermKind::kZeroDcGaussian: return noise::zero_dc_gaussian_psd(2.0, a * a, term.shape, frequency_hz);
+    case TermKind::kHighPassWhite: return noise::high_pass_white_psd(a * a, term.shape, frequency_hz);
   }
   throw std::invalid_argument("unknown noise term kind");
 }

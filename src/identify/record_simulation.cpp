@@ -40,6 +40,12 @@ std::vector<noise::ProcessParameters> emulator_processes(const NoiseModel& model
       case TermKind::kResonance:
         processes.push_back(noise::ResonanceParameters{term.amplitude, term.shape, term.width});
         break;
+      case TermKind::kZeroDcGaussian:
+        processes.push_back(noise::ZeroDcGaussianParameters{2, term.amplitude * term.amplitude, term.shape});
+        break;
+      case TermKind::kHighPassWhite:
+        processes.push_back(noise::HighPassWhiteParameters{term.amplitude, term.shape});
+        break;
     }
   }
   // The output's rounding, as the white noise it adds.

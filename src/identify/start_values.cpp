@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "imu_lab/identify/units.h"
+
 namespace imu_lab {
 namespace identify {
 
@@ -49,6 +51,8 @@ std::vector<Term> start_shapes(const TermSlot& slot, const std::vector<FitPoint>
         if (slot.kind == TermKind::kMarkov) add(point.tau_s / 2.0, 0.0);
         if (slot.kind == TermKind::kSinusoid) add(std::min(nyquist_hz, 0.371 / point.tau_s), 0.0);
         if (slot.kind == TermKind::kZeroDcFamily) add(point.tau_s, 0.0);
+        if (slot.kind == TermKind::kZeroDcGaussian) add(point.tau_s * point.tau_s, 0.0);
+        if (slot.kind == TermKind::kHighPassWhite) add(std::min(nyquist_hz, 1.0 / (2.0 * units::kPi * point.tau_s)), 0.0);
       }
       break;
   }

@@ -47,7 +47,8 @@ const std::vector<TermUnits>& unit_table() {
 
 // Markov flanks are densities like N; sinusoid and resonance amplitudes are rates like B.
 TermKind unit_twin(TermKind kind) {
-  if (kind == TermKind::kMarkov) return TermKind::kWhiteRate;
+  if (kind == TermKind::kMarkov || kind == TermKind::kHighPassWhite) return TermKind::kWhiteRate;
+  if (kind == TermKind::kZeroDcGaussian) return TermKind::kZeroDcFamily;
   if (kind == TermKind::kSinusoid || kind == TermKind::kResonance) return TermKind::kBiasInstability;
   return kind;
 }
@@ -66,6 +67,8 @@ std::vector<UnitScale> shape_units(TermKind kind) {
   switch (kind) {
     case TermKind::kMarkov:
     case TermKind::kZeroDcFamily: return {{"s", 1.0}};
+    case TermKind::kZeroDcGaussian: return {{"s2", 1.0}};
+    case TermKind::kHighPassWhite:
     case TermKind::kSinusoid:
     case TermKind::kBiasInstability:
     case TermKind::kResonance:

@@ -41,6 +41,16 @@ double zero_dc_family_psd(double exponent_n, double alpha, double beta_s, double
   return alpha * std::pow(f, exponent_n) * std::exp(-beta_s * f);
 }
 
+double zero_dc_gaussian_psd(double exponent_n, double alpha, double beta_s2, double frequency_hz) {
+  const double f = std::abs(frequency_hz);
+  return alpha * std::pow(f, exponent_n) * std::exp(-beta_s2 * f * f);
+}
+
+double high_pass_white_psd(double alpha, double beta_hz, double frequency_hz) {
+  const double f2 = frequency_hz * frequency_hz;
+  return alpha * f2 / (beta_hz * beta_hz + f2);
+}
+
 double resonance_psd(double rms, double natural_frequency_hz, double width_hz, double frequency_hz) {
   if (!(width_hz > 0.0 && width_hz < 2.0 * natural_frequency_hz)) {
     throw std::invalid_argument("resonance PSD: the width must lie in (0, 2 f_n)");

@@ -7,12 +7,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <string>
 #include <tuple>
+#include <vector>
 
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/progress.h"
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
+#include "imu_lab/identify/fit_options.h"
 #include "imu_lab/ros_io/bag/allan_bag_pass.h"
 #include "imu_lab/ros_io/bag/allan_report.h"
 #include "imu_lab/pipeline/noise_table.h"
@@ -127,7 +130,15 @@ int main(int argc, char** argv) {
       ->check([](const std::string& text) {
         return imu_lab::pipeline::bootstrap_replicas_problem(std::atoi(text.c_str()));
       });
+  std::vector<std::string> zero_dc_terms;
+  app.add_option("--zero-dc-terms", zero_dc_terms,
+                 "zero-at-DC terms the identification may also select, comma-separated (none by default): "
+                 "zero_dc_family (PSD alpha f^2 exp(-beta f)), zero_dc_gaussian (alpha f^2 exp(-beta f^2)), "
+                 "high_pass_white (alpha f^2 / (beta^2 + f^2))")
+      ->delimiter(',')
+      ->check(CLI::IsMember(imu_lab::identify::zero_dc_term_names()));
   if (const auto status = imu_lab::parse_tool_options("allan", app, argc, argv)) return *status;
+  for (const std::string& name : zero_dc_terms) imu_lab::identify::allow_zero_dc_term(name, &identify.fit);
   options.input = imu_lab::pipeline::parse_allan_input("--input", input);
   identify.enabled = !no_identify;
   options.screen.enabled = !no_impulse_screen;

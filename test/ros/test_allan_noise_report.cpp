@@ -1,7 +1,8 @@
 // The allan tool's noise identification, run as a user runs it on an emulated bag whose noise is
 // known (white rate + rate random walk, 20 min at 50 Hz): the Kalibr density agrees with the
 // profile within the fit's own 3 sigma, the partial curves add up to the fitted total, and
-// --no-identify or a refused fit leave the Allan curves alone.
+// --no-identify or a refused fit leave the Allan curves alone. And a zero-at-DC term, enabled with
+// --zero-dc-terms, found with its parameters on a bag that has one.
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
@@ -137,6 +138,65 @@ TEST_F(AllanNoiseReport, ARefusedFitKeepsTheCurvesAndSaysTheRecordIsTooShort) {
   const YAML::Node summary = YAML::LoadFile(report + "/allan_summary.yaml");
   EXPECT_EQ(summary["identification"]["problems"].size(), 2u);  // gyro and accel
   EXPECT_EQ(summary["identification"]["identified"].size(), 0u);
+}
+
+// Gyros: white noise 1e-3 behind a 0.5 Hz high-pass (table 7.3) over a white floor of 1e-4;
+// accelerometers: alpha f^2 exp(-beta f^2) (table 7.1 row 2), its peak at 1 / sqrt(beta) = 5 Hz
+// about 20x the white floor's PSD. Each parameter of each axis within 3 of its reported sigmas
+// of the truth (12 zero-at-DC values and 6 N: at honest sigmas each misses with p = 0.0027).
+TEST(AllanNoiseReportZeroDc, EnabledTermsAreFoundWithTheirParameters) {
+  const std::string directory = scratch_directory();
+  const std::string profile = directory + "/zero_dc.yaml", bag = directory + "/zero_dc.bag";
+  std::ofstream(profile) << R"(name: zero_dc
+gyro:
+  bias_fixed_rad_s: 0.0
+  bias_turn_on_sigma_rad_s: 0.0
+  scale_factor_error_ppm: 0.0
+  misalignment_rad: [[0, 0, 0], [0, 0, 0], [0, 0, 0]]
+  noise:
+    white_rate: {density_rad_s_per_sqrt_hz: 1.0e-4}
+    high_pass_white: {density_rad_s_per_sqrt_hz: 1.0e-3, corner_frequency_hz: 0.5}
+accelerometer:
+  bias_fixed_m_s2: 0.0
+  bias_turn_on_sigma_m_s2: 0.0
+  scale_factor_error_ppm: 0.0
+  misalignment_rad: [[0, 0, 0], [0, 0, 0], [0, 0, 0]]
+  noise:
+    white_rate: {density_m_s2_per_sqrt_hz: 2.0e-3}
+    zero_dc_gaussian: {exponent_n: 2, alpha_m2_s4_per_hz_n_plus_1: 1.0e-5, beta_s2: 0.04}
+)";
+  const auto made =
+      run_tool("emulate", "--profile " + profile + " --duration-s 1200 --rate-hz 50 --seed 21 --no-truth --out " + bag);
+  ASSERT_EQ(made.exit_code, 0) << made.output;
+  const std::string report = directory + "/report";
+  const auto run =
+      run_tool("allan", bag + " --no-plot --zero-dc-terms high_pass_white,zero_dc_gaussian --out " + report);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto values = imu_lab::identify::read_noise_report_values(read_file(report + "/noise.yaml"));
+  const auto expect_within_3_sigma = [&](const std::string& key, double truth) {
+    ASSERT_TRUE(values.count(key) && values.count(key + "_sigma")) << key << " missing\n" << run.output;
+    EXPECT_NEAR(values.at(key), truth, 3.0 * values.at(key + "_sigma")) << key;
+  };
+  for (const char* axis : {"gyro_x", "gyro_y", "gyro_z"}) {
+    const std::string terms = std::string("triads.gyro.axes.") + axis + ".terms.";
+    expect_within_3_sigma(terms + "high_pass_white.sqrt_alpha_rad_s_per_sqrt_hz", 1.0e-3);
+    expect_within_3_sigma(terms + "high_pass_white.beta_hz", 0.5);
+    expect_within_3_sigma(terms + "white_rate.N_rad_s_per_sqrt_hz", 1.0e-4);
+  }
+  for (const char* axis : {"accel_x", "accel_y", "accel_z"}) {
+    const std::string terms = std::string("triads.accel.axes.") + axis + ".terms.";
+    expect_within_3_sigma(terms + "zero_dc_gaussian.sqrt_alpha_m_s2_per_hz_1_5", std::sqrt(1.0e-5));
+    expect_within_3_sigma(terms + "zero_dc_gaussian.beta_s2", 0.04);
+    expect_within_3_sigma(terms + "white_rate.N_m_s2_per_sqrt_hz", 2.0e-3);
+  }
+
+  // Without the option neither term can enter.
+  const std::string plain = directory + "/plain";
+  const auto default_run = run_tool("allan", bag + " --no-plot --out " + plain);
+  ASSERT_EQ(default_run.exit_code, 0) << default_run.output;
+  const std::string noise = read_file(plain + "/noise.yaml");
+  EXPECT_EQ(noise.find("high_pass_white"), std::string::npos);
+  EXPECT_EQ(noise.find("zero_dc_gaussian"), std::string::npos);
 }
 
 }  // namespace

@@ -151,4 +151,12 @@ TEST(AllanToolBadInput, BadOptionIsAConfigurationError) {
   EXPECT_FALSE(file_exists(run.report));
 }
 
+TEST(AllanToolBadInput, UnknownZeroDcTermIsAConfigurationErrorNamingIt) {
+  const ToolRun run =
+      run_allan_on(white_noise_samples(2000, kInterval_ns, 9), "--zero-dc-terms high_pass_white,markov");
+  EXPECT_EQ(run.result.exit_code, 2) << run.result.output;
+  EXPECT_NE(run.result.output.find("markov"), std::string::npos) << run.result.output;
+  EXPECT_FALSE(file_exists(run.report));
+}
+
 }  // namespace

@@ -1,5 +1,6 @@
 // Terms beyond the IEEE five on exact (noise-free) curves: a sinusoid (eq. 5.8), a second Markov
-// process and, when enabled, Krobka 2015's zero-at-DC family. Each must be selected and recovered.
+// process and, when enabled, Krobka 2015's zero-at-DC terms (section 7). Each must be selected and
+// recovered.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -54,6 +55,44 @@ TEST(IdentifyExtraTerms, ZeroDcFamilyWhenEnabled) {
   const TermEstimate& zero_dc = expect_present(fit, "zero_dc_family");
   EXPECT_NEAR(zero_dc.amplitude.value, 3e-4, 3e-5);
   EXPECT_NEAR(zero_dc.shape.value, 0.5, 0.05);
+}
+
+// Each zero-at-DC kind enabled by its report name, as `allan --zero-dc-terms` does; the others
+// stay out, and on a curve that has one of them the fit recovers its two parameters.
+TEST(IdentifyExtraTerms, EachZeroDcKindIsSelectableByName) {
+  struct Case {
+    Term truth;
+    const char* name;
+  };
+  const std::vector<Case> cases = {
+      {{TermKind::kZeroDcGaussian, 3e-4, 0.04}, "zero_dc_gaussian"},  // PSD peak at 1 / sqrt(beta) = 5 Hz
+      {{TermKind::kHighPassWhite, 3e-4, 0.2}, "high_pass_white"},     // white above 0.2 Hz, none below
+  };
+  for (const Case& c : cases) {
+    NoiseModel truth;
+    truth.terms = {{TermKind::kWhiteRate, 3e-5, 0.0}, {TermKind::kRandomWalk, 1e-6, 0.0}, c.truth};
+    FitOptions options;
+    allow_zero_dc_term(c.name, &options);
+    const FitResult fit = fit_noise_model(exact_curve(truth), kTau0, kLength, options);
+    const TermEstimate& zero_dc = expect_present(fit, c.name);
+    EXPECT_NEAR(zero_dc.amplitude.value / c.truth.amplitude, 1.0, 0.05) << c.name;
+    EXPECT_NEAR(zero_dc.shape.value / c.truth.shape, 1.0, 0.05) << c.name;
+    for (const std::string& other : zero_dc_term_names()) {
+      if (other != c.name) EXPECT_EQ(fit.find(other), nullptr) << other << " was not enabled";
+    }
+  }
+}
+
+TEST(IdentifyExtraTerms, UnknownZeroDcNameIsRefusedByName) {
+  FitOptions options;
+  try {
+    allow_zero_dc_term("markov", &options);
+    FAIL() << "markov accepted as a zero-at-DC term";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("'markov'"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("high_pass_white"), std::string::npos) << error.what();
+  }
+  EXPECT_FALSE(options.allow_zero_dc_family || options.allow_zero_dc_gaussian || options.allow_high_pass_white);
 }
 
 }  // namespace

@@ -80,6 +80,7 @@ TEST(NoiseAnalyticPsd, EveryColouredTermIntegratesToItsAvar) {
       {Term{TermKind::kRandomWalk, 1e-5}, 1e4, {}},
       {Term{TermKind::kMarkov, 3e-4, 0.7}, 3e5, {}},
       {Term{TermKind::kZeroDcFamily, 1e-3, 0.2}, 400.0, {}},
+      {Term{TermKind::kZeroDcGaussian, 1e-3, 0.01}, 80.0, {}},  // e^{-beta f^2} = e^{-64} at the end
       {Term{TermKind::kResonance, 2e-3, 20.0, 1.5}, 3e5, {}},
   };
   for (const Case& c : cases) {
@@ -97,6 +98,24 @@ TEST(NoiseAnalyticPsd, EveryColouredTermIntegratesToItsAvar) {
       EXPECT_NEAR(numeric / term_avar(c.term, tau), 1.0, kRelative)
           << term_kind_name(c.term.kind) << " shape " << c.term.shape << " tau " << tau;
     }
+  }
+}
+
+// alpha f^2 / (beta^2 + f^2) = alpha - alpha beta^2 / (beta^2 + f^2): white noise of density
+// sqrt(alpha) minus a Markov process of the same density at DC and T_c = 1 / (2 pi beta). Both
+// sides are closed forms written independently (table 7.3's angle covariance against eqs. 5.2
+// and 5.7), so they agree to rounding. (Its flat tail does not suit the integral above.)
+TEST(NoiseAnalyticPsd, HighPassWhiteIsWhiteMinusItsLowPassedPart) {
+  const double sqrt_alpha = 3e-4, corner_hz = 0.7, time_constant_s = 1.0 / (2.0 * kPi * corner_hz);
+  const Term high_pass{TermKind::kHighPassWhite, sqrt_alpha, corner_hz};
+  const Term white{TermKind::kWhiteRate, sqrt_alpha};
+  const Term low_passed{TermKind::kMarkov, sqrt_alpha, time_constant_s};
+  for (double f : {0.01, 0.7, 3.0, 40.0}) {
+    EXPECT_NEAR(term_psd(high_pass, f, 0.01) / (term_psd(white, f, 0.01) - term_psd(low_passed, f, 0.01)), 1.0, 1e-12)
+        << f;
+  }
+  for (double tau : {0.01, 0.1, 0.3, 2.0, 20.0}) {
+    EXPECT_NEAR(term_avar(high_pass, tau) / (term_avar(white, tau) - term_avar(low_passed, tau)), 1.0, 1e-9) << tau;
   }
 }
 

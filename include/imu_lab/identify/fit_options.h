@@ -2,6 +2,7 @@
 // chosen, the sensor's front end, the significance a term needs to be reported present, bounds.
 #pragma once
 
+#include <string>
 #include <vector>
 
 namespace imu_lab {
@@ -24,7 +25,12 @@ struct FitOptions {
   int max_markov_terms = 2;
   int max_sinusoids = 2;
   int max_resonances = 2;
-  bool allow_zero_dc_family = false;  // Krobka table 7.1, PSD alpha f^2 exp(-beta f)
+  // Krobka 2015's zero-at-DC terms (section 7), off by default: their AVAR rises to a peak and
+  // falls as 1 / tau^2, which a Markov or a white-angle term can also bend to; enable the one the
+  // physics suggest (doc/identification.md).
+  bool allow_zero_dc_family = false;    // table 7.1 row 1, PSD alpha f^2 exp(-beta f)
+  bool allow_zero_dc_gaussian = false;  // table 7.1 row 2 (n = 2), PSD alpha f^2 exp(-beta f^2)
+  bool allow_high_pass_white = false;   // table 7.3, PSD alpha f^2 / (beta^2 + f^2)
 
   BiasCutoff bias_cutoff = BiasCutoff::kNyquist;
   double bias_cutoff_hz = 0.0;  // for kGiven
@@ -51,6 +57,12 @@ struct FitOptions {
   // Solves per candidate term in each selection step (the best starts by initial distance).
   int solves_per_candidate = 4;
 };
+
+// The names `allan --zero-dc-terms` takes: the zero-at-DC kinds' report names.
+std::vector<std::string> zero_dc_term_names();
+// Lets the zero-at-DC term of that report name ("zero_dc_family", "zero_dc_gaussian",
+// "high_pass_white") enter the model; throws std::invalid_argument naming any other name.
+void allow_zero_dc_term(const std::string& term_name, FitOptions* options);
 
 }  // namespace identify
 }  // namespace imu_lab

@@ -21,6 +21,9 @@ enum class TermKind {
   kZeroDcFamily,     // amplitude = sqrt(alpha) of PSD alpha f^2 exp(-beta f), shape = beta [s]
   kResonance,        // RMS rate [u] of a damped second-order band-pass, shape = natural frequency
                      // [Hz], width = its -3 dB width [Hz] (2 zeta f_n)
+  kZeroDcGaussian,   // amplitude = sqrt(alpha) of PSD alpha f^2 exp(-beta f^2), shape = beta [s^2]
+  kHighPassWhite,    // amplitude = sqrt(alpha) [u/sqrt(Hz)] of PSD alpha f^2 / (beta^2 + f^2), shape =
+                     // beta [Hz]: white rate noise behind a first-order high-pass (AC coupling)
 };
 
 struct Term {
@@ -38,12 +41,13 @@ struct NoiseModel {
 };
 
 // "white_angle", "white_rate", "bias_instability", "random_walk", "rate_ramp", "markov",
-// "sinusoid", "zero_dc_family", "resonance" (the names noise::process_kind uses).
+// "sinusoid", "zero_dc_family", "resonance", "zero_dc_gaussian", "high_pass_white" (the names
+// noise::process_kind uses).
 std::string term_kind_name(TermKind kind);
 // Throws std::invalid_argument for an unknown name.
 TermKind term_kind_from_name(const std::string& name);
-// Number of shape parameters a kind can carry: 0, 1 (Markov, sinusoid, bias instability,
-// zero-DC family, white rate's front end) or 2 (resonance).
+// Number of shape parameters a kind can carry: 0, 1 (Markov, sinusoid, bias instability, the
+// zero-at-DC terms, white rate's front end) or 2 (resonance).
 int shape_count(TermKind kind);
 bool has_shape(TermKind kind);
 // Symbol used in reports: Q, N, B, K, R, q_c_T_c, Omega0, sqrt_alpha, rms.

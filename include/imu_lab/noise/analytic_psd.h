@@ -26,6 +26,11 @@ double markov_psd(double q_c_per_sqrt_s, double correlation_time_s, double frequ
 double sinusoid_line_power(double amplitude);
 // Krobka table 7.1 row 1: alpha |f|^n exp(-beta |f|).
 double zero_dc_family_psd(double exponent_n, double alpha, double beta_s, double frequency_hz);
+// Krobka table 7.1 row 2: alpha |f|^n exp(-beta f^2), beta in s^2.
+double zero_dc_gaussian_psd(double exponent_n, double alpha, double beta_s2, double frequency_hz);
+// Krobka table 7.3: alpha f^2 / (beta^2 + f^2), white rate noise of density sqrt(alpha) behind a
+// first-order high-pass of corner beta [Hz].
+double high_pass_white_psd(double alpha, double beta_hz, double frequency_hz);
 // The damped second-order band-pass of resonance_avar: y = z', z'' + 2 zeta w_n z' + w_n^2 z =
 // white of two-sided density 4 zeta w_n rms^2 (so that Var z = (rms / w_n)^2), zeta = width /
 // (2 f_n):  S = 4 zeta w_n rms^2 w^2 / ((w_n^2 - w^2)^2 + (2 zeta w_n w)^2), w = 2 pi f.
