@@ -132,8 +132,10 @@ AxisTerms axis_terms(const GyroAxisErrors& gyro, int axis, double horizon_s) {
         break;
       }
       case identify::TermKind::kZeroDcFamily:
-        throw std::invalid_argument(where +
-                                    "zero_dc_family has no finite state-space model; the prediction cannot include it");
+      case identify::TermKind::kZeroDcGaussian:
+      case identify::TermKind::kHighPassWhite:
+        throw std::invalid_argument(where + identify::term_kind_name(term.kind) +
+                                    " is not modelled in the prediction (doc/attitude_error_budget.md)");
     }
   }
   return terms;

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/common/format_number.h"
 #include "imu_lab/emulator/motion_source.h"
 #include "imu_lab/identify/noise_report.h"
@@ -52,15 +53,94 @@ std::vector<nav::AttitudeSample> scenario_attitude_motion(const emulator::Scenar
   return motion;
 }
 
+Eigen::Quaterniond site_start_attitude(const emulator::ScenarioConfig& site) {
+  return Eigen::AngleAxisd(site.yaw_rad, Eigen::Vector3d::UnitZ()) *
+         Eigen::AngleAxisd(site.pitch_rad, Eigen::Vector3d::UnitY()) *
+         Eigen::AngleAxisd(site.roll_rad, Eigen::Vector3d::UnitX());
+}
+
 std::vector<nav::AttitudeSample> constant_rate_scenario_motion(const emulator::ScenarioConfig& site,
                                                                const Eigen::Vector3d& body_rate_rad_s,
                                                                double duration_s, double step_s) {
   step_count(duration_s, step_s);
-  const Eigen::Quaterniond start = Eigen::AngleAxisd(site.yaw_rad, Eigen::Vector3d::UnitZ()) *
-                                   Eigen::AngleAxisd(site.pitch_rad, Eigen::Vector3d::UnitY()) *
-                                   Eigen::AngleAxisd(site.roll_rad, Eigen::Vector3d::UnitX());
-  return nav::constant_rate_motion(body_rate_rad_s, start, scenario_earth(site).earth_rate_enu_rad_s(site.latitude_rad),
-                                   duration_s, step_s);
+  return nav::constant_rate_motion(body_rate_rad_s, site_start_attitude(site),
+                                   scenario_earth(site).earth_rate_enu_rad_s(site.latitude_rad), duration_s, step_s);
+}
+
+namespace {
+void check_recorded_stamps(const std::vector<io::ImuRecord>& records) {
+  if (records.size() < 2) throw std::invalid_argument("the motion needs at least two IMU samples");
+  std::vector<std::int64_t> intervals_ns;
+  for (std::size_t i = 1; i < records.size(); ++i) {
+    if (records[i].stamp_ns <= records[i - 1].stamp_ns) {
+      throw std::invalid_argument("the IMU stamps do not increase at " + format_stamp_s(records[i].stamp_ns) + " s");
+    }
+    intervals_ns.push_back(records[i].stamp_ns - records[i - 1].stamp_ns);
+  }
+  std::nth_element(intervals_ns.begin(), intervals_ns.begin() + intervals_ns.size() / 2, intervals_ns.end());
+  const std::int64_t median_ns = intervals_ns[intervals_ns.size() / 2];
+  for (std::size_t i = 1; i < records.size(); ++i) {
+    if (records[i].stamp_ns - records[i - 1].stamp_ns > 10 * median_ns) {
+      throw std::invalid_argument("a gap in the IMU stamps before " + format_stamp_s(records[i].stamp_ns) +
+                                  " s (more than 10 median intervals): the motion there is unknown");
+    }
+  }
+}
+}  // namespace
+
+std::vector<nav::AttitudeSample> recorded_attitude_motion(const std::vector<io::ImuRecord>& records,
+                                                          const emulator::ScenarioConfig& site, double duration_s,
+                                                          double step_s) {
+  check_recorded_stamps(records);
+  const double span_s = seconds_between(records.front().stamp_ns, records.back().stamp_ns);
+  const double duration = duration_s > 0.0 ? duration_s : step_s * std::floor(span_s / step_s * (1.0 + 1e-12));
+  if (duration > span_s * (1.0 + 1e-9)) {
+    throw std::invalid_argument("the duration asked, " + std::to_string(duration) + " s, exceeds the recording's " +
+                                std::to_string(span_s) + " s");
+  }
+  const long long steps = step_count(duration, step_s);
+  const Eigen::Vector3d earth_rate_enu = scenario_earth(site).earth_rate_enu_rad_s(site.latitude_rad);
+  std::vector<nav::AttitudeSample> motion;
+  motion.reserve(static_cast<std::size_t>(steps) + 1);
+  nav::AttitudeSample current;
+  current.body_to_navigation = site_start_attitude(site);
+  current.navigation_rate_rad_s = earth_rate_enu;
+  motion.push_back(current);
+  // Turns the body over dt at record i's rate relative to ENU: the Earth rate is projected with
+  // the attitude at mid-interval (a first pass with the attitude at its start finds it), so the
+  // error per step is of order W w^2 dt^3 rather than W w dt^2.
+  const auto rotation = [](const Eigen::Vector3d& rate_rad_s, double dt_s) {
+    const double angle = rate_rad_s.norm() * dt_s;
+    return angle > 0.0 ? Eigen::Quaterniond(Eigen::AngleAxisd(angle, rate_rad_s.normalized()))
+                       : Eigen::Quaterniond::Identity();
+  };
+  const auto turn = [&](std::size_t i, double dt_s) {
+    const Eigen::Quaterniond& q = current.body_to_navigation;
+    const Eigen::Vector3d first = records[i].angular_rate_rad_s - q.conjugate() * earth_rate_enu;
+    const Eigen::Quaterniond middle = q * rotation(first, 0.5 * dt_s);
+    const Eigen::Vector3d body_rate = records[i].angular_rate_rad_s - middle.conjugate() * earth_rate_enu;
+    current.body_to_navigation = (q * rotation(body_rate, dt_s)).normalized();
+  };
+  double time_s = 0.0;
+  for (std::size_t i = 1; i < records.size() && static_cast<long long>(motion.size()) <= steps; ++i) {
+    const double interval_end_s = seconds_between(records.front().stamp_ns, records[i].stamp_ns);
+    // Every grid point inside this interval: turn up to it and record the attitude there.
+    while (static_cast<long long>(motion.size()) <= steps) {
+      const double grid_s = static_cast<double>(motion.size()) * step_s;
+      if (grid_s > interval_end_s) break;
+      turn(i, grid_s - time_s);
+      time_s = grid_s;
+      current.time_s = grid_s;
+      motion.push_back(current);
+    }
+    turn(i, interval_end_s - time_s);
+    time_s = interval_end_s;
+  }
+  if (static_cast<long long>(motion.size()) <= steps) {  // the last grid point at the last stamp
+    current.time_s = static_cast<double>(motion.size()) * step_s;
+    motion.push_back(current);
+  }
+  return motion;
 }
 
 std::array<nav::GyroAxisErrors, 3> gyros_from_noise_report(const std::string& path, double turn_on_bias_rad_s) {

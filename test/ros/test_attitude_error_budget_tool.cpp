@@ -4,6 +4,8 @@
 //   sqrt(sum_i N_i^2 t + K_i^2 t^3 / 3) of the report's own values (the Earth rate turns the error
 //   without changing its total); a body whose axes stay on ENU's gives the strapdown system the
 //   platform's figures; the rate table's spin lowers the strapdown total below the platform's.
+// - The motion a recording's gyros measured (an ideal IMU on the rate table) gives the scenario's
+//   own prediction.
 // - Bad input: options exit 2 naming the option, data exit 1 naming the file, nothing written.
 #include <gtest/gtest.h>
 
@@ -106,6 +108,33 @@ TEST_F(AttitudeErrorBudgetTool, PlatformIsTheClosedFormAndTheSpinLowersTheStrapd
   }
 }
 
+TEST_F(AttitudeErrorBudgetTool, RecordedRatesGiveTheScenariosPrediction) {
+  const std::string bag = directory_ + "/table.bag";
+  const auto made = run_tool("emulate",
+                             "--profile ideal --scenario rate_table --duration-s 300 --rate-hz 50 "
+                             "--no-truth --no-increments --out " +
+                                 bag);
+  ASSERT_EQ(made.exit_code, 0) << made.output;
+  const std::string grid = " --duration-s 290 --step-s 0.02 --output-interval-s 10";
+  const auto recorded = budget_rows("--motion-bag " + bag + " --start-rpy-deg 0 0 90 --latitude-deg 50.45" + grid,
+                                    directory_ + "/recorded.csv");
+  const auto scenario = budget_rows("--scenario rate_table" + grid, directory_ + "/scenario.csv");
+  ASSERT_EQ(recorded.size(), 30u);
+  ASSERT_EQ(recorded.size(), scenario.size());
+  // The recording starts one sample (0.02 s) after the scenario: at 100 deg/s its attitude leads
+  // by a 2 deg turn about Up, which moves error between East and North but leaves the Up axis and
+  // the totals (traces) unchanged up to the axes' different N and K (a few %) times sin^2(2 deg).
+  for (std::size_t k = 0; k < recorded.size(); ++k) {
+    EXPECT_NEAR(recorded[k][0], scenario[k][0], 1e-9);
+    for (int column : {3, 6, 7, 8}) {
+      EXPECT_NEAR(recorded[k][column], scenario[k][column], 1e-12 + 1e-3 * scenario[k][column])
+          << "t = " << scenario[k][0] << " column " << column;
+    }
+  }
+  // The spin shows: strapdown total well below the platform's by the end, as on the scenario.
+  EXPECT_LT(recorded.back()[7], 0.8 * recorded.back()[8]);
+}
+
 TEST_F(AttitudeErrorBudgetTool, RefusesBadOptionsAndBadReportsWritingNothing) {
   const std::string out = scratch_directory() + "/budget.csv";
   const std::string motion = " --body-rate-deg-s 0 0 10 --duration-s 10 -o " + out;
@@ -117,6 +146,11 @@ TEST_F(AttitudeErrorBudgetTool, RefusesBadOptionsAndBadReportsWritingNothing) {
   };
   expect_refused(motion, 2, "--noise");
   expect_refused("--noise " + noise_ + " --scenario static" + motion, 2, "--scenario/--body-rate-deg-s");
+  expect_refused("--noise " + noise_ + " --scenario static --start-rpy-deg 0 0 1 -o " + out, 2, "--start-rpy-deg");
+  expect_refused("--noise " + noise_ + " --motion-topic /imu/raw" + motion, 2, "--motion-topic");
+  const std::string not_a_bag = directory_ + "/not_a.bag";
+  std::ofstream(not_a_bag) << "no bag\n";
+  expect_refused("--noise " + noise_ + " --motion-bag " + not_a_bag + " -o " + out, 1, not_a_bag);
   expect_refused("--noise " + noise_ + " --body-rate-deg-s 0 0 10 -o " + out, 2, "--duration-s");
   expect_refused("--noise " + noise_ + " --step-s 0.001" + motion, 2, "--step-s");
   expect_refused("--noise " + noise_ + " --duration-s -1 --body-rate-deg-s 0 0 1 -o " + out, 2, "--duration-s");

@@ -228,8 +228,11 @@ TEST(NavAttitudeErrorGrowth, RefusesWhatItCannotPredict) {
   const auto motion = nav::constant_rate_motion(Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity(),
                                                 Eigen::Vector3d::Zero(), 1.0, 0.01);
   EXPECT_THROW(nav::predict_attitude_error_growth(gyros, {motion.front()}), std::invalid_argument);
-  gyros[1].model.terms = {{identify::TermKind::kZeroDcFamily, 1e-6, 0.1, 0.0}};
-  EXPECT_THROW(nav::predict_attitude_error_growth(gyros, motion), std::invalid_argument);
+  for (identify::TermKind kind :
+       {identify::TermKind::kZeroDcFamily, identify::TermKind::kZeroDcGaussian, identify::TermKind::kHighPassWhite}) {
+    gyros[1].model.terms = {{kind, 1e-6, 0.1, 0.0}};
+    EXPECT_THROW(nav::predict_attitude_error_growth(gyros, motion), std::invalid_argument);
+  }
   gyros[1].model.terms = {{identify::TermKind::kWhiteAngle, 1e-6, 0.0, 0.0}};
   gyros[1].sample_interval_s = 0.02;  // a step shorter than the sample interval
   EXPECT_THROW(nav::predict_attitude_error_growth(gyros, motion), std::invalid_argument);
