@@ -3,7 +3,8 @@
 
     scripts/report_index.py REPORT [--profile NAME]
 
-Reads what scripts/demo left in REPORT: noise/ (allan: noise.yaml, kalibr_imu.yaml, allan.png),
+Reads what scripts/demo left in REPORT: noise/ (allan: noise.yaml, kalibr_imu.yaml, allan.png;
+spectrum/spectrum.png; attitude_error_budget: attitude_error_budget.txt and .png),
 thermal/ (fit_thermal: thermal.yaml, thermal.png), calibration/ (fit_calibration:
 calibration.yaml, calibration_report.txt), repeatability/ (repeatability: repeatability.yaml,
 repeatability.png), navigation/rlg/ and navigation/mems/ (navigate raw,
@@ -114,6 +115,25 @@ def noise_section(report, profile):
                 bound = " (upper bound)" if kalibr.get(key + "_is_upper_bound") else ""
                 lines.append(f"- `{key}`: {kalibr[key]:.3g} {unit}{bound}")
         lines.append("")
+    return lines
+
+
+def spectrum_and_attitude_section(report):
+    lines = ["## The same noise as spectra, and as attitude error", ""]
+    lines += figure(report, "noise/spectrum/spectrum.png", "PSD with the identified model",
+                    "The hour at rest as power spectral densities (Welch, with each bin's interval) and the "
+                    "identified model's PSD drawn over them (doc/spectrum.md).")
+    lines += figure(report, "noise/attitude_error_budget.png", "attitude error, strapdown vs platform",
+                    "The identified gyro model, with the profile's run-to-run bias (1 deg/h, which no Allan curve shows), "
+                    "turned into attitude error on the rate_table scenario: the "
+                    "strapdown system's gyros turn with the table and average part of their errors, a platform's "
+                    "stay on the ENU axes (doc/attitude_error_budget.md).")
+    summary = os.path.join(report, "noise", "attitude_error_budget.txt")
+    if not os.path.exists(summary):
+        return lines + missing("attitude error budget", summary)
+    with open(summary) as handle:
+        text = handle.read().strip().splitlines()
+    lines += ["```", *text, "```", ""]
     return lines
 
 
@@ -329,6 +349,7 @@ def main():
              "Made by `scripts/demo`: each section is one tool on its own emulated test; the numbers are "
              "read from the files beside this page.", ""]
     lines += noise_section(args.report, args.profile)
+    lines += spectrum_and_attitude_section(args.report)
     for section in (thermal_section, calibration_section):
         lines += section(args.report)
     lines += repeatability_section(args.report, args.profile)

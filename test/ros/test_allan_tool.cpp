@@ -106,7 +106,9 @@ TEST_F(AllanTool, CsvsEqualTheStreamingEngineOnTheSameSamples) {
   EXPECT_NEAR(summary["channels"]["accel_z"]["offset_m_s2"].as<double>(), 9.8, 0.1);
   EXPECT_GT(summary["channels"]["gyro_x"]["min_oadev_rad_s"].as<double>(), 0.0);
   EXPECT_GT(summary["channels"]["gyro_x"]["min_oadev_tau_s"].as<double>(), 0.005);
-  if (file_exists("/usr/bin/python3")) EXPECT_TRUE(file_exists(report + "/allan.png")) << run.output;
+  if (file_exists("/usr/bin/python3")) {
+    EXPECT_TRUE(file_exists(report + "/allan.png")) << run.output;
+  }
 }
 
 TEST_F(AllanTool, IncrementInputGivesTheEngineCurvesInRateUnits) {

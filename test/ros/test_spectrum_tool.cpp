@@ -60,7 +60,9 @@ TEST(SpectrumTool, WritesEveryFileAndFindsTheProfilesCorrelation) {
       << result.output;
   ASSERT_TRUE(file_exists(out + "/spectrum_psd.csv"));
   ASSERT_TRUE(file_exists(out + "/spectrum_autocorrelation.csv"));
-  if (file_exists("/usr/bin/python3")) EXPECT_TRUE(file_exists(out + "/spectrum.png")) << result.output;
+  if (file_exists("/usr/bin/python3")) {
+    EXPECT_TRUE(file_exists(out + "/spectrum.png")) << result.output;
+  }
   const YAML::Node report = YAML::LoadFile(out + "/spectrum.yaml");
   EXPECT_EQ(report["welch"]["segment_count"].as<int>(), 13);
   for (const char* triad : {"gyro", "accelerometer"}) {
@@ -112,7 +114,9 @@ TEST(SpectrumTool, DrawsTheIdentifiedModel) {
   const auto result = run_tool("spectrum", correlated_bag() + " --model " + allan_out + "/noise.yaml --out " + out);
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_NE(result.output.find("gyro_x model drawn: estimate / model median"), std::string::npos) << result.output;
-  if (file_exists("/usr/bin/python3")) EXPECT_TRUE(file_exists(out + "/spectrum.png")) << result.output;
+  if (file_exists("/usr/bin/python3")) {
+    EXPECT_TRUE(file_exists(out + "/spectrum.png")) << result.output;
+  }
   const YAML::Node noise = YAML::LoadFile(allan_out + "/noise.yaml");
   const YAML::Node white = noise["triads"]["gyro"]["axes"]["gyro_x"]["terms"]["white_rate"];
   const double n_relative_sigma =
