@@ -45,6 +45,60 @@ TEST(FitThermalTool, FitsAMultiPositionTestAndWritesModelCsvAndPlot) {
   EXPECT_TRUE(test_support::file_exists(directory + "/thermal.png"));
 }
 
+// The regime switch (Golovach 2017 eqs. 3.18, 3.19) from the command line: the threshold derived
+// from the bag's thermosensor and printed, the model written with both regimes; then applied by
+// `correct`, which feeds the same indicator; and the refusals.
+TEST(FitThermalTool, FitsTheRegimeSwitchAndTheSecondSensorScaleFactor) {
+  const std::string bag =
+      emulated_bag("regime", "--profile " + kData + "/thermal/uncompensated_mems_gyro.yaml --scenario " + kData +
+                                 "/thermal/fit_multiposition.yaml --rate-hz 2 --seed 11");
+  const std::string directory = test_support::scratch_directory();
+  const std::string out = directory + "/regime.yaml";
+  const auto result = run_tool("fit_thermal", bag + " --out " + out +
+                                                  " --regime-switch --regime-hold-s 60 --latitude-deg 50.45 "
+                                                  "--second-temperature-topic /imu/temperature2 "
+                                                  "--second-sensor-scale-factor --order 2");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("regime switch: |d2T/dt2| over 300 s, from the data: threshold"), std::string::npos)
+      << result.output;
+  const auto model = thermal::load_thermal_model(out);
+  ASSERT_TRUE(model.regime_switch.enabled);
+  EXPECT_GT(model.regime_switch.threshold_c_s2, 0.0);
+  EXPECT_EQ(model.regime_switch.hold_s, 60.0);
+  EXPECT_EQ(model.dynamic_accelerometer[0].bias_polynomial.size(), 2u);
+  EXPECT_EQ(model.accelerometer[2].scale_factor_second_sensor_polynomial_ppm.size(), 1u);
+  const std::string text = test_support::read_file(out);
+  EXPECT_NE(text.find("dynamic.bias_polynomial[0]"), std::string::npos);
+  const auto applied = run_tool("correct", bag + " --thermal-model " + out +
+                                               " --second-temperature-topic /imu/temperature2 "
+                                               "--out " +
+                                               directory + "/regime_corrected.bag");
+  EXPECT_EQ(applied.exit_code, 0) << applied.output;
+  // A threshold no temperature change reaches: the dynamic regime is empty.
+  const auto empty = run_tool("fit_thermal", bag + " --out " + directory +
+                                                 "/empty.yaml --regime-switch "
+                                                 "--regime-threshold-c-s2 1 --no-scale-factor");
+  EXPECT_EQ(empty.exit_code, 1) << empty.output;
+  EXPECT_NE(empty.output.find("the dynamic regime (|d2T/dt2| above 1 degC/s^2, hold 0 s) holds 0 static windows"),
+            std::string::npos)
+      << empty.output;
+  const auto zero = run_tool("fit_thermal", bag + " --out " + directory +
+                                                "/zero.yaml --regime-switch "
+                                                "--regime-threshold-c-s2 0 --no-scale-factor");
+  EXPECT_EQ(zero.exit_code, 2) << zero.output;
+  EXPECT_NE(zero.output.find("--regime-threshold-c-s2"), std::string::npos) << zero.output;
+  const auto orphan = run_tool("fit_thermal", bag + " --out " + directory +
+                                                  "/orphan.yaml --regime-hold-s 10 "
+                                                  "--no-scale-factor");
+  EXPECT_EQ(orphan.exit_code, 2) << orphan.output;
+  EXPECT_NE(orphan.output.find("need --regime-switch"), std::string::npos) << orphan.output;
+  const auto no_second = run_tool("fit_thermal", bag + " --out " + directory +
+                                                     "/second.yaml "
+                                                     "--second-sensor-scale-factor --latitude-deg 50.45");
+  EXPECT_EQ(no_second.exit_code, 2) << no_second.output;
+  EXPECT_NE(no_second.output.find("give --second-temperature-topic"), std::string::npos) << no_second.output;
+}
+
 TEST(FitThermalTool, RefusesScaleFactorFromOneOrientationButFitsTheBias) {
   const std::string bag = emulated_bag("chamber", "--scenario thermal_chamber --rate-hz 1 --seed 12");
   const std::string out = test_support::scratch_directory() + "/model.yaml";
