@@ -535,7 +535,11 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
                               (chosen.scale_order > 0 ? " for bias and scale factor" : " for the bias") +
                               ": the orientations and temperatures leave the model singular (opposite "
                               "orientations seen at too few temperatures?); ask for a lower order or add dwells "
-                              "at more temperatures");
+                              "at more temperatures" +
+                              (chosen.second_scale_order > 0
+                                   ? std::string("; the second-sensor scale factor also needs each axis up and down "
+                                                 "while the two sensors disagree (during temperature changes)")
+                                   : std::string()));
       }
       // The solution's layout: only the constants (orientations, visits) that have rows.
       chosen.clusters = static_cast<int>(std::count_if(column.begin(), column.end(), [](int c) { return c >= 0; }));

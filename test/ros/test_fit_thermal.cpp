@@ -48,7 +48,7 @@ TEST(FitThermalTool, FitsAMultiPositionTestAndWritesModelCsvAndPlot) {
 // The regime switch (Golovach 2017 eqs. 3.18, 3.19) from the command line: the threshold derived
 // from the bag's thermosensor and printed, the model written with both regimes; then applied by
 // `correct`, which feeds the same indicator; and the refusals.
-TEST(FitThermalTool, FitsTheRegimeSwitchAndTheSecondSensorScaleFactor) {
+TEST(FitThermalTool, FitsTheRegimeSwitchAndCorrectAppliesIt) {
   const std::string bag =
       emulated_bag("regime", "--profile " + kData + "/thermal/uncompensated_mems_gyro.yaml --scenario " + kData +
                                  "/thermal/fit_multiposition.yaml --rate-hz 2 --seed 11");
@@ -56,8 +56,7 @@ TEST(FitThermalTool, FitsTheRegimeSwitchAndTheSecondSensorScaleFactor) {
   const std::string out = directory + "/regime.yaml";
   const auto result = run_tool("fit_thermal", bag + " --out " + out +
                                                   " --regime-switch --regime-hold-s 60 --latitude-deg 50.45 "
-                                                  "--second-temperature-topic /imu/temperature2 "
-                                                  "--second-sensor-scale-factor --order 2");
+                                                  "--second-temperature-topic /imu/temperature2 --order 2");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_NE(result.output.find("regime switch: |d2T/dt2| over 300 s, from the data: threshold"), std::string::npos)
       << result.output;
@@ -66,7 +65,7 @@ TEST(FitThermalTool, FitsTheRegimeSwitchAndTheSecondSensorScaleFactor) {
   EXPECT_GT(model.regime_switch.threshold_c_s2, 0.0);
   EXPECT_EQ(model.regime_switch.hold_s, 60.0);
   EXPECT_EQ(model.dynamic_accelerometer[0].bias_polynomial.size(), 2u);
-  EXPECT_EQ(model.accelerometer[2].scale_factor_second_sensor_polynomial_ppm.size(), 1u);
+  EXPECT_EQ(model.dynamic_accelerometer[0].bias_second_sensor_polynomial.size(), 1u);
   const std::string text = test_support::read_file(out);
   EXPECT_NE(text.find("dynamic.bias_polynomial[0]"), std::string::npos);
   const auto applied = run_tool("correct", bag + " --thermal-model " + out +
@@ -97,6 +96,31 @@ TEST(FitThermalTool, FitsTheRegimeSwitchAndTheSecondSensorScaleFactor) {
                                                      "--second-sensor-scale-factor --latitude-deg 50.45");
   EXPECT_EQ(no_second.exit_code, 2) << no_second.output;
   EXPECT_NE(no_second.output.find("give --second-temperature-topic"), std::string::npos) << no_second.output;
+  // Positions at the soaks only: the two sensors agree there, the second-sensor scale factor is
+  // not separable, and the refusal says what it needs.
+  const auto soaks = run_tool("fit_thermal", bag + " --out " + directory +
+                                                 "/second.yaml --latitude-deg 50.45 "
+                                                 "--second-temperature-topic /imu/temperature2 "
+                                                 "--second-sensor-scale-factor --order 2");
+  EXPECT_EQ(soaks.exit_code, 1) << soaks.output;
+  EXPECT_NE(soaks.output.find("while the two sensors disagree"), std::string::npos) << soaks.output;
+}
+
+// The scale factor in the second thermosensor on a test that turns the IMU through the ramps.
+TEST(FitThermalTool, FitsTheSecondSensorScaleFactorOnATumblingTest) {
+  const std::string bag =
+      emulated_bag("tumbling", "--profile " + kData + "/thermal/uncompensated_mems_gyro.yaml --scenario " + kData +
+                                   "/thermal/tumbling_second_sensor.yaml --rate-hz 2 --seed 12");
+  const std::string out = test_support::scratch_directory() + "/tumbling.yaml";
+  const auto result = run_tool("fit_thermal", bag + " --out " + out +
+                                                  " --latitude-deg 50.45 --precise-revisits --order 2 "
+                                                  "--second-temperature-topic /imu/temperature2 "
+                                                  "--second-sensor-scale-factor");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const auto model = thermal::load_thermal_model(out);
+  for (int axis = 0; axis < 3; ++axis)
+    EXPECT_EQ(model.accelerometer[axis].scale_factor_second_sensor_polynomial_ppm.size(), 1u);
+  EXPECT_NE(test_support::read_file(out).find("scale_factor_second_sensor_polynomial_ppm[0]"), std::string::npos);
 }
 
 TEST(FitThermalTool, RefusesScaleFactorFromOneOrientationButFitsTheBias) {
