@@ -73,37 +73,31 @@ TEST(FitThermalTool, FitsTheRegimeSwitchAndCorrectAppliesIt) {
                                                "--out " +
                                                directory + "/regime_corrected.bag");
   EXPECT_EQ(applied.exit_code, 0) << applied.output;
-  // A threshold no temperature change reaches: the dynamic regime is empty.
-  const auto empty = run_tool("fit_thermal", bag + " --out " + directory +
-                                                 "/empty.yaml --regime-switch "
-                                                 "--regime-threshold-c-s2 1 --no-scale-factor");
-  EXPECT_EQ(empty.exit_code, 1) << empty.output;
-  EXPECT_NE(empty.output.find("the dynamic regime (|d2T/dt2| above 1 degC/s^2, hold 0 s) holds 0 static windows"),
-            std::string::npos)
-      << empty.output;
-  const auto zero = run_tool("fit_thermal", bag + " --out " + directory +
-                                                "/zero.yaml --regime-switch "
-                                                "--regime-threshold-c-s2 0 --no-scale-factor");
-  EXPECT_EQ(zero.exit_code, 2) << zero.output;
-  EXPECT_NE(zero.output.find("--regime-threshold-c-s2"), std::string::npos) << zero.output;
-  const auto orphan = run_tool("fit_thermal", bag + " --out " + directory +
-                                                  "/orphan.yaml --regime-hold-s 10 "
-                                                  "--no-scale-factor");
-  EXPECT_EQ(orphan.exit_code, 2) << orphan.output;
-  EXPECT_NE(orphan.output.find("need --regime-switch"), std::string::npos) << orphan.output;
-  const auto no_second = run_tool("fit_thermal", bag + " --out " + directory +
-                                                     "/second.yaml "
-                                                     "--second-sensor-scale-factor --latitude-deg 50.45");
-  EXPECT_EQ(no_second.exit_code, 2) << no_second.output;
-  EXPECT_NE(no_second.output.find("give --second-temperature-topic"), std::string::npos) << no_second.output;
-  // Positions at the soaks only: the two sensors agree there, the second-sensor scale factor is
-  // not separable, and the refusal says what it needs.
-  const auto soaks = run_tool("fit_thermal", bag + " --out " + directory +
-                                                 "/second.yaml --latitude-deg 50.45 "
-                                                 "--second-temperature-topic /imu/temperature2 "
-                                                 "--second-sensor-scale-factor --order 2");
-  EXPECT_EQ(soaks.exit_code, 1) << soaks.output;
-  EXPECT_NE(soaks.output.find("while the two sensors disagree"), std::string::npos) << soaks.output;
+  // The refusals: arguments, exit code, what the message must say.
+  struct Refusal {
+    std::string arguments;
+    int exit_code;
+    std::string says;
+  };
+  const Refusal refusals[] = {
+      // A threshold no temperature change reaches: the dynamic regime is empty.
+      {"--regime-switch --regime-threshold-c-s2 1 --no-scale-factor", 1,
+       "the dynamic regime (|d2T/dt2| above 1 degC/s^2, hold 0 s) holds 0 static windows"},
+      {"--regime-switch --regime-threshold-c-s2 0 --no-scale-factor", 2, "--regime-threshold-c-s2"},
+      {"--regime-hold-s 10 --no-scale-factor", 2, "need --regime-switch"},
+      {"--second-sensor-scale-factor --latitude-deg 50.45", 2, "give --second-temperature-topic"},
+      // Positions at the soaks only: the two sensors agree there, the second-sensor scale factor
+      // is not separable, and the refusal says what it needs.
+      {"--latitude-deg 50.45 --second-temperature-topic /imu/temperature2 --second-sensor-scale-factor --order 2", 1,
+       "while the two sensors disagree"},
+  };
+  for (const Refusal& refusal : refusals) {
+    const std::string refused_out = directory + "/refused.yaml";
+    const auto refused = run_tool("fit_thermal", bag + " --out " + refused_out + " " + refusal.arguments);
+    EXPECT_EQ(refused.exit_code, refusal.exit_code) << refusal.arguments << "\n" << refused.output;
+    EXPECT_NE(refused.output.find(refusal.says), std::string::npos) << refusal.arguments << "\n" << refused.output;
+    EXPECT_FALSE(test_support::file_exists(refused_out)) << refusal.arguments;
+  }
 }
 
 // The scale factor in the second thermosensor on a test that turns the IMU through the ramps.
