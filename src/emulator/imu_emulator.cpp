@@ -33,7 +33,17 @@ ImuEmulator::ImuEmulator(const SensorProfile& profile, std::unique_ptr<MotionSou
 }
 
 ImuEmulator::ImuEmulator(const SensorProfile& profile, const ScenarioConfig& scenario, const EmulatorSettings& settings)
-    : ImuEmulator(profile, make_motion_source(scenario), settings) {}
+    : ImuEmulator(profile, make_motion_source(scenario), settings) {
+  // A thermal profile without the second sensor would silently put the main sensor's temperature
+  // into the second-sensor terms, where the lag between the two is the point.
+  const bool second_terms =
+      profile.gyro.thermal.uses_second_sensor() || profile.accelerometer.thermal.uses_second_sensor();
+  if (second_terms && scenario.thermal && !scenario.thermal->second_sensor_time_constant_s) {
+    throw ConfigError(scenario.source, "thermal.second_sensor_time_constant_s",
+                      "sensor profile " + profile.name +
+                          " has second-thermosensor terms; give the scenario's second sensor (its time constant)");
+  }
+}
 
 ImuEmulator::~ImuEmulator() = default;
 ImuEmulator::ImuEmulator(ImuEmulator&&) noexcept = default;
@@ -51,7 +61,8 @@ EmulatedSample ImuEmulator::next() {
   EmulatedSample sample;
   sample.stamp_ns = stamp_ns_from_seconds(settings_.start_time_s) +
                     stamp_ns_from_seconds(static_cast<double>(sample_index_) * interval_s_);
-  const SensorTemperature temperature{truth_increment.mean_temperature_c, truth_increment.mean_temperature_rate_c_s};
+  const SensorTemperature temperature{truth_increment.mean_temperature_c, truth_increment.mean_temperature_rate_c_s,
+                                      truth_increment.mean_second_temperature_c};
   sample.angular_rate_rad_s = gyro_->measure(true_rate, true_force, elapsed_start_s, interval_s_, temperature);
   sample.specific_force_m_s2 =
       accelerometer_->measure(true_force, Eigen::Vector3d::Zero(), elapsed_start_s, interval_s_, temperature);

@@ -72,10 +72,11 @@ Eigen::Vector3d TriadChannel::measure(const Eigen::Vector3d& true_average,
                                       const Eigen::Vector3d& specific_force_average, double elapsed_start_s,
                                       double interval_s, const SensorTemperature& temperature) {
   const ThermalSensitivity& thermal = model_.thermal;
-  const Eigen::Vector3d thermal_scale =
-      1e-6 * thermal.scale_factor_ppm(temperature.temperature_c, temperature.rate_c_s);
-  Eigen::Vector3d output = total_bias() + thermal.bias(temperature.temperature_c, temperature.rate_c_s) +
-                           response(true_average, thermal_scale) + model_.g_sensitivity * specific_force_average;
+  const Eigen::Vector3d thermal_scale = 1e-6 * thermal.scale_factor_ppm(temperature.temperature_c, temperature.rate_c_s,
+                                                                        temperature.second_temperature_c);
+  Eigen::Vector3d output =
+      total_bias() + thermal.bias(temperature.temperature_c, temperature.rate_c_s, temperature.second_temperature_c) +
+      response(true_average, thermal_scale) + model_.g_sensitivity * specific_force_average;
   Eigen::Vector3d white = Eigen::Vector3d::Zero();
   for (int axis = 0; axis < 3; ++axis) {
     for (std::size_t p = 0; p < processes_[axis].size(); ++p) {

@@ -227,15 +227,18 @@ void read_quantization(const YamlFields& f, const TriadUnits& u, TriadErrorModel
 }
 
 // thermal: {reference_temperature_c, bias_polynomial_<u>: [row, ...], scale_factor_polynomial_ppm:
-// [row, ...], bias_per_temperature_rate_<u>_per_c_s, scale_factor_ppm_per_temperature_rate_per_c_s};
+// [row, ...], bias_per_temperature_rate_<u>_per_c_s, scale_factor_ppm_per_temperature_rate_per_c_s,
+// bias_second_sensor_polynomial_<u>, scale_factor_second_sensor_polynomial_ppm (rows in T2 - T_ref)};
 // a row is one number or [x, y, z], row k multiplying (T - T_ref)^(k+1).
 ThermalSensitivity read_thermal_sensitivity(const YamlFields& f, const TriadUnits& u) {
   const std::string bias_key = "bias_polynomial_" + u.rate;
   const std::string bias_rate_key = "bias_per_temperature_rate_" + u.rate + "_per_c_s";
   const std::string scale_key = "scale_factor_polynomial_ppm";
   const std::string scale_rate_key = "scale_factor_ppm_per_temperature_rate_per_c_s";
-  f.allow_only(
-      {"reference_temperature_c", bias_key.c_str(), scale_key.c_str(), bias_rate_key.c_str(), scale_rate_key.c_str()});
+  const std::string bias_second_key = "bias_second_sensor_polynomial_" + u.rate;
+  const std::string scale_second_key = "scale_factor_second_sensor_polynomial_ppm";
+  f.allow_only({"reference_temperature_c", bias_key.c_str(), scale_key.c_str(), bias_rate_key.c_str(),
+                scale_rate_key.c_str(), bias_second_key.c_str(), scale_second_key.c_str()});
   auto rows = [&](const std::string& key) {
     std::vector<Eigen::Vector3d> result;
     if (!f.has(key)) return result;
@@ -252,6 +255,8 @@ ThermalSensitivity read_thermal_sensitivity(const YamlFields& f, const TriadUnit
   thermal.scale_factor_polynomial_ppm = rows(scale_key);
   thermal.bias_per_temperature_rate = f.per_axis_or_zero(bias_rate_key);
   thermal.scale_factor_ppm_per_temperature_rate = f.per_axis_or_zero(scale_rate_key);
+  thermal.bias_second_sensor_polynomial = rows(bias_second_key);
+  thermal.scale_factor_second_sensor_polynomial_ppm = rows(scale_second_key);
   return thermal;
 }
 

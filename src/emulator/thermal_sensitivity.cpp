@@ -13,14 +13,20 @@ Eigen::Vector3d polynomial_without_constant(const std::vector<Eigen::Vector3d>& 
 }
 }  // namespace
 
-Eigen::Vector3d ThermalSensitivity::bias(double temperature_c, double temperature_rate_c_s) const {
+Eigen::Vector3d ThermalSensitivity::bias(double temperature_c, double temperature_rate_c_s,
+                                         std::optional<double> second_temperature_c) const {
   return polynomial_without_constant(bias_polynomial, temperature_c - reference_temperature_c) +
-         bias_per_temperature_rate * temperature_rate_c_s;
+         bias_per_temperature_rate * temperature_rate_c_s +
+         polynomial_without_constant(bias_second_sensor_polynomial,
+                                     second_temperature_c.value_or(temperature_c) - reference_temperature_c);
 }
 
-Eigen::Vector3d ThermalSensitivity::scale_factor_ppm(double temperature_c, double temperature_rate_c_s) const {
+Eigen::Vector3d ThermalSensitivity::scale_factor_ppm(double temperature_c, double temperature_rate_c_s,
+                                                     std::optional<double> second_temperature_c) const {
   return polynomial_without_constant(scale_factor_polynomial_ppm, temperature_c - reference_temperature_c) +
-         scale_factor_ppm_per_temperature_rate * temperature_rate_c_s;
+         scale_factor_ppm_per_temperature_rate * temperature_rate_c_s +
+         polynomial_without_constant(scale_factor_second_sensor_polynomial_ppm,
+                                     second_temperature_c.value_or(temperature_c) - reference_temperature_c);
 }
 
 }  // namespace emulator

@@ -58,6 +58,21 @@ double TemperatureHistory::rate_at(std::int64_t stamp_ns, double window_s) const
   return (later_mean_c - earlier_mean_c) / half_s;
 }
 
+double TemperatureHistory::second_derivative_at(std::int64_t stamp_ns, double window_s) const {
+  const double third_s = window_s / 3.0;
+  std::size_t bounds[4];
+  for (int k = 0; k < 4; ++k) bounds[k] = first_after(stamp_ns - stamp_ns_from_seconds((3 - k) * third_s));
+  // Only a window the record covers whole: at its start a short first third is the mean of a few
+  // readings, and its noise crossed a threshold set from the full windows' noise.
+  if (bounds[0] == 0) return 0.0;
+  double means_c[3];
+  for (int k = 0; k < 3; ++k) {
+    if (bounds[k + 1] <= bounds[k]) return 0.0;
+    means_c[k] = (sum_before(bounds[k + 1]) - sum_before(bounds[k])) / static_cast<double>(bounds[k + 1] - bounds[k]);
+  }
+  return (means_c[2] - 2.0 * means_c[1] + means_c[0]) / (third_s * third_s);
+}
+
 void TemperatureHistory::drop_before(std::int64_t stamp_ns) {
   while (stamps_ns_.size() > 1 && stamps_ns_[1] < stamp_ns) {
     dropped_sum_c_ = running_sums_c_.front();

@@ -1,5 +1,6 @@
 #include "imu_lab/thermal/thermal_compensator.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "imu_lab/common/stamps.h"
@@ -9,11 +10,14 @@ namespace imu_lab {
 namespace thermal {
 
 ThermalCompensator::ThermalCompensator(ThermalModel model, double max_temperature_age_s)
-    : model_(std::move(model)), max_temperature_age_s_(max_temperature_age_s) {}
+    : model_(std::move(model)), max_temperature_age_s_(max_temperature_age_s) {
+  if (model_.regime_switch.enabled) regime_.emplace(model_.regime_switch);
+}
 
 bool ThermalCompensator::add_temperature(std::int64_t stamp_ns, double temperature_c,
                                          std::vector<CompensatedSample>* ready) {
   if (!temperature_.add(stamp_ns, temperature_c)) return false;
+  if (regime_) regime_->update(temperature_);
   release(false, ready);
   return true;
 }
@@ -52,12 +56,16 @@ void ThermalCompensator::release(bool everything, std::vector<CompensatedSample>
     ready->push_back(compensate(waiting_.front()));
     waiting_.pop_front();
   }
-  // The rate needs one window of history; interpolation needs the reading before.
+  // The rate (and the regime's second derivative) need one window of history; interpolation needs
+  // the reading before.
   if (!newest_imu_stamp_ns_) return;
+  const double history_s =
+      regime_ ? std::max(model_.rate_window_s, model_.regime_switch.window_s) : model_.rate_window_s;
   const std::int64_t keep_from_ns = (waiting_.empty() ? *newest_imu_stamp_ns_ : waiting_.front().stamp_ns) -
-                                    stamp_ns_from_seconds(model_.rate_window_s + max_temperature_age_s_);
+                                    stamp_ns_from_seconds(history_s + max_temperature_age_s_);
   temperature_.drop_before(keep_from_ns);
   second_temperature_.drop_before(keep_from_ns);
+  if (regime_) regime_->drop_before(keep_from_ns);
 }
 
 CompensatedSample ThermalCompensator::compensate(const io::ImuRecord& reading) const {
@@ -74,6 +82,7 @@ CompensatedSample ThermalCompensator::compensate(const io::ImuRecord& reading) c
   out.input.temperature_c = *temperature_c;
   out.input.rate_c_s = temperature_.rate_at(reading.stamp_ns, model_.rate_window_s);
   out.input.second_temperature_c = second_c;
+  out.input.dynamic_regime = regime_ && regime_->dynamic_at(reading.stamp_ns);
   const ThermalCorrection correction =
       correct(model_, reading.angular_rate_rad_s, reading.specific_force_m_s2, out.input);
   out.corrected.angular_rate_rad_s = correction.angular_rate_rad_s;

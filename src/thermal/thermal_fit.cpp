@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "imu_lab/common/fit_quality.h"
+#include "imu_lab/thermal/thermal_regime.h"
 
 namespace imu_lab {
 namespace thermal {
@@ -33,6 +34,7 @@ struct TriadSpec {
 struct AxisData {
   std::vector<double> y, delta_t, rate, second_delta_t, input;
   std::vector<int> cluster;
+  std::vector<int> regime;  // 0 static, 1 dynamic (always 0 without the regime switch)
   double input_reference = 1.0;
 };
 
@@ -42,10 +44,13 @@ struct Structure {
   bool rate = false;
   bool scale_rate = false;
   int second_order = 0;
-  int scale_order = 0;  // 0: no scale-factor terms
+  int scale_order = 0;         // 0: no scale-factor terms
+  int second_scale_order = 0;  // scale factor in the second sensor (only with scale_order > 0)
+  int regimes = 1;             // 2: the bias terms once per regime (static, dynamic); the rest shared
+  int bias_columns() const { return bias_order + (rate ? 1 : 0) + second_order; }
   int columns() const {
-    return clusters + bias_order + (rate ? 1 : 0) + second_order + scale_order +
-           (scale_rate && scale_order > 0 ? 1 : 0);
+    return clusters + regimes * bias_columns() + scale_order +
+           (scale_order > 0 ? (scale_rate ? 1 : 0) + second_scale_order : 0);
   }
 };
 
@@ -54,16 +59,19 @@ void fill_row(const AxisData& data, std::size_t r, const Structure& s, const std
               Eigen::Ref<Eigen::RowVectorXd, 0, Eigen::InnerStride<>> row) {
   row.setZero();
   if (cluster_column[data.cluster[r]] >= 0) row[cluster_column[data.cluster[r]]] = 1.0;
-  int c = s.clusters;
+  int c = s.clusters + (s.regimes > 1 ? data.regime[r] : 0) * s.bias_columns();
   const double x = data.delta_t[r] / kTemperatureUnit_c;
   for (int k = 1; k <= s.bias_order; ++k) row[c++] = std::pow(x, k);
   const double rate = data.rate[r] / kRateUnit_c_s;
   if (s.rate) row[c++] = rate;
   const double x2 = data.second_delta_t[r] / kTemperatureUnit_c;
   for (int k = 1; k <= s.second_order; ++k) row[c++] = std::pow(x2, k);
+  c = s.clusters + s.regimes * s.bias_columns();
   const double input = data.input[r] / data.input_reference;
   for (int k = 1; k <= s.scale_order; ++k) row[c++] = input * std::pow(x, k);
-  if (s.scale_rate && s.scale_order > 0) row[c++] = input * rate;
+  if (s.scale_order == 0) return;
+  if (s.scale_rate) row[c++] = input * rate;
+  for (int k = 1; k <= s.second_scale_order; ++k) row[c++] = input * std::pow(x2, k);
 }
 
 struct Solution {
@@ -238,8 +246,9 @@ void refuse_unconstrained(const ThermalFitOptions& options, double min_c, double
   throw ThermalFitError(text.str());
 }
 
+// terms[1] (the dynamic regime's) only with s.regimes == 2; it shares the scale-factor terms.
 void fill_terms(const Structure& s, const Solution& solution, const AxisData& data, const TriadSpec& triad,
-                AxisThermalTerms* terms, AxisFitReport* report) {
+                AxisThermalTerms* const terms[2], AxisFitReport* report) {
   int c = s.clusters;
   const auto add = [&](const std::string& name, double factor, const std::string& unit) {
     const double value = solution.beta[c] * factor;
@@ -248,25 +257,66 @@ void fill_terms(const Structure& s, const Solution& solution, const AxisData& da
     return value;
   };
   const std::string u = triad.unit;
-  for (int k = 1; k <= s.bias_order; ++k) {
-    terms->bias_polynomial.push_back(add("bias_polynomial[" + std::to_string(k - 1) + "]",
-                                         std::pow(kTemperatureUnit_c, -k), u + "/degC^" + std::to_string(k)));
+  const auto per_degree = [](int k) { return "/degC^" + std::to_string(k); };
+  for (int regime = 0; regime < s.regimes; ++regime) {
+    AxisThermalTerms* const t = terms[regime];
+    const std::string prefix = regime == 1 ? "dynamic." : "";
+    for (int k = 1; k <= s.bias_order; ++k) {
+      t->bias_polynomial.push_back(add(prefix + "bias_polynomial[" + std::to_string(k - 1) + "]",
+                                       std::pow(kTemperatureUnit_c, -k), u + per_degree(k)));
+    }
+    if (s.rate) {
+      t->bias_per_temperature_rate = add(prefix + "bias_per_temperature_rate", 1.0 / kRateUnit_c_s, u + "/(degC/s)");
+    }
+    for (int k = 1; k <= s.second_order; ++k) {
+      t->bias_second_sensor_polynomial.push_back(
+          add(prefix + "bias_second_sensor_polynomial[" + std::to_string(k - 1) + "]", std::pow(kTemperatureUnit_c, -k),
+              u + per_degree(k)));
+    }
   }
-  if (s.rate) terms->bias_per_temperature_rate = add("bias_per_temperature_rate", 1.0 / kRateUnit_c_s, u + "/(degC/s)");
-  for (int k = 1; k <= s.second_order; ++k) {
-    terms->bias_second_sensor_polynomial.push_back(add("bias_second_sensor_polynomial[" + std::to_string(k - 1) + "]",
-                                                       std::pow(kTemperatureUnit_c, -k),
-                                                       u + "/degC^" + std::to_string(k)));
-  }
+  AxisThermalTerms* const shared = terms[0];
   const double ppm_per_unit = 1e6 / data.input_reference;
   for (int k = 1; k <= s.scale_order; ++k) {
-    terms->scale_factor_polynomial_ppm.push_back(add("scale_factor_polynomial_ppm[" + std::to_string(k - 1) + "]",
-                                                     ppm_per_unit * std::pow(kTemperatureUnit_c, -k),
-                                                     "ppm/degC^" + std::to_string(k)));
+    shared->scale_factor_polynomial_ppm.push_back(add("scale_factor_polynomial_ppm[" + std::to_string(k - 1) + "]",
+                                                      ppm_per_unit * std::pow(kTemperatureUnit_c, -k),
+                                                      "ppm" + per_degree(k)));
   }
-  if (s.scale_rate && s.scale_order > 0) {
-    terms->scale_factor_ppm_per_temperature_rate =
+  if (s.scale_order > 0 && s.scale_rate) {
+    shared->scale_factor_ppm_per_temperature_rate =
         add("scale_factor_ppm_per_temperature_rate", ppm_per_unit / kRateUnit_c_s, "ppm/(degC/s)");
+  }
+  if (s.scale_order > 0) {
+    for (int k = 1; k <= s.second_scale_order; ++k) {
+      shared->scale_factor_second_sensor_polynomial_ppm.push_back(
+          add("scale_factor_second_sensor_polynomial_ppm[" + std::to_string(k - 1) + "]",
+              ppm_per_unit * std::pow(kTemperatureUnit_c, -k), "ppm" + per_degree(k)));
+    }
+  }
+  if (s.regimes > 1) {
+    terms[1]->scale_factor_polynomial_ppm = shared->scale_factor_polynomial_ppm;
+    terms[1]->scale_factor_ppm_per_temperature_rate = shared->scale_factor_ppm_per_temperature_rate;
+    terms[1]->scale_factor_second_sensor_polynomial_ppm = shared->scale_factor_second_sensor_polynomial_ppm;
+  }
+}
+
+// The regime switch needs each regime's bias terms constrained by that regime's own windows.
+void refuse_thin_regime(const std::string& axis, const AxisData& data, const Structure& s,
+                        const ThermalFitOptions& options) {
+  std::size_t rows[2] = {0, 0};
+  for (int regime : data.regime) ++rows[regime];
+  for (int regime = 0; regime < 2; ++regime) {
+    const std::size_t needed = static_cast<std::size_t>(s.bias_columns() + options.min_spare_windows);
+    if (rows[regime] >= needed) continue;
+    std::ostringstream text;
+    text << axis << ": the " << (regime == 1 ? "dynamic" : "static") << " regime (|d2T/dt2| "
+         << (regime == 1 ? "above" : "at or below") << " " << options.regime_switch.threshold_c_s2 << " degC/s^2, hold "
+         << options.regime_switch.hold_s << " s) holds " << rows[regime]
+         << " static windows, and its own bias terms need at least " << needed << " (" << s.bias_columns()
+         << " parameter(s) + " << options.min_spare_windows << " spare); "
+         << (regime == 1 ? "lower the threshold, lengthen the hold, or record faster or more temperature changes"
+                         : "raise the threshold or shorten the hold")
+         << ", or fit without the regime switch";
+    throw ThermalFitError(text.str());
   }
 }
 
@@ -288,6 +338,22 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
     throw ThermalFitError("the thermal test has no static window (" + std::to_string(windows.size()) +
                           " windows, none with the IMU at rest); a thermal test keeps the IMU still in known "
                           "orientations, or the static thresholds are too tight for this sensor's noise");
+  }
+  if (options.second_sensor_scale_factor && !options.second_sensor_term) {
+    throw ThermalFitError(
+        "the second-sensor scale-factor term needs the second-sensor term (a second thermosensor topic)");
+  }
+  if (options.regime_switch.enabled) {
+    try {
+      check_regime_settings(options.regime_switch);
+    } catch (const std::invalid_argument& error) {
+      throw ThermalFitError(error.what());
+    }
+    if (!windows[used.front()].dynamic_fraction) {
+      throw ThermalFitError(
+          "the regime switch needs windows averaged with the regime indicator (ThermalWindowAverager with a "
+          "RegimeIndicator)");
+    }
   }
   if (options.second_sensor_term && !windows[used.front()].second_temperature_c) {
     throw ThermalFitError(
@@ -313,6 +379,7 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
   model.rate_window_s = rate_window_s;
   model.uses_temperature_rate = options.temperature_rate_term || options.scale_factor_rate_term;
   model.uses_second_sensor = options.second_sensor_term;
+  if (options.regime_switch.enabled) model.regime_switch = options.regime_switch;
   ThermalValidity& box = model.validity;
   box.temperature_min_c = box.rate_min_c_s = box.second_temperature_min_c = std::numeric_limits<double>::infinity();
   box.temperature_max_c = box.rate_max_c_s = box.second_temperature_max_c = -std::numeric_limits<double>::infinity();
@@ -337,6 +404,7 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
       {"gyro", "rad/s", options.gyro_scale_factor, options.earth.earth_rate_rad_s},
       {"accelerometer", "m/s^2", options.accelerometer_scale_factor, options.earth.gravity_m_s2}};
   TriadThermalTerms* terms_of[2] = {&model.gyro, &model.accelerometer};
+  TriadThermalTerms* dynamic_terms_of[2] = {&model.dynamic_gyro, &model.dynamic_accelerometer};
 
   // One orientation cannot separate bias(T) from scale factor(T): refuse before fitting anything.
   std::vector<std::string> single_sided;
@@ -384,12 +452,16 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
         const int clusters = static_cast<int>(orientations.clusters.size());
         data.cluster.push_back(options.precise_revisits || along_gravity ? orientations.cluster_of_window[w]
                                                                          : clusters + visit_of_window[w]);
+        // A window is in the regime of most of its samples.
+        data.regime.push_back(options.regime_switch.enabled && *window.dynamic_fraction > 0.5 ? 1 : 0);
       }
       Structure base;
       base.clusters = static_cast<int>(orientations.clusters.size()) + visits;
       base.rate = options.temperature_rate_term;
       base.scale_rate = options.scale_factor_rate_term;
       base.second_order = options.second_sensor_term ? options.second_sensor_order : 0;
+      base.second_scale_order = options.second_sensor_scale_factor ? options.second_sensor_order : 0;
+      base.regimes = options.regime_switch.enabled ? 2 : 1;
       // base.clusters numbers the constants (orientations, then visits); the parameters are the
       // constants this axis uses.
       Structure counted = base;
@@ -399,6 +471,11 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
       if (orders.empty()) {
         refuse_unconstrained(options, box.temperature_min_c, box.temperature_max_c, data.y.size(), counted,
                              triad.scale_factor);
+      }
+      if (base.regimes > 1) {
+        Structure lowest = base;
+        lowest.bias_order = orders.front();
+        refuse_thin_regime(axis_label(triad, axis), data, lowest, options);
       }
 
       AxisFitReport report;
@@ -458,7 +535,11 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
                               (chosen.scale_order > 0 ? " for bias and scale factor" : " for the bias") +
                               ": the orientations and temperatures leave the model singular (opposite "
                               "orientations seen at too few temperatures?); ask for a lower order or add dwells "
-                              "at more temperatures");
+                              "at more temperatures" +
+                              (chosen.second_scale_order > 0
+                                   ? std::string("; the second-sensor scale factor also needs each axis up and down "
+                                                 "while the two sensors disagree (during temperature changes)")
+                                   : std::string()));
       }
       // The solution's layout: only the constants (orientations, visits) that have rows.
       chosen.clusters = static_cast<int>(std::count_if(column.begin(), column.end(), [](int c) { return c >= 0; }));
@@ -466,14 +547,15 @@ ThermalFitResult fit_thermal_model(const std::vector<ThermalWindow>& windows, do
       report.scale_factor_order = chosen.scale_order;
       report.residual_rms = std::sqrt(solution.residual_sum_squares / data.y.size());
       report.constant_count = static_cast<std::size_t>(chosen.clusters);
-      AxisThermalTerms& terms = (*terms_of[t])[axis];
-      fill_terms(chosen, solution, data, triad, &terms, &report);
+      AxisThermalTerms* const terms_by_regime[2] = {&(*terms_of[t])[axis], &(*dynamic_terms_of[t])[axis]};
+      fill_terms(chosen, solution, data, triad, terms_by_regime, &report);
 
       double fitted_min = std::numeric_limits<double>::infinity(), fitted_max = -fitted_min;
       Eigen::RowVectorXd row(chosen.columns());
       for (std::size_t r = 0; r < data.y.size(); ++r) {
         const ThermalWindow& window = windows[used[r]];
-        ThermalInput input{window.temperature_c, window.rate_c_s, window.second_temperature_c};
+        ThermalInput input{window.temperature_c, window.rate_c_s, window.second_temperature_c, data.regime[r] == 1};
+        const AxisThermalTerms& terms = *terms_by_regime[data.regime[r]];
         const double delta_bias = axis_delta_bias(model, terms, input);
         fill_row(data, r, chosen, column, row);
         const double predicted = row.dot(solution.beta);

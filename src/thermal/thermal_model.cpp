@@ -76,6 +76,10 @@ double axis_delta_scale(const ThermalModel& model, const AxisThermalTerms& terms
   double ppm = polynomial_without_constant(terms.scale_factor_polynomial_ppm,
                                            input.temperature_c - model.reference_temperature_c);
   if (model.uses_temperature_rate) ppm += terms.scale_factor_ppm_per_temperature_rate * input.rate_c_s;
+  if (model.uses_second_sensor && !terms.scale_factor_second_sensor_polynomial_ppm.empty()) {
+    ppm += polynomial_without_constant(terms.scale_factor_second_sensor_polynomial_ppm,
+                                       input.second_temperature_c.value() - model.reference_temperature_c);
+  }
   return 1e-6 * ppm;
 }
 
@@ -86,8 +90,10 @@ ThermalCorrection correct(const ThermalModel& model, const Eigen::Vector3d& angu
   }
   ThermalCorrection out;
   const ThermalInput inside = clamp_to_validity(model, input, &out.clamped);
-  out.angular_rate_rad_s = correct_triad(model, model.gyro, angular_rate_rad_s, inside);
-  out.specific_force_m_s2 = correct_triad(model, model.accelerometer, specific_force_m_s2, inside);
+  const bool dynamic = model.regime_switch.enabled && input.dynamic_regime;
+  out.angular_rate_rad_s = correct_triad(model, dynamic ? model.dynamic_gyro : model.gyro, angular_rate_rad_s, inside);
+  out.specific_force_m_s2 =
+      correct_triad(model, dynamic ? model.dynamic_accelerometer : model.accelerometer, specific_force_m_s2, inside);
   return out;
 }
 

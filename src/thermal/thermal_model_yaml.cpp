@@ -17,7 +17,8 @@ const char* const kAxisNames[3] = {"x", "y", "z"};
 
 struct TriadKeys {
   std::string bias, bias_rate, bias_second, scale = "scale_factor_polynomial_ppm",
-                                            scale_rate = "scale_factor_ppm_per_temperature_rate_per_c_s";
+                                            scale_rate = "scale_factor_ppm_per_temperature_rate_per_c_s",
+                                            scale_second = "scale_factor_second_sensor_polynomial_ppm";
 };
 
 TriadKeys keys_for(const std::string& unit) {
@@ -46,12 +47,13 @@ TriadThermalTerms read_triad(const YamlFields& triad, const std::string& unit) {
   for (int axis = 0; axis < 3; ++axis) {
     const YamlFields f = triad.child(kAxisNames[axis]);
     f.allow_only({keys.bias.c_str(), keys.bias_rate.c_str(), keys.bias_second.c_str(), keys.scale.c_str(),
-                  keys.scale_rate.c_str()});
+                  keys.scale_rate.c_str(), keys.scale_second.c_str()});
     terms[axis].bias_polynomial = polynomial(f, keys.bias);
     terms[axis].bias_per_temperature_rate = f.number_or(keys.bias_rate, 0.0);
     terms[axis].bias_second_sensor_polynomial = polynomial(f, keys.bias_second);
     terms[axis].scale_factor_polynomial_ppm = polynomial(f, keys.scale);
     terms[axis].scale_factor_ppm_per_temperature_rate = f.number_or(keys.scale_rate, 0.0);
+    terms[axis].scale_factor_second_sensor_polynomial_ppm = polynomial(f, keys.scale_second);
   }
   return terms;
 }
@@ -69,6 +71,10 @@ void write_triad(YAML::Emitter& out, const TriadThermalTerms& terms, const std::
     }
     out << YAML::Key << keys.scale << YAML::Value << YAML::Flow << axis_terms.scale_factor_polynomial_ppm;
     out << YAML::Key << keys.scale_rate << YAML::Value << axis_terms.scale_factor_ppm_per_temperature_rate;
+    if (!axis_terms.scale_factor_second_sensor_polynomial_ppm.empty()) {
+      out << YAML::Key << keys.scale_second << YAML::Value << YAML::Flow
+          << axis_terms.scale_factor_second_sensor_polynomial_ppm;
+    }
     out << YAML::EndMap;
   }
   out << YAML::EndMap;
@@ -107,7 +113,8 @@ void write_fit(YAML::Emitter& out, const ThermalFitResult& fit) {
 ThermalModel load_thermal_model(const std::string& path) {
   const YamlFields root(load_yaml_file(path), "", path);
   root.allow_only({"format", "version", "reference_temperature_c", "rate_window_s", "uses_temperature_rate",
-                   "uses_second_sensor", "validity", "gyro", "accelerometer", "fit"});
+                   "uses_second_sensor", "validity", "gyro", "accelerometer", "regime_switch", "dynamic_gyro",
+                   "dynamic_accelerometer", "fit"});
   if (root.text("format") != kFormat) root.fail("format", std::string("expected '") + kFormat + "'");
   if (root.number("version") != 1.0) root.fail("version", "this build reads version 1");
   ThermalModel model;
@@ -138,6 +145,23 @@ ThermalModel load_thermal_model(const std::string& path) {
   }
   model.gyro = read_triad(root.child("gyro"), "rad_s");
   model.accelerometer = read_triad(root.child("accelerometer"), "m_s2");
+  // Golovach 2017 eqs. 3.18, 3.19: present only in a model fitted with the regime switch.
+  if (root.has("regime_switch")) {
+    const YamlFields regime = root.child("regime_switch");
+    regime.allow_only({"threshold_c_s2", "window_s", "hold_s"});
+    RegimeSwitchSettings& settings = model.regime_switch;
+    settings.enabled = true;
+    settings.threshold_c_s2 = regime.positive("threshold_c_s2");
+    settings.window_s = regime.positive("window_s");
+    settings.hold_s = regime.number("hold_s");
+    if (settings.hold_s < 0.0) regime.fail("hold_s", "must be 0 s or more");
+    model.dynamic_gyro = read_triad(root.child("dynamic_gyro"), "rad_s");
+    model.dynamic_accelerometer = read_triad(root.child("dynamic_accelerometer"), "m_s2");
+  } else {
+    for (const char* key : {"dynamic_gyro", "dynamic_accelerometer"}) {
+      if (root.has(key)) root.fail(key, "the dynamic regime's terms need a regime_switch section");
+    }
+  }
   return model;
 }
 
@@ -168,6 +192,18 @@ std::string thermal_model_to_yaml(const ThermalModel& model, const ThermalFitRes
   write_triad(out, model.gyro, "rad_s");
   out << YAML::Key << "accelerometer" << YAML::Value;
   write_triad(out, model.accelerometer, "m_s2");
+  if (model.regime_switch.enabled) {
+    const RegimeSwitchSettings& settings = model.regime_switch;
+    out << YAML::Key << "regime_switch" << YAML::Value << YAML::BeginMap;
+    out << YAML::Key << "threshold_c_s2" << YAML::Value << settings.threshold_c_s2;
+    out << YAML::Key << "window_s" << YAML::Value << settings.window_s;
+    out << YAML::Key << "hold_s" << YAML::Value << settings.hold_s;
+    out << YAML::EndMap;
+    out << YAML::Key << "dynamic_gyro" << YAML::Value;
+    write_triad(out, model.dynamic_gyro, "rad_s");
+    out << YAML::Key << "dynamic_accelerometer" << YAML::Value;
+    write_triad(out, model.dynamic_accelerometer, "m_s2");
+  }
   if (fit) write_fit(out, *fit);
   out << YAML::EndMap;
   return std::string(out.c_str()) + "\n";

@@ -30,8 +30,9 @@ Eigen::Vector3d spread(const Eigen::Vector3d& sum, const Eigen::Vector3d& square
 }  // namespace
 
 ThermalWindowAverager::ThermalWindowAverager(const WindowSettings& settings, const TemperatureHistory& temperature,
-                                             const TemperatureHistory* second_temperature)
-    : settings_(settings), temperature_(temperature), second_temperature_(second_temperature) {}
+                                             const TemperatureHistory* second_temperature,
+                                             const RegimeIndicator* regime)
+    : settings_(settings), temperature_(temperature), second_temperature_(second_temperature), regime_(regime) {}
 
 void ThermalWindowAverager::add(const io::ImuRecord& reading) {
   if (first_stamp_ns_ && reading.stamp_ns <= last_stamp_ns_) {
@@ -65,6 +66,7 @@ void ThermalWindowAverager::add(const io::ImuRecord& reading) {
     force_offset_ = reading.specific_force_m_s2;
     rate_sum_ = rate_square_sum_ = force_sum_ = force_square_sum_ = Eigen::Vector3d::Zero();
     stamp_sum_ = temperature_sum_ = rate_c_s_sum_ = second_sum_ = 0.0;
+    dynamic_count_ = 0;
   }
   const Eigen::Vector3d rate = reading.angular_rate_rad_s - rate_offset_;
   const Eigen::Vector3d force = reading.specific_force_m_s2 - force_offset_;
@@ -78,6 +80,7 @@ void ThermalWindowAverager::add(const io::ImuRecord& reading) {
   temperature_sum_ += *temperature_c;
   rate_c_s_sum_ += temperature_.rate_at(reading.stamp_ns, settings_.rate_window_s);
   if (second_c) second_sum_ += *second_c;
+  if (regime_ && regime_->dynamic_at(reading.stamp_ns)) ++dynamic_count_;
 }
 
 void ThermalWindowAverager::close_window() {
@@ -94,6 +97,7 @@ void ThermalWindowAverager::close_window() {
   window.temperature_c = temperature_sum_ / n;
   window.rate_c_s = rate_c_s_sum_ / n;
   if (second_temperature_) window.second_temperature_c = second_sum_ / n;
+  if (regime_) window.dynamic_fraction = static_cast<double>(dynamic_count_) / n;
   // The samples a full window holds, from the median interval: real stamps jitter (+-30 % is
   // common), and the smallest interval would ask for more samples than any window has.
   double expected = std::numeric_limits<double>::infinity();

@@ -9,6 +9,7 @@
 
 #include "imu_lab/common/atomic_file.h"
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/format_number.h"
 #include "imu_lab/common/progress.h"
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
@@ -34,6 +35,7 @@ struct Command {
   bool no_scale_factor = false;
   double latitude_deg = 0.0;
   double height_m = 0.0;
+  double regime_threshold_c_s2 = 0.0;  // 0: from the data
 };
 
 std::string default_csv_path(const std::string& out_path) {
@@ -41,6 +43,25 @@ std::string default_csv_path(const std::string& out_path) {
   const bool has_suffix =
       out_path.size() > suffix.size() && out_path.compare(out_path.size() - suffix.size(), suffix.size(), suffix) == 0;
   return (has_suffix ? out_path.substr(0, out_path.size() - suffix.size()) : out_path) + "_residuals.csv";
+}
+
+void print_regime(const imu_lab::ros_io::ThermalBagWindows& data) {
+  const auto& regime = data.regime_switch;
+  if (!regime.enabled) return;
+  std::size_t dynamic = 0, static_windows = 0;
+  for (const auto& window : data.windows) {
+    if (!window.is_static) continue;
+    ++static_windows;
+    if (window.dynamic_fraction.value_or(0.0) > 0.5) ++dynamic;
+  }
+  std::printf(
+      "fit_thermal: regime switch: |d2T/dt2| over %.4g s, %s, hold %.6g s: %zu of %zu readings over it; "
+      "%zu of %zu static windows dynamic\n",
+      regime.window_s,
+      data.suggested_threshold
+          ? ("from the data: " + data.suggested_threshold->text()).c_str()
+          : ("threshold " + imu_lab::format_number(regime.threshold_c_s2, 4) + " degC/s^2").c_str(),
+      regime.hold_s, data.readings_over_threshold, data.temperature_messages, dynamic, static_windows);
 }
 
 void print_summary(const imu_lab::thermal::ThermalFitResult& result) {
@@ -81,6 +102,22 @@ int main(int argc, char** argv) {
   app.add_flag("--rate-term", c.fit.temperature_rate_term, "fit the dynamic-regime term in dT/dt (bias)");
   app.add_flag("--scale-factor-rate-term", c.fit.scale_factor_rate_term,
                "also a dT/dt term in the scale factor (needs opposite orientations during ramps)");
+  app.add_flag("--second-sensor-scale-factor", c.fit.second_sensor_scale_factor,
+               "also a scale-factor polynomial in the second thermosensor (needs --second-temperature-topic and "
+               "opposite orientations while the two sensors disagree)");
+  app.add_flag("--regime-switch", c.fit.regime_switch.enabled,
+               "separate bias terms for the dynamic regime, where |d2T/dt2| exceeds the threshold (Golovach 2017 "
+               "eqs. 3.18, 3.19)");
+  app.add_option("--regime-threshold-c-s2", c.regime_threshold_c_s2,
+                 "threshold on |d2T/dt2| [degC/s^2] (default: from the data, see doc/thermal.md)")
+      ->check(positive());
+  app.add_option("--regime-window-s", c.fit.regime_switch.window_s, "window of the d2T/dt2 estimate [s]")
+      ->capture_default_str()
+      ->check(positive());
+  app.add_option("--regime-hold-s", c.fit.regime_switch.hold_s,
+                 "the dynamic regime lasts this long after |d2T/dt2| falls below the threshold [s]")
+      ->capture_default_str()
+      ->check(at_least(0.0));
   app.add_flag("--no-scale-factor", c.no_scale_factor, "fit the bias only (one orientation is enough)");
   app.add_flag("--precise-revisits", c.fit.precise_revisits,
                "orientations are repeated to arc-seconds (a rate table or fixture): one constant per orientation for "
@@ -119,6 +156,7 @@ int main(int argc, char** argv) {
   c.fit.earth.gravity_m_s2 =
       imu_lab::emulator::normal_gravity_m_s2(imu_lab::EarthShape::kWgs84Rotating, c.fit.earth.latitude_rad, c.height_m);
   if (c.csv_path.empty()) c.csv_path = default_csv_path(c.out_path);
+  c.fit.regime_switch.threshold_c_s2 = c.regime_threshold_c_s2;
 
   c.recording.on_progress = imu_lab::terminal_progress("fit_thermal", "messages");
   imu_lab::ToolInput input = c.recording.tool_input(c.topics.imu);
@@ -131,13 +169,28 @@ int main(int argc, char** argv) {
                                  "relative to gravity and the Earth rate there; or fit the bias only "
                                  "(--no-scale-factor), which does not depend on the site");
     }
-    const auto data = imu_lab::ros_io::read_thermal_windows(c.recording.recording(), c.topics, c.windows);
+    if (c.fit.second_sensor_scale_factor && !c.fit.second_sensor_term) {
+      throw imu_lab::ConfigError("fit_thermal", "--second-sensor-scale-factor",
+                                 "needs the second thermosensor: give --second-temperature-topic");
+    }
+    if (c.fit.second_sensor_scale_factor && c.no_scale_factor) {
+      throw imu_lab::ConfigError("fit_thermal", "--second-sensor-scale-factor",
+                                 "is a scale-factor term; it cannot go with --no-scale-factor");
+    }
+    if (!c.fit.regime_switch.enabled && (app.count("--regime-threshold-c-s2") > 0 ||
+                                         app.count("--regime-window-s") > 0 || app.count("--regime-hold-s") > 0)) {
+      throw imu_lab::ConfigError("fit_thermal", "--regime-threshold-c-s2", "the regime options need --regime-switch");
+    }
+    const auto data =
+        imu_lab::ros_io::read_thermal_windows(c.recording.recording(), c.topics, c.windows, c.fit.regime_switch);
+    c.fit.regime_switch = data.regime_switch;
     input.topic = data.imu_topic;
     std::printf("fit_thermal: %s, %s\n", c.recording.recording().name().c_str(),
                 imu_lab::io::describe_time_window(c.recording.window).c_str());
     std::printf("fit_thermal: %zu IMU samples on %s, %zu temperature readings, %zu windows of %.6g s\n",
                 data.imu_messages, data.imu_topic.c_str(), data.temperature_messages, data.windows.size(),
                 c.windows.window_s);
+    print_regime(data);
     const auto result = imu_lab::thermal::fit_thermal_model(data.windows, c.windows.rate_window_s, c.fit);
     print_summary(result);
     for (const std::string& warning : result.warnings)

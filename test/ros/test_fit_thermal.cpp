@@ -45,6 +45,78 @@ TEST(FitThermalTool, FitsAMultiPositionTestAndWritesModelCsvAndPlot) {
   EXPECT_TRUE(test_support::file_exists(directory + "/thermal.png"));
 }
 
+// The regime switch (Golovach 2017 eqs. 3.18, 3.19) from the command line: the threshold derived
+// from the bag's thermosensor and printed, the model written with both regimes; then applied by
+// `correct`, which feeds the same indicator; and the refusals.
+TEST(FitThermalTool, FitsTheRegimeSwitchAndCorrectAppliesIt) {
+  const std::string bag =
+      emulated_bag("regime", "--profile " + kData + "/thermal/uncompensated_mems_gyro.yaml --scenario " + kData +
+                                 "/thermal/fit_multiposition.yaml --rate-hz 2 --seed 11");
+  const std::string directory = test_support::scratch_directory();
+  const std::string out = directory + "/regime.yaml";
+  const auto result = run_tool("fit_thermal", bag + " --out " + out +
+                                                  " --regime-switch --regime-hold-s 60 --latitude-deg 50.45 "
+                                                  "--second-temperature-topic /imu/temperature2 --order 2");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("regime switch: |d2T/dt2| over 300 s, from the data: threshold"), std::string::npos)
+      << result.output;
+  const auto model = thermal::load_thermal_model(out);
+  ASSERT_TRUE(model.regime_switch.enabled);
+  EXPECT_GT(model.regime_switch.threshold_c_s2, 0.0);
+  EXPECT_EQ(model.regime_switch.hold_s, 60.0);
+  EXPECT_EQ(model.dynamic_accelerometer[0].bias_polynomial.size(), 2u);
+  EXPECT_EQ(model.dynamic_accelerometer[0].bias_second_sensor_polynomial.size(), 1u);
+  const std::string text = test_support::read_file(out);
+  EXPECT_NE(text.find("dynamic.bias_polynomial[0]"), std::string::npos);
+  const auto applied = run_tool("correct", bag + " --thermal-model " + out +
+                                               " --second-temperature-topic /imu/temperature2 "
+                                               "--out " +
+                                               directory + "/regime_corrected.bag");
+  EXPECT_EQ(applied.exit_code, 0) << applied.output;
+  // The refusals: arguments, exit code, what the message must say.
+  struct Refusal {
+    std::string arguments;
+    int exit_code;
+    std::string says;
+  };
+  const Refusal refusals[] = {
+      // A threshold no temperature change reaches: the dynamic regime is empty.
+      {"--regime-switch --regime-threshold-c-s2 1 --no-scale-factor", 1,
+       "the dynamic regime (|d2T/dt2| above 1 degC/s^2, hold 0 s) holds 0 static windows"},
+      {"--regime-switch --regime-threshold-c-s2 0 --no-scale-factor", 2, "--regime-threshold-c-s2"},
+      {"--regime-hold-s 10 --no-scale-factor", 2, "need --regime-switch"},
+      {"--second-sensor-scale-factor --latitude-deg 50.45", 2, "give --second-temperature-topic"},
+      // Positions at the soaks only: the two sensors agree there, the second-sensor scale factor
+      // is not separable, and the refusal says what it needs.
+      {"--latitude-deg 50.45 --second-temperature-topic /imu/temperature2 --second-sensor-scale-factor --order 2", 1,
+       "while the two sensors disagree"},
+  };
+  for (const Refusal& refusal : refusals) {
+    const std::string refused_out = directory + "/refused.yaml";
+    const auto refused = run_tool("fit_thermal", bag + " --out " + refused_out + " " + refusal.arguments);
+    EXPECT_EQ(refused.exit_code, refusal.exit_code) << refusal.arguments << "\n" << refused.output;
+    EXPECT_NE(refused.output.find(refusal.says), std::string::npos) << refusal.arguments << "\n" << refused.output;
+    EXPECT_FALSE(test_support::file_exists(refused_out)) << refusal.arguments;
+  }
+}
+
+// The scale factor in the second thermosensor on a test that turns the IMU through the ramps.
+TEST(FitThermalTool, FitsTheSecondSensorScaleFactorOnATumblingTest) {
+  const std::string bag =
+      emulated_bag("tumbling", "--profile " + kData + "/thermal/uncompensated_mems_gyro.yaml --scenario " + kData +
+                                   "/thermal/tumbling_second_sensor.yaml --rate-hz 2 --seed 12");
+  const std::string out = test_support::scratch_directory() + "/tumbling.yaml";
+  const auto result = run_tool("fit_thermal", bag + " --out " + out +
+                                                  " --latitude-deg 50.45 --precise-revisits --order 2 "
+                                                  "--second-temperature-topic /imu/temperature2 "
+                                                  "--second-sensor-scale-factor");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const auto model = thermal::load_thermal_model(out);
+  for (int axis = 0; axis < 3; ++axis)
+    EXPECT_EQ(model.accelerometer[axis].scale_factor_second_sensor_polynomial_ppm.size(), 1u);
+  EXPECT_NE(test_support::read_file(out).find("scale_factor_second_sensor_polynomial_ppm[0]"), std::string::npos);
+}
+
 TEST(FitThermalTool, RefusesScaleFactorFromOneOrientationButFitsTheBias) {
   const std::string bag = emulated_bag("chamber", "--scenario thermal_chamber --rate-hz 1 --seed 12");
   const std::string out = test_support::scratch_directory() + "/model.yaml";

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "imu_lab/emulator/imu_emulator.h"
 #include "imu_lab/emulator/thermal_profile.h"
 #include "imu_lab/thermal/thermal_fit.h"
+#include "imu_lab/thermal/thermal_regime.h"
 #include "imu_lab/thermal/thermal_windows.h"
 
 #ifndef IMU_LAB_CONFIG_DIR
@@ -66,8 +68,10 @@ inline ThermalRun emulate_thermal_run(const emulator::SensorProfile& profile, co
     const double rate_c_s =
         (temperatures.sensor_temperature_c((k + 1) * dt) - temperatures.sensor_temperature_c(k * dt)) / dt;
     const auto effect = [&](const emulator::ThermalSensitivity& thermal, const Eigen::Vector3d& input) {
-      return Eigen::Vector3d(thermal.bias(sample.temperature_c, rate_c_s) +
-                             1e-6 * thermal.scale_factor_ppm(sample.temperature_c, rate_c_s).cwiseProduct(input));
+      const auto second_c = sample.second_temperature_c;
+      return Eigen::Vector3d(
+          thermal.bias(sample.temperature_c, rate_c_s, second_c) +
+          1e-6 * thermal.scale_factor_ppm(sample.temperature_c, rate_c_s, second_c).cwiseProduct(input));
     };
     run.true_gyro_effect_rad_s.push_back(effect(profile.gyro.thermal, sample.truth.angular_rate_rad_s));
     run.true_accelerometer_effect_m_s2.push_back(
@@ -76,10 +80,12 @@ inline ThermalRun emulate_thermal_run(const emulator::SensorProfile& profile, co
   return run;
 }
 
+// `regime` (may be null): the indicator, already fed with run.temperature (update_all).
 inline std::vector<thermal::ThermalWindow> windows_of(const ThermalRun& run, const thermal::WindowSettings& settings,
-                                                      bool with_second_sensor) {
+                                                      bool with_second_sensor,
+                                                      const thermal::RegimeIndicator* regime = nullptr) {
   thermal::ThermalWindowAverager averager(settings, run.temperature,
-                                          with_second_sensor ? &run.second_temperature : nullptr);
+                                          with_second_sensor ? &run.second_temperature : nullptr, regime);
   for (const auto& reading : run.readings) averager.add(reading);
   return averager.finish();
 }
@@ -90,6 +96,7 @@ struct EffectSeries {
   std::vector<std::array<double, 6>> truth, removed;
   std::vector<double> rate_c_s;
   std::vector<bool> clamped;
+  std::vector<double> dynamic_fraction;  // of the window's samples in the dynamic regime (regime-switch model)
 };
 
 inline EffectSeries model_effect(const ThermalRun& run, const thermal::ThermalModel& model, double window_s) {
@@ -97,9 +104,14 @@ inline EffectSeries model_effect(const ThermalRun& run, const thermal::ThermalMo
   const std::int64_t start_ns = run.readings.front().stamp_ns;
   long current = -1;
   std::array<double, 6> truth{}, removed{};
-  double rate_sum = 0.0;
+  double rate_sum = 0.0, dynamic_count = 0.0;
   int count = 0;
   bool clamped = false;
+  std::optional<thermal::RegimeIndicator> regime;
+  if (model.regime_switch.enabled) {
+    regime.emplace(model.regime_switch);
+    regime->update_all(run.temperature);
+  }
   const auto close = [&] {
     if (count == 0) return;
     for (int i = 0; i < 6; ++i) {
@@ -110,9 +122,10 @@ inline EffectSeries model_effect(const ThermalRun& run, const thermal::ThermalMo
     out.removed.push_back(removed);
     out.rate_c_s.push_back(rate_sum / count);
     out.clamped.push_back(clamped);
+    out.dynamic_fraction.push_back(dynamic_count / count);
     truth.fill(0.0);
     removed.fill(0.0);
-    rate_sum = 0.0;
+    rate_sum = dynamic_count = 0.0;
     count = 0;
     clamped = false;
   };
@@ -128,6 +141,8 @@ inline EffectSeries model_effect(const ThermalRun& run, const thermal::ThermalMo
     input.rate_c_s = run.temperature.rate_at(reading.stamp_ns, model.rate_window_s);
     if (!run.second_temperature.empty())
       input.second_temperature_c = run.second_temperature.temperature_at(reading.stamp_ns, 1.0);
+    input.dynamic_regime = regime && regime->dynamic_at(reading.stamp_ns);
+    dynamic_count += input.dynamic_regime ? 1.0 : 0.0;
     const auto corrected = thermal::correct(model, reading.angular_rate_rad_s, reading.specific_force_m_s2, input);
     for (int i = 0; i < 3; ++i) {
       truth[i] += run.true_gyro_effect_rad_s[k][i];

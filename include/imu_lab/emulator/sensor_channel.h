@@ -18,6 +18,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,7 @@ namespace emulator {
 struct SensorTemperature {
   double temperature_c = 0.0;
   double rate_c_s = 0.0;
+  std::optional<double> second_temperature_c;  // of the second thermosensor, if the scenario has one
 };
 
 class TriadChannel {

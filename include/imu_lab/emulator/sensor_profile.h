@@ -23,6 +23,10 @@ namespace emulator {
 //   bias         += sum_k bias_polynomial[k] dT^(k+1) + bias_per_temperature_rate * dT/dt   [u]
 //   scale factor += sum_k scale_factor_polynomial_ppm[k] dT^(k+1)
 //                   + scale_factor_ppm_per_temperature_rate * dT/dt                         [ppm]
+// and, in the second thermosensor's dT2 = T2 - T_ref (a part of the IMU lagging the first, the ADC
+// board of eq. 4.1; without a second sensor in the scenario, T2 = T):
+//   bias         += sum_k bias_second_sensor_polynomial[k] dT2^(k+1)                       [u]
+//   scale factor += sum_k scale_factor_second_sensor_polynomial_ppm[k] dT2^(k+1)            [ppm]
 // Empty polynomials and zero rate terms (the default) leave the triad temperature-independent.
 struct ThermalSensitivity {
   double reference_temperature_c = 20.0;
@@ -30,9 +34,17 @@ struct ThermalSensitivity {
   std::vector<Eigen::Vector3d> scale_factor_polynomial_ppm;                         // row k: [ppm / degC^(k+1)]
   Eigen::Vector3d bias_per_temperature_rate = Eigen::Vector3d::Zero();              // [u / (degC/s)]
   Eigen::Vector3d scale_factor_ppm_per_temperature_rate = Eigen::Vector3d::Zero();  // [ppm / (degC/s)]
+  std::vector<Eigen::Vector3d> bias_second_sensor_polynomial;                       // row k: [u / degC^(k+1)] in dT2
+  std::vector<Eigen::Vector3d> scale_factor_second_sensor_polynomial_ppm;           // row k: [ppm / degC^(k+1)] in dT2
 
-  Eigen::Vector3d bias(double temperature_c, double temperature_rate_c_s) const;
-  Eigen::Vector3d scale_factor_ppm(double temperature_c, double temperature_rate_c_s) const;
+  bool uses_second_sensor() const {
+    return !bias_second_sensor_polynomial.empty() || !scale_factor_second_sensor_polynomial_ppm.empty();
+  }
+  // second_temperature_c: empty = the same as temperature_c (no second sensor in the scenario).
+  Eigen::Vector3d bias(double temperature_c, double temperature_rate_c_s,
+                       std::optional<double> second_temperature_c = std::nullopt) const;
+  Eigen::Vector3d scale_factor_ppm(double temperature_c, double temperature_rate_c_s,
+                                   std::optional<double> second_temperature_c = std::nullopt) const;
 };
 
 // One triad (gyro or accelerometer). "u" = rad/s (gyro) or m/s^2 (accelerometer); "v" = rad or m/s.

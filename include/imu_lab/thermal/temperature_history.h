@@ -26,6 +26,9 @@ class TemperatureHistory {
   std::size_t size() const { return stamps_ns_.size(); }
   std::int64_t oldest_stamp_ns() const { return stamps_ns_.front(); }
   std::int64_t newest_stamp_ns() const { return stamps_ns_.back(); }
+  // The kept readings, oldest first.
+  std::int64_t stamp_ns_at(std::size_t index) const { return stamps_ns_[index]; }
+  double temperature_c_at(std::size_t index) const { return temperatures_c_[index]; }
 
   // Distance in seconds from stamp_ns to the nearest reading (infinite when empty).
   double age_at(std::int64_t stamp_ns) const;
@@ -37,6 +40,11 @@ class TemperatureHistory {
   // and robust to a quantised thermosensor). Uses no reading after stamp_s, so a live node
   // gets the same value as an offline pass. Zero until both halves have readings.
   double rate_at(std::int64_t stamp_ns, double window_s) const;
+  // Second derivative at stamp_ns from the readings in (stamp - window_s, stamp]: the means over
+  // its three thirds, (m3 - 2 m2 + m1) / (window_s / 3)^2 (exact for a parabola, causal as
+  // rate_at). Zero until the readings cover the whole window (one at or before its start).
+  double second_derivative_at(std::int64_t stamp_ns, double window_s) const;
+  double second_derivative_at(double, double) const = delete;
 
   // Forgets readings older than stamp_ns (keeps the one just before, for interpolation).
   void drop_before(std::int64_t stamp_ns);

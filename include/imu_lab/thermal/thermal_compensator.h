@@ -13,6 +13,7 @@
 
 #include "imu_lab/thermal/temperature_history.h"
 #include "imu_lab/thermal/thermal_model.h"
+#include "imu_lab/thermal/thermal_regime.h"
 #include "imu_lab/thermal/thermal_windows.h"
 
 namespace imu_lab {
@@ -27,6 +28,8 @@ struct CompensatedSample {
 
 class ThermalCompensator {
  public:
+  // A model with the regime switch gets its indicator (thermal_regime.h) fed by the main
+  // thermosensor; throws std::invalid_argument for bad regime settings.
   ThermalCompensator(ThermalModel model, double max_temperature_age_s);
 
   // Each returns the samples that became decidable, in stamp order. Out-of-order or non-finite
@@ -53,6 +56,7 @@ class ThermalCompensator {
   double max_temperature_age_s_;
   TemperatureHistory temperature_;
   TemperatureHistory second_temperature_;
+  std::optional<RegimeIndicator> regime_;
   std::deque<io::ImuRecord> waiting_;
   std::optional<std::int64_t> newest_imu_stamp_ns_;
 };

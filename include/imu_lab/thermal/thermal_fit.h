@@ -44,6 +44,13 @@ struct ThermalFitOptions {
   bool scale_factor_rate_term = false;
   bool second_sensor_term = false;  // a polynomial in the second, lagging thermosensor
   int second_sensor_order = 1;
+  // ... in the scale factor too (Golovach 2017 eq. 4.1): needs second_sensor_term, and opposite
+  // orientations while the two sensors disagree (during temperature changes), or its sigmas are large.
+  bool second_sensor_scale_factor = false;
+  // Golovach 2017 eqs. 3.18, 3.19: the bias terms fitted once per regime (the windows'
+  // dynamic_fraction, majority), sharing the constants and the scale-factor terms (a thermal test
+  // visits the opposite orientations at the soaks, so the dynamic regime cannot separate its own).
+  RegimeSwitchSettings regime_switch;
   bool gyro_scale_factor = false;  // from the Earth rate: observable only for navigation-grade gyros
   bool accelerometer_scale_factor = true;
   double min_span_per_order_c = 5.0;  // temperature span needed per polynomial order

@@ -2,8 +2,10 @@
 // 4.1). Per axis, with dT = T - T_ref (T the main thermosensor, T2 the optional second, lagging
 // one, dT2 = T2 - T_ref, and Tdot the rate of change of T):
 //   delta_bias  = sum_k b_k dT^(k+1) + b_rate Tdot + sum_k e_k dT2^(k+1)                [u]
-//   delta_scale = 1e-6 (sum_k s_k dT^(k+1) + s_rate Tdot)                                [-]
+//   delta_scale = 1e-6 (sum_k s_k dT^(k+1) + s_rate Tdot + sum_k f_k dT2^(k+1))          [-]
 //   corrected   = (raw - delta_bias) / (1 + delta_scale)
+// With the regime switch (Golovach 2017 eqs. 3.18, 3.19) a second set of terms applies while the
+// temperature's second derivative says the regime is dynamic (thermal_regime.h).
 // i.e. the output the sensor would give at the reference temperature: thermal compensation
 // comes first in the chain, calibration (bias, scale factor, misalignment) is fitted and
 // applied on compensated data. Outside the validity box seen in the thermal test, the inputs are
@@ -21,11 +23,12 @@ namespace imu_lab {
 namespace thermal {
 
 struct AxisThermalTerms {
-  std::vector<double> bias_polynomial;                 // row k: [u / degC^(k+1)]
-  double bias_per_temperature_rate = 0.0;              // [u / (degC/s)]
-  std::vector<double> bias_second_sensor_polynomial;   // row k: [u / degC^(k+1)] in dT2
-  std::vector<double> scale_factor_polynomial_ppm;     // row k: [ppm / degC^(k+1)]
-  double scale_factor_ppm_per_temperature_rate = 0.0;  // [ppm / (degC/s)]
+  std::vector<double> bias_polynomial;                            // row k: [u / degC^(k+1)]
+  double bias_per_temperature_rate = 0.0;                         // [u / (degC/s)]
+  std::vector<double> bias_second_sensor_polynomial;              // row k: [u / degC^(k+1)] in dT2
+  std::vector<double> scale_factor_polynomial_ppm;                // row k: [ppm / degC^(k+1)]
+  double scale_factor_ppm_per_temperature_rate = 0.0;             // [ppm / (degC/s)]
+  std::vector<double> scale_factor_second_sensor_polynomial_ppm;  // row k: [ppm / degC^(k+1)] in dT2
 };
 
 using TriadThermalTerms = std::array<AxisThermalTerms, 3>;
@@ -40,6 +43,15 @@ struct ThermalValidity {
   double second_temperature_max_c = 0.0;
 };
 
+// The regime switch of Golovach 2017 eqs. 3.18, 3.19: dynamic while |d2T/dt2| of the main
+// thermosensor, estimated causally over window_s, exceeded threshold_c_s2 within the last hold_s.
+struct RegimeSwitchSettings {
+  bool enabled = false;
+  double threshold_c_s2 = 0.0;  // [degC/s^2]
+  double window_s = 300.0;      // of the second-derivative estimate (TemperatureHistory)
+  double hold_s = 0.0;          // the thesis's delay: the dynamic regime outlasts the indicator
+};
+
 struct ThermalModel {
   double reference_temperature_c = 20.0;
   // The rate of change is estimated the same way in the fit and when applying (see
@@ -50,6 +62,10 @@ struct ThermalModel {
   ThermalValidity validity;
   TriadThermalTerms gyro;
   TriadThermalTerms accelerometer;
+  // Used instead of gyro / accelerometer in the dynamic regime (only with regime_switch.enabled).
+  RegimeSwitchSettings regime_switch;
+  TriadThermalTerms dynamic_gyro;
+  TriadThermalTerms dynamic_accelerometer;
 };
 
 // The thermosensor readings matched to one IMU sample by its stamp.
@@ -57,6 +73,7 @@ struct ThermalInput {
   double temperature_c = 0.0;
   double rate_c_s = 0.0;
   std::optional<double> second_temperature_c;
+  bool dynamic_regime = false;  // used only by a model with the regime switch
 };
 
 struct ThermalCorrection {

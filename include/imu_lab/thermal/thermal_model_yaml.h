@@ -6,7 +6,10 @@
 //              second_temperature_min_c, second_temperature_max_c (with the second sensor)}
 //   gyro / accelerometer: {x, y, z: {bias_polynomial_<u>: [per degC, per degC^2, ...],
 //              bias_per_temperature_rate_<u>_per_c_s, bias_second_sensor_polynomial_<u>,
-//              scale_factor_polynomial_ppm, scale_factor_ppm_per_temperature_rate_per_c_s}}
+//              scale_factor_polynomial_ppm, scale_factor_ppm_per_temperature_rate_per_c_s,
+//              scale_factor_second_sensor_polynomial_ppm (optional)}}
+//   regime_switch: {threshold_c_s2, window_s, hold_s} (optional; with it dynamic_gyro and
+//              dynamic_accelerometer, the same keys as gyro / accelerometer, for the dynamic regime)
 //   fit: (optional, written by fit_thermal and not read back) orders, residuals, uncertainties.
 #pragma once
 

@@ -12,6 +12,7 @@
 
 #include "imu_lab/io/imu_records.h"
 #include "imu_lab/thermal/temperature_history.h"
+#include "imu_lab/thermal/thermal_regime.h"
 
 namespace imu_lab {
 namespace thermal {
@@ -27,6 +28,8 @@ struct ThermalWindow {
   double temperature_c = 0.0;  // means over the window's samples
   double rate_c_s = 0.0;
   std::optional<double> second_temperature_c;
+  // Fraction of its samples in the dynamic regime (thermal_regime.h), when averaged with the indicator.
+  std::optional<double> dynamic_fraction;
   bool is_static = false;
 };
 
@@ -45,9 +48,9 @@ struct WindowSettings {
 
 class ThermalWindowAverager {
  public:
-  // The histories must outlive the averager; `second` may be null.
+  // The histories and the indicator must outlive the averager; `second` and `regime` may be null.
   ThermalWindowAverager(const WindowSettings& settings, const TemperatureHistory& temperature,
-                        const TemperatureHistory* second_temperature);
+                        const TemperatureHistory* second_temperature, const RegimeIndicator* regime = nullptr);
 
   // Samples in stamp order. Throws InputError when the temperature is stale at the sample's
   // stamp (no reading within max_temperature_age_s) or stamps go backwards.
@@ -61,6 +64,7 @@ class ThermalWindowAverager {
   WindowSettings settings_;
   const TemperatureHistory& temperature_;
   const TemperatureHistory* second_temperature_;
+  const RegimeIndicator* regime_;
   std::vector<ThermalWindow> windows_;
   std::optional<std::int64_t> first_stamp_ns_;
   std::int64_t last_stamp_ns_ = 0;
@@ -71,6 +75,7 @@ class ThermalWindowAverager {
   Eigen::Vector3d rate_offset_, force_offset_;  // first sample of the window, against cancellation
   // stamp_sum_: seconds after first_stamp_ns_
   double stamp_sum_ = 0.0, temperature_sum_ = 0.0, rate_c_s_sum_ = 0.0, second_sum_ = 0.0;
+  std::size_t dynamic_count_ = 0;
 };
 
 }  // namespace thermal

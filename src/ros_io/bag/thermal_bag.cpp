@@ -36,7 +36,8 @@ std::size_t read_temperatures(const BagRecording& recording, const std::string& 
 }  // namespace
 
 ThermalBagWindows read_thermal_windows(const BagRecording& recording, const ThermalBagTopics& topics,
-                                       const thermal::WindowSettings& settings) {
+                                       const thermal::WindowSettings& settings,
+                                       const thermal::RegimeSwitchSettings& regime_switch) {
   ThermalBagWindows out;
   out.imu_topic = choose_imu_topic(recording, topics.imu);
   // The thermosensors are read whole: the window (relative to the IMU's first stamp) selects IMU
@@ -46,7 +47,28 @@ ThermalBagWindows read_thermal_windows(const BagRecording& recording, const Ther
   const bool with_second = !topics.second_temperature.empty();
   if (with_second)
     read_temperatures(recording.whole(), topics.second_temperature, "second thermosensor", &second_temperature);
-  thermal::ThermalWindowAverager averager(settings, temperature, with_second ? &second_temperature : nullptr);
+  std::optional<thermal::RegimeIndicator> indicator;
+  out.regime_switch = regime_switch;
+  if (regime_switch.enabled) {
+    if (out.regime_switch.threshold_c_s2 == 0.0) {
+      out.suggested_threshold = thermal::suggest_regime_threshold(temperature, regime_switch.window_s);
+      out.regime_switch.threshold_c_s2 = out.suggested_threshold->threshold_c_s2;
+      if (!(out.regime_switch.threshold_c_s2 > 0.0)) {
+        throw InputError("bag " + recording.name() + ": the temperature on " + topics.temperature +
+                         " never changes its rate, so there is no dynamic regime to switch to and no threshold to "
+                         "derive; fit without the regime switch");
+      }
+    }
+    try {
+      indicator.emplace(out.regime_switch);
+    } catch (const std::invalid_argument& error) {
+      throw ConfigError("fit_thermal", "regime switch", error.what());
+    }
+    indicator->update_all(temperature);
+    out.readings_over_threshold = indicator->readings_over_threshold();
+  }
+  thermal::ThermalWindowAverager averager(settings, temperature, with_second ? &second_temperature : nullptr,
+                                          indicator ? &*indicator : nullptr);
   out.imu_messages =
       for_each_imu_strictly(recording, out.imu_topic, [&](const ImuRecord& record) { averager.add(record); });
   out.windows = averager.finish();
