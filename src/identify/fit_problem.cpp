@@ -22,8 +22,7 @@ namespace {
 constexpr double kShapeStep = 1e-4;  // central-difference step in a ln-shape
 
 // Model AVAR at each point and its derivative with respect to each ln-parameter (analytic in
-// the amplitudes, whose AVAR is proportional to amplitude^2, and in a resonance's shape; central
-// differences in the other shapes).
+// the amplitudes, whose AVAR is proportional to amplitude^2; central differences in the shapes).
 // Each term's AVAR is evaluated once per point and serves both the sum and its amplitude column;
 // the perturbed terms are built alone (this runs in every solver iteration).
 void model_and_jacobian(const std::vector<FitPoint>& points, const ModelStructure& structure,
@@ -49,17 +48,6 @@ void model_and_jacobian(const std::vector<FitPoint>& points, const ModelStructur
     const int offset = parameter_offset(structure, static_cast<int>(i));
     const int parameters = slot_parameter_count(structure.slots[i]);
     for (int k = 0; k < count; ++k) (*jacobian)(k, offset) = 2.0 * term_values(i, k);
-    if (structure.slots[i].kind == TermKind::kResonance && parameters == 3) {
-      // In closed form: a mode's five AVAR evaluations per point were the fit's largest cost.
-      const Term& term = model.terms[i];
-      for (int k = 0; k < count; ++k) {
-        const noise::ResonanceAvarLogGradient gradient =
-            noise::resonance_avar_log_gradient(term.amplitude, term.shape, term.width, points[k].tau_s);
-        (*jacobian)(k, offset + 1) = gradient.log_natural_frequency;
-        (*jacobian)(k, offset + 2) = gradient.log_relative_width;
-      }
-      continue;
-    }
     for (int p = 1; p < parameters; ++p) {
       std::array<double, 3> up{}, down{};
       std::copy(log_parameters.begin() + offset, log_parameters.begin() + offset + parameters, up.begin());

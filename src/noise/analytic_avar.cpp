@@ -4,7 +4,6 @@
 #include <complex>
 #include <stdexcept>
 #include <string>
-#include <utility>
 
 #include <boost/math/special_functions/hypergeometric_1F1.hpp>
 
@@ -172,33 +171,6 @@ double resonance_angle_correlation(double natural_frequency_hz, double width_hz,
   const double exponent = -zeta * omega_n * u;
   if (exponent < -746.0) return 0.0;
   return std::exp(exponent) * (std::cos(omega_n * root * u) + zeta / root * std::sin(omega_n * root * u));
-}
-
-ResonanceAvarLogGradient resonance_avar_log_gradient(double rms, double natural_frequency_hz, double width_hz,
-                                                     double tau) {
-  if (!(width_hz > 0.0) || !(width_hz < 2.0 * natural_frequency_hz)) {
-    throw std::invalid_argument("resonance: need 0 < width < 2 natural frequency (underdamped)");
-  }
-  const double omega_n = 2.0 * kPi * natural_frequency_hz;
-  const double zeta = width_hz / (2.0 * natural_frequency_hz);
-  const double root = std::sqrt(1.0 - zeta * zeta);
-  // Sums over (3 - 4 rho(tau) + rho(2 tau)) of rho and its two derivatives.
-  double rho_sum = 3.0, frequency_sum = 0.0, zeta_sum = 0.0;
-  for (const auto& [u, weight] : {std::pair<double, double>{tau, -4.0}, {2.0 * tau, 1.0}}) {
-    const double exponent = -zeta * omega_n * u;
-    if (exponent < -746.0) continue;  // the envelope is exactly 0 (resonance_angle_correlation)
-    const double envelope = std::exp(exponent);
-    const double phase = omega_n * root * u;
-    const double sine = std::sin(phase), cosine = std::cos(phase);
-    rho_sum += weight * envelope * (cosine + zeta / root * sine);
-    frequency_sum += weight * -(omega_n * u / root) * envelope * sine;
-    zeta_sum += weight * envelope * (sine / (root * root * root) - omega_n * u * cosine / (root * root));
-  }
-  const double angle_variance = std::pow(rms / omega_n, 2) / (tau * tau);
-  ResonanceAvarLogGradient gradient;
-  gradient.log_natural_frequency = angle_variance * (frequency_sum - 2.0 * rho_sum);
-  gradient.log_relative_width = angle_variance * zeta * zeta_sum;  // d zeta / d ln(width / f_n) = zeta
-  return gradient;
 }
 
 double resonance_avar(double rms, double natural_frequency_hz, double width_hz, double tau) {

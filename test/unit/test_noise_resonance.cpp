@@ -8,7 +8,6 @@
 #include <Eigen/Dense>
 #include <unsupported/Eigen/FFT>
 #include <unsupported/Eigen/MatrixFunctions>
-#include <algorithm>
 #include <cmath>
 
 #include "imu_lab/allan/edf.h"
@@ -205,35 +204,6 @@ TEST(NoiseHighPassWhite, AvarMatchesTable73) {
   double sum_squares = 0.0;
   for (double r : rates) sum_squares += r * r;
   EXPECT_NEAR(sum_squares / rates.size() / process->sample_variance(tau0), 1.0, 5.0 * std::sqrt(2.0 / rates.size()));
-}
-
-// The closed-form derivatives the noise fit's Jacobian uses against central differences of
-// resonance_avar in the log-parameters. A step of 1e-6 leaves a truncation error near
-// 1e-13 (w_n tau)^3 and a rounding error near 1e-16 / 1e-6 of 3 - 4 rho + rho_2 (up to 3e-8 of the
-// AVAR at tau0, where it nearly cancels): under the 1e-6 of the AVAR allowed here up to w_n tau = 40,
-// at sharp and broad modes (a wrong term is of the order of the AVAR itself).
-TEST(NoiseResonance, LogGradientMatchesCentralDifferences) {
-  constexpr double kStep = 1e-6;
-  double worst = 0.0;
-  for (double relative_width : {0.03, 0.3, 1.5}) {
-    for (double tau : {0.0025, 0.01, 0.03, 0.1, 0.3}) {
-      const double rms = 2e-3, frequency = 20.0;
-      const auto avar = [&](double log_frequency, double log_relative_width) {
-        const double f = frequency * std::exp(log_frequency);
-        return resonance_avar(rms, f, f * relative_width * std::exp(log_relative_width), tau);
-      };
-      const double value = avar(0.0, 0.0);
-      const double by_frequency = (avar(kStep, 0.0) - avar(-kStep, 0.0)) / (2.0 * kStep);
-      const double by_width = (avar(0.0, kStep) - avar(0.0, -kStep)) / (2.0 * kStep);
-      const ResonanceAvarLogGradient gradient =
-          resonance_avar_log_gradient(rms, frequency, frequency * relative_width, tau);
-      EXPECT_NEAR(gradient.log_natural_frequency, by_frequency, 1e-6 * value) << relative_width << " " << tau;
-      EXPECT_NEAR(gradient.log_relative_width, by_width, 1e-6 * value) << relative_width << " " << tau;
-      worst = std::max({worst, std::abs(gradient.log_natural_frequency - by_frequency) / value,
-                        std::abs(gradient.log_relative_width - by_width) / value});
-    }
-  }
-  std::printf("[gradient] worst |closed form - central difference| / AVAR = %.2e\n", worst);
 }
 
 }  // namespace

@@ -66,16 +66,6 @@ double output_quantization_avar(double lsb, double tau_s, double tau0_s);
 double resonance_avar(double rms, double natural_frequency_hz, double width_hz, double tau_s);
 // rho(u) above; throws std::invalid_argument unless 0 < width_hz < 2 natural_frequency_hz.
 double resonance_angle_correlation(double natural_frequency_hz, double width_hz, double lag_s);
-// d resonance_avar / d ln f_n (width / f_n held) and d resonance_avar / d ln(width / f_n) (f_n
-// held), in closed form: with E = e^{-zeta w_n u}, s = sqrt(1 - zeta^2) and the phase w_d u,
-// d rho / d ln f_n = -(w_n u / s) E sin, d rho / d zeta = E (sin / s^3 - w_n u cos / s^2), and
-// (rms / w_n)^2 gives -2 AVAR to the first. The noise fit's Jacobian (identify/fit_problem.h).
-struct ResonanceAvarLogGradient {
-  double log_natural_frequency = 0.0;
-  double log_relative_width = 0.0;
-};
-ResonanceAvarLogGradient resonance_avar_log_gradient(double rms, double natural_frequency_hz, double width_hz,
-                                                     double tau_s);
 
 }  // namespace noise
 }  // namespace imu_lab
