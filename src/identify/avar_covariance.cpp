@@ -167,6 +167,23 @@ LagReach lag_reach(const std::vector<Term>& terms, double tau0_s) {
   return reach;
 }
 
+// A lag at which the lag sums evaluate D, prepared once for every unit of a batch.
+struct LagArgument {
+  double lag_s = 0.0;          // |lag| tau0
+  long long integer_lag = -1;  // |lag| if it is an integer (a truncating cast is cheaper than std::round)
+};
+
+LagArgument lag_argument(double lag, double tau0_s) {
+  const double magnitude = std::abs(lag);
+  LagArgument argument;
+  argument.lag_s = magnitude * tau0_s;
+  if (magnitude < 0x1p62) {
+    const long long integer = static_cast<long long>(magnitude);
+    if (static_cast<double>(integer) == magnitude) argument.integer_lag = integer;
+  }
+  return argument;
+}
+
 // One unit-amplitude term's D at integer lags 0..size-1 (the exact windows ask for these, most
 // of them short), its settled form elsewhere: beyond 30 decay times a short-memory term sits on its
 // asymptote, cheaper than the exact form. The lag sums call this tens of millions of times per
@@ -211,18 +228,15 @@ class UnitTable {
       }
     }
   }
-  double at(double lag) const {
-    const double magnitude = std::abs(lag);
-    // An integer lag inside the table (a truncating cast is cheaper than std::round here).
-    if (magnitude < table_size_) {
-      const size_t index = static_cast<size_t>(magnitude);
-      if (static_cast<double>(index) == magnitude) {
-        double& value = values_[index];
-        if (std::isnan(value)) value = exact(index * tau0_s_);
-        return value;
-      }
+  double at(const LagArgument& argument) const {
+    // An integer lag inside the table.
+    if (argument.integer_lag >= 0 && static_cast<double>(argument.integer_lag) < table_size_) {
+      const size_t index = static_cast<size_t>(argument.integer_lag);
+      double& value = values_[index];
+      if (std::isnan(value)) value = exact(index * tau0_s_);
+      return value;
     }
-    return settled(magnitude * tau0_s_);
+    return settled(argument.lag_s);
   }
   const Term& unit() const { return unit_; }
 
@@ -650,6 +664,7 @@ struct OavarCovariance::Cache {
     }
     std::vector<std::pair<double, double>> lags;  // (h, quadrature weight)
     std::vector<double> counted;                  // weight times the count of pairs at h
+    std::vector<LagArgument> arguments;           // per lag, D's nine arguments
     std::vector<const double*> c(units.size());
     std::vector<double> sums(missing.size()), linear_sums(linear_missing.size());
     for (int i = 0; i < count; ++i) {
@@ -673,15 +688,25 @@ struct OavarCovariance::Cache {
                    [&](double h, double weight) {
                      lags.push_back({h, weight});
                    });
+        constexpr size_t kOffsets = std::tuple_size<decltype(pair.offsets)>::value;
+        arguments.clear();
         for (int index : involved) {
           if (fresh[index] && (*fresh[index])[i * count + j].empty()) {
+            if (arguments.empty()) {  // the nine lags of each visited lag, shared by the units
+              arguments.resize(kOffsets * lags.size());
+              for (size_t p = 0; p < lags.size(); ++p) {
+                for (size_t k = 0; k < kOffsets; ++k) {
+                  arguments[kOffsets * p + k] = lag_argument(lags[p].first + pair.offsets[k], tau0_s);
+                }
+              }
+            }
             std::vector<double>& values = (*fresh[index])[i * count + j];
             values.resize(lags.size());
             const UnitTable& unit_table = *involved_tables[index];
             for (size_t p = 0; p < lags.size(); ++p) {
               double value = 0.0;
-              for (size_t k = 0; k < pair.offsets.size(); ++k) {
-                value += pair.weights[k] * unit_table.at(lags[p].first + pair.offsets[k]);
+              for (size_t k = 0; k < kOffsets; ++k) {
+                value += pair.weights[k] * unit_table.at(arguments[kOffsets * p + k]);
               }
               values[p] = value * pair.scale;
             }
