@@ -169,50 +169,116 @@ LagReach lag_reach(const std::vector<Term>& terms, double tau0_s) {
   return reach;
 }
 
-// D at a lag where the short-memory terms have settled on their asymptotes (beyond 30 decay
-// times), cheaper than the exact form.
-double settled_term_structure_function(const Term& term, double u, double tau0_s) {
-  constexpr double kSettledDecayTimes = 30.0;
-  const double decay_s = decay_time_s(term);
-  if (decay_s > 0.0 && u > kSettledDecayTimes * decay_s) {
-    const double a2 = term.amplitude * term.amplitude;
-    if (term.kind == TermKind::kResonance) {
-      const double angle_sigma = term.amplitude / (2.0 * kPi * term.shape);
-      return 2.0 * angle_sigma * angle_sigma;
-    }
-    if (term.kind == TermKind::kMarkov || term.kind == TermKind::kWhiteRate) return a2 * (u - decay_s);
+// A lag at which the lag sums evaluate D, prepared once for every unit of a batch.
+struct LagArgument {
+  double lag_s = 0.0;          // |lag| tau0
+  long long integer_lag = -1;  // |lag| if it is an integer (a truncating cast is cheaper than std::round)
+};
+
+LagArgument lag_argument(double lag, double tau0_s) {
+  const double magnitude = std::abs(lag);
+  LagArgument argument;
+  argument.lag_s = magnitude * tau0_s;
+  if (magnitude < 0x1p62) {
+    const long long integer = static_cast<long long>(magnitude);
+    if (static_cast<double>(integer) == magnitude) argument.integer_lag = integer;
   }
-  return term_structure_function(term, u, tau0_s);
+  return argument;
 }
 
 // One unit-amplitude term's D at integer lags 0..size-1 (the exact windows ask for these, most
-// of them short), its settled form elsewhere.
+// of them short), its settled form elsewhere: beyond 30 decay times a short-memory term sits on its
+// asymptote, cheaper than the exact form. The lag sums call this tens of millions of times per
+// record, so the unit's kind, decay time and asymptote are resolved once (the same operations as
+// term_structure_function, hence the same doubles).
 class UnitTable {
  public:
   // Entries are filled when first asked for (NaN until then): the sums visit a small part of them.
   UnitTable(const Term& unit, double tau0_s, long long size)
       : unit_(unit),
         tau0_s_(tau0_s),
-        values_(static_cast<size_t>(std::max(1LL, size)), std::numeric_limits<double>::quiet_NaN()) {}
-  double at(double lag) const {
-    const double magnitude = std::abs(lag);
-    // An integer lag inside the table (a truncating cast is cheaper than std::round here).
-    if (magnitude < static_cast<double>(values_.size())) {
-      const size_t index = static_cast<size_t>(magnitude);
-      if (static_cast<double>(index) == magnitude) {
-        double& value = values_[index];
-        if (std::isnan(value)) value = term_structure_function(unit_, index * tau0_s_, tau0_s_);
-        return value;
+        values_(static_cast<size_t>(std::max(1LL, size)), std::numeric_limits<double>::quiet_NaN()),
+        table_size_(static_cast<double>(values_.size())) {
+    constexpr double kSettledDecayTimes = 30.0;
+    const double decay_s = decay_time_s(unit);
+    if (decay_s > 0.0) {
+      settled_from_s_ = kSettledDecayTimes * decay_s;
+      if (unit.kind == TermKind::kResonance) {
+        const double angle_sigma = unit.amplitude / (2.0 * kPi * unit.shape);
+        settled_constant_ = 2.0 * angle_sigma * angle_sigma;
+        settled_ = Settled::kConstant;
+      } else if (unit.kind == TermKind::kMarkov || unit.kind == TermKind::kWhiteRate) {
+        settled_scale_ = unit.amplitude * unit.amplitude;
+        settled_offset_s_ = decay_s;
+        settled_ = Settled::kLinear;
       }
     }
-    return settled_term_structure_function(unit_, magnitude * tau0_s_, tau0_s_);
+    if (unit.amplitude == 1.0) {
+      switch (unit.kind) {
+        case TermKind::kWhiteAngle: exact_ = Exact::kWhiteAngle; break;
+        case TermKind::kWhiteRate:
+          exact_ = unit.shape > 0.0 ? Exact::kMarkov : Exact::kWhite;
+          if (unit.shape > 0.0) correlation_time_s_ = 1.0 / (2.0 * kPi * unit.shape);
+          break;
+        case TermKind::kBiasInstability: exact_ = Exact::kFlicker; break;
+        case TermKind::kRandomWalk: exact_ = Exact::kRandomWalk; break;
+        case TermKind::kMarkov:
+          exact_ = Exact::kMarkov;
+          correlation_time_s_ = unit.shape;
+          break;
+        default: break;
+      }
+    }
+  }
+  double at(const LagArgument& argument) const {
+    // An integer lag inside the table.
+    if (argument.integer_lag >= 0 && static_cast<double>(argument.integer_lag) < table_size_) {
+      const size_t index = static_cast<size_t>(argument.integer_lag);
+      double& value = values_[index];
+      if (std::isnan(value)) value = exact(index * tau0_s_);
+      return value;
+    }
+    return settled(argument.lag_s);
   }
   const Term& unit() const { return unit_; }
 
  private:
+  enum class Settled { kNever, kConstant, kLinear };
+  enum class Exact { kGeneral, kWhiteAngle, kWhite, kFlicker, kRandomWalk, kMarkov };
+
+  // term_structure_function(unit_, u, tau0_s_) for u >= 0 (a unit amplitude squared is 1).
+  double exact(double u) const {
+    constexpr double a2 = 1.0;
+    switch (exact_) {
+      case Exact::kWhiteAngle: return u < 0.5 * tau0_s_ ? 0.0 : 2.0 * a2;
+      case Exact::kWhite: return a2 * u;
+      case Exact::kFlicker: return u > 0.0 ? -a2 / kPi * u * u * std::log(u) : 0.0;
+      case Exact::kRandomWalk: return -a2 * u * u * u / 6.0;
+      case Exact::kMarkov: return a2 * markov_excess(u, correlation_time_s_);
+      case Exact::kGeneral: break;
+    }
+    return term_structure_function(unit_, u, tau0_s_);
+  }
+  // D(u), on the asymptote where the term has settled.
+  double settled(double u) const {
+    if (settled_ != Settled::kNever && u > settled_from_s_) {
+      if (settled_ == Settled::kConstant) return settled_constant_;
+      return settled_scale_ * (u - settled_offset_s_);
+    }
+    return exact(u);
+  }
+
   Term unit_;
   double tau0_s_;
   mutable std::vector<double> values_;
+  double table_size_;
+  Settled settled_ = Settled::kNever;
+  double settled_from_s_ = 0.0;
+  double settled_constant_ = 0.0;
+  double settled_scale_ = 0.0;  // amplitude^2
+  double settled_offset_s_ = 0.0;
+  Exact exact_ = Exact::kGeneral;
+  double correlation_time_s_ = 0.0;  // a Markov term's, or a front end's 1 / (2 pi f_c)
 };
 
 // The stochastic terms of a model as (unit term, weight = amplitude^2); the output quantization
@@ -600,6 +666,7 @@ struct OavarCovariance::Cache {
     }
     std::vector<std::pair<double, double>> lags;  // (h, quadrature weight)
     std::vector<double> counted;                  // weight times the count of pairs at h
+    std::vector<LagArgument> arguments;           // per lag, D's nine arguments
     std::vector<const double*> c(units.size());
     std::vector<double> sums(missing.size()), linear_sums(linear_missing.size());
     for (int i = 0; i < count; ++i) {
@@ -623,16 +690,27 @@ struct OavarCovariance::Cache {
                    [&](double h, double weight) {
                      lags.push_back({h, weight});
                    });
+        constexpr size_t kOffsets = std::tuple_size<decltype(pair.offsets)>::value;
+        arguments.clear();
         for (int index : involved) {
           if (fresh[index] && (*fresh[index])[i * count + j].empty()) {
-            std::vector<double>& values = (*fresh[index])[i * count + j];
-            values.reserve(lags.size());
-            for (const auto& lag : lags) {
-              double value = 0.0;
-              for (size_t k = 0; k < pair.offsets.size(); ++k) {
-                value += pair.weights[k] * involved_tables[index]->at(lag.first + pair.offsets[k]);
+            if (arguments.empty()) {  // the nine lags of each visited lag, shared by the units
+              arguments.resize(kOffsets * lags.size());
+              for (size_t p = 0; p < lags.size(); ++p) {
+                for (size_t k = 0; k < kOffsets; ++k) {
+                  arguments[kOffsets * p + k] = lag_argument(lags[p].first + pair.offsets[k], tau0_s);
+                }
               }
-              values.push_back(value * pair.scale);
+            }
+            std::vector<double>& values = (*fresh[index])[i * count + j];
+            values.resize(lags.size());
+            const UnitTable& unit_table = *involved_tables[index];
+            for (size_t p = 0; p < lags.size(); ++p) {
+              double value = 0.0;
+              for (size_t k = 0; k < kOffsets; ++k) {
+                value += pair.weights[k] * unit_table.at(arguments[kOffsets * p + k]);
+              }
+              values[p] = value * pair.scale;
             }
           }
           c[index] = (*kept[index])[i * count + j].data();

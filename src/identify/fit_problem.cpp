@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -79,29 +80,60 @@ class MomentCost : public ceres::CostFunction {
     mutable_parameter_block_sizes()->push_back(parameter_count(structure));
   }
 
+  // Ceres evaluates every accepted point three times at the same bits: its projected line search's
+  // trial (with the gradient, for the cubic interpolation), the candidate's cost, and the new
+  // iterate's Jacobian. The last evaluation is remembered and served again: the same numbers.
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
     const int count = parameter_count(structure_);
-    const std::vector<double> log_parameters(parameters[0], parameters[0] + count);
     const bool want_jacobian = jacobians != nullptr && jacobians[0] != nullptr;
-    Eigen::VectorXd model;
-    Eigen::MatrixXd jacobian;
-    model_and_jacobian(points_, structure_, log_parameters, &model, want_jacobian ? &jacobian : nullptr);
-    if (!model.allFinite()) return false;
-    if (!(model.minCoeff() > 0.0)) return false;
-    Eigen::Map<Eigen::VectorXd>(residuals, model.size()) = whitening_ * (moments_ - model.array().log().matrix());
+    const bool same_point = last_.evaluated && (!want_jacobian || last_.with_jacobian) &&
+                            std::memcmp(last_.parameters.data(), parameters[0], count * sizeof(double)) == 0;
+    if (!same_point) evaluate(parameters[0], want_jacobian);
+    if (!(want_jacobian ? last_.jacobian_usable : last_.residuals_usable)) return false;
+    Eigen::Map<Eigen::VectorXd>(residuals, last_.residuals.size()) = last_.residuals;
     if (want_jacobian) {
-      if (!jacobian.allFinite()) return false;
-      Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-          jacobians[0], model.size(), count) = -whitening_ * (model.cwiseInverse().asDiagonal() * jacobian);
+      Eigen::Map<RowMajorMatrix>(jacobians[0], last_.jacobian.rows(), last_.jacobian.cols()) = last_.jacobian;
     }
     return true;
   }
 
  private:
+  using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+  void evaluate(const double* parameters, bool with_jacobian) const {
+    const int count = parameter_count(structure_);
+    last_.parameters.assign(parameters, parameters + count);
+    last_.evaluated = true;
+    last_.with_jacobian = with_jacobian;
+    last_.residuals_usable = last_.jacobian_usable = false;
+    Eigen::VectorXd model;
+    Eigen::MatrixXd jacobian;
+    model_and_jacobian(points_, structure_, last_.parameters, &model, with_jacobian ? &jacobian : nullptr);
+    if (!model.allFinite()) return;
+    if (!(model.minCoeff() > 0.0)) return;
+    last_.residuals = whitening_ * (moments_ - model.array().log().matrix());
+    last_.residuals_usable = true;
+    if (with_jacobian && jacobian.allFinite()) {
+      last_.jacobian = -whitening_ * (model.cwiseInverse().asDiagonal() * jacobian);
+      last_.jacobian_usable = true;
+    }
+  }
+
+  struct Evaluation {
+    std::vector<double> parameters;
+    bool evaluated = false;
+    bool with_jacobian = false;
+    bool residuals_usable = false;
+    bool jacobian_usable = false;
+    Eigen::VectorXd residuals;
+    RowMajorMatrix jacobian;
+  };
+
   const std::vector<FitPoint>& points_;
   ModelStructure structure_;
   Eigen::MatrixXd whitening_;
   Eigen::VectorXd moments_;
+  mutable Evaluation last_;  // Ceres runs one thread here (ceres_solver_options.h)
 };
 
 }  // namespace

@@ -134,6 +134,13 @@ Addition best_addition(const SelectionContext& context, const ModelStructure& ba
   double best_score = kInfinity;
   for (size_t c = 0; c < candidates.size(); ++c) {
     if (is_extra_term(candidates[c].kind) && !allow_extras) continue;
+    // The numbered kinds (two Markov terms, two sinusoids...) are identical slots: the same fit,
+    // and the first of equal scores wins anyway.
+    const auto same_slot = [&](const TermSlot& earlier) {
+      return earlier.kind == candidates[c].kind && earlier.shape_free == candidates[c].shape_free &&
+             earlier.fixed_shape == candidates[c].fixed_shape;
+    };
+    if (std::any_of(candidates.begin(), candidates.begin() + c, same_slot)) continue;
     ModelStructure extended;
     const SolveOutcome outcome = fit_with_new_slot(context, base, base_parameters, candidates[c], weights, &extended);
     if (!outcome.usable) continue;

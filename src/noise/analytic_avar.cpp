@@ -166,7 +166,11 @@ double resonance_angle_correlation(double natural_frequency_hz, double width_hz,
   const double zeta = width_hz / (2.0 * natural_frequency_hz);
   const double root = std::sqrt(1.0 - zeta * zeta);
   const double u = std::abs(lag_s);
-  return std::exp(-zeta * omega_n * u) * (std::cos(omega_n * root * u) + zeta / root * std::sin(omega_n * root * u));
+  // e^-746 is below half the smallest subnormal: the envelope is exactly 0 there, and the
+  // oscillation (a slow sincos at such arguments) need not be evaluated.
+  const double exponent = -zeta * omega_n * u;
+  if (exponent < -746.0) return 0.0;
+  return std::exp(exponent) * (std::cos(omega_n * root * u) + zeta / root * std::sin(omega_n * root * u));
 }
 
 double resonance_avar(double rms, double natural_frequency_hz, double width_hz, double tau) {
