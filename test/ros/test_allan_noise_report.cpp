@@ -24,19 +24,29 @@ using imu_lab::test_support::scratch_directory;
 constexpr double kGyroWhite_rad_s_per_sqrt_hz = 1.0e-3;
 constexpr double kGyroWalk_rad_s_per_sqrt_s = 2.0e-5;  // crosses the white noise at tau ~ 90 s
 
-std::string white_and_walk_profile() {
+// A profile with no bias, scale-factor or misalignment error and the given noise blocks (YAML
+// lines, each indented four spaces) per triad.
+std::string noise_only_profile(const std::string& name, const std::string& gyro_noise,
+                               const std::string& accelerometer_noise) {
   std::ostringstream profile;
-  profile << "name: white_and_walk\n";
   const char* const zero_matrix = "[[0, 0, 0], [0, 0, 0], [0, 0, 0]]";
+  profile << "name: " << name << "\n";
   profile << "gyro:\n  bias_fixed_rad_s: 0.0\n  bias_turn_on_sigma_rad_s: 0.0\n  scale_factor_error_ppm: 0.0\n"
           << "  misalignment_rad: " << zero_matrix << "\n  noise:\n"
-          << "    white_rate: {density_rad_s_per_sqrt_hz: " << kGyroWhite_rad_s_per_sqrt_hz << "}\n"
-          << "    random_walk: {density_rad_s_per_sqrt_s: " << kGyroWalk_rad_s_per_sqrt_s << "}\n";
+          << gyro_noise;
   profile << "accelerometer:\n  bias_fixed_m_s2: 0.0\n  bias_turn_on_sigma_m_s2: 0.0\n  scale_factor_error_ppm: 0.0\n"
           << "  misalignment_rad: " << zero_matrix << "\n  noise:\n"
-          << "    white_rate: {density_m_s2_per_sqrt_hz: 2.0e-3}\n"
-          << "    random_walk: {density_m_s2_per_sqrt_s: 5.0e-5}\n";
+          << accelerometer_noise;
   return profile.str();
+}
+
+std::string white_and_walk_profile() {
+  std::ostringstream gyro;
+  gyro << "    white_rate: {density_rad_s_per_sqrt_hz: " << kGyroWhite_rad_s_per_sqrt_hz << "}\n"
+       << "    random_walk: {density_rad_s_per_sqrt_s: " << kGyroWalk_rad_s_per_sqrt_s << "}\n";
+  return noise_only_profile("white_and_walk", gyro.str(),
+                            "    white_rate: {density_m_s2_per_sqrt_hz: 2.0e-3}\n"
+                            "    random_walk: {density_m_s2_per_sqrt_s: 5.0e-5}\n");
 }
 
 class AllanNoiseReport : public ::testing::Test {
@@ -147,24 +157,12 @@ TEST_F(AllanNoiseReport, ARefusedFitKeepsTheCurvesAndSaysTheRecordIsTooShort) {
 TEST(AllanNoiseReportZeroDc, EnabledTermsAreFoundWithTheirParameters) {
   const std::string directory = scratch_directory();
   const std::string profile = directory + "/zero_dc.yaml", bag = directory + "/zero_dc.bag";
-  std::ofstream(profile) << R"(name: zero_dc
-gyro:
-  bias_fixed_rad_s: 0.0
-  bias_turn_on_sigma_rad_s: 0.0
-  scale_factor_error_ppm: 0.0
-  misalignment_rad: [[0, 0, 0], [0, 0, 0], [0, 0, 0]]
-  noise:
-    white_rate: {density_rad_s_per_sqrt_hz: 1.0e-4}
-    high_pass_white: {density_rad_s_per_sqrt_hz: 1.0e-3, corner_frequency_hz: 0.5}
-accelerometer:
-  bias_fixed_m_s2: 0.0
-  bias_turn_on_sigma_m_s2: 0.0
-  scale_factor_error_ppm: 0.0
-  misalignment_rad: [[0, 0, 0], [0, 0, 0], [0, 0, 0]]
-  noise:
-    white_rate: {density_m_s2_per_sqrt_hz: 2.0e-3}
-    zero_dc_gaussian: {exponent_n: 2, alpha_m2_s4_per_hz_n_plus_1: 1.0e-5, beta_s2: 0.04}
-)";
+  std::ofstream(profile) << noise_only_profile(
+      "zero_dc",
+      "    white_rate: {density_rad_s_per_sqrt_hz: 1.0e-4}\n"
+      "    high_pass_white: {density_rad_s_per_sqrt_hz: 1.0e-3, corner_frequency_hz: 0.5}\n",
+      "    white_rate: {density_m_s2_per_sqrt_hz: 2.0e-3}\n"
+      "    zero_dc_gaussian: {exponent_n: 2, alpha_m2_s4_per_hz_n_plus_1: 1.0e-5, beta_s2: 0.04}\n");
   const auto made =
       run_tool("emulate", "--profile " + profile + " --duration-s 1200 --rate-hz 50 --seed 21 --no-truth --out " + bag);
   ASSERT_EQ(made.exit_code, 0) << made.output;
