@@ -13,6 +13,7 @@
 #include "imu_lab/identify/fit_warnings.h"
 #include "imu_lab/identify/profile_likelihood.h"
 #include "imu_lab/identify/start_values.h"
+#include "imu_lab/identify/structure_doubt.h"
 
 namespace imu_lab {
 namespace identify {
@@ -378,6 +379,8 @@ FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, doub
   fit.selection_steps = selected.steps;
   fit.model = model_from_log_parameters(fit.structure, fit.log_parameters);
   fit.log_covariance = log_parameter_covariance(fit.points, fit.structure, fit.log_parameters, selected.weights);
+  fit.structure_alternatives = weigh_peak_alternatives(fit.points, span, allowed, fit.structure, fit.log_parameters,
+                                                       selected.cost, selected.weights, &fit.log_covariance);
   fit.quality = assess_quality(selected.cost, static_cast<int>(fit.points.size()), parameter_count(fit.structure),
                                selected.weights.discrepancy);
   describe_model_terms(selected, span, &fit);

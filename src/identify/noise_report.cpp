@@ -138,6 +138,29 @@ void emit_white_equivalent(YAML::Emitter& out, SensorKind sensor, const FitResul
   out << YAML::EndMap;
 }
 
+// Each line or resonance's other description and its weight in the sigmas (structure_doubt.h).
+void emit_structure_doubt(YAML::Emitter& out, const FitResult& fit) {
+  if (fit.structure_alternatives.empty()) return;
+  out << YAML::Key << "structure_doubt" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "note" << YAML::Value
+      << "each peak fitted again as the other kind (a line as a resonance, a resonance as a line); the sigmas "
+         "of the other terms include the spread between the two descriptions, weighed by Akaike's criterion "
+         "(doc/identification.md)";
+  out << YAML::Key << "alternatives" << YAML::Value << YAML::BeginSeq;
+  for (const StructureAlternative& alternative : fit.structure_alternatives) {
+    out << YAML::Flow << YAML::BeginMap;
+    out << YAML::Key << "replaced" << YAML::Value << alternative.replaced;
+    out << YAML::Key << "by" << YAML::Value << alternative.replacement;
+    emit_number(out, "peak_frequency_hz", alternative.peak_frequency_hz);
+    emit_number(out, "distance_change", alternative.distance_change);
+    out << YAML::Key << "parameter_change" << YAML::Value << alternative.parameter_change;
+    emit_number(out, "weight", alternative.weight);
+    out << YAML::EndMap;
+  }
+  out << YAML::EndSeq;
+  out << YAML::EndMap;
+}
+
 void emit_axis(YAML::Emitter& out, SensorKind sensor, const std::string& name, const FitResult& fit) {
   out << YAML::Key << name << YAML::Value << YAML::BeginMap;
   emit_number(out, "tau0_s", fit.tau0_s);
@@ -173,6 +196,7 @@ void emit_axis(YAML::Emitter& out, SensorKind sensor, const std::string& name, c
     out << line.str();
   }
   out << YAML::EndSeq;
+  emit_structure_doubt(out, fit);
   out << YAML::EndMap;
 }
 

@@ -15,6 +15,7 @@
 #include "imu_lab/identify/graphical_readings.h"
 #include "imu_lab/identify/model_selection.h"
 #include "imu_lab/identify/model_structure.h"
+#include "imu_lab/identify/structure_doubt.h"
 
 namespace imu_lab {
 namespace identify {
@@ -105,6 +106,9 @@ struct FitResult {
   GraphicalReadings graphical;
   std::vector<std::string> warnings;
   std::vector<SelectionStep> selection_steps;
+  // The other description of each line or resonance, and its weight in the sigmas
+  // (structure_doubt.h).
+  std::vector<StructureAlternative> structure_alternatives;
   double tau0_s = 0.0;
   double record_length_s = 0.0;
   DataSpan span;

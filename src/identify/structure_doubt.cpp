@@ -1,0 +1,141 @@
+#include "imu_lab/identify/structure_doubt.h"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <limits>
+
+#include "imu_lab/identify/model_selection.h"
+
+namespace imu_lab {
+namespace identify {
+
+namespace {
+
+// A line of peak Omega0 carries Omega0^2 / 2 of variance, a resonance of RMS r carries r^2.
+const double kLineToRms = std::sqrt(0.5);
+// Starts of the resonance's width / f_n when a line is swapped for one: from just above a line to
+// a broad mode.
+constexpr double kRelativeWidthStarts[] = {0.05, 0.15, 0.4};
+
+struct FittedAlternative {
+  StructureAlternative summary;
+  int slot_index = 0;
+  ModelStructure structure;
+  SolveOutcome outcome;
+};
+
+// The slot's peak described by the other kind, from starts at the same frequency and power.
+bool fit_alternative(const std::vector<FitPoint>& points, const DataSpan& span, const ModelStructure& structure,
+                     const std::vector<double>& log_parameters, int slot_index, const MomentWeights& weights,
+                     FittedAlternative* fitted) {
+  const TermSlot& slot = structure.slots[slot_index];
+  const int offset = parameter_offset(structure, slot_index);
+  const double log_amplitude = log_parameters[offset];
+  const double log_frequency = log_parameters[offset + 1];
+  fitted->slot_index = slot_index;
+  fitted->structure = structure;
+  TermSlot& replacement = fitted->structure.slots[slot_index];
+  replacement.shape_free = true;
+  std::vector<std::vector<double>> peak_starts;
+  if (slot.kind == TermKind::kSinusoid) {
+    replacement.kind = TermKind::kResonance;
+    for (double relative_width : kRelativeWidthStarts) {
+      peak_starts.push_back({log_amplitude + std::log(kLineToRms), log_frequency, std::log(relative_width)});
+    }
+  } else {
+    replacement.kind = TermKind::kSinusoid;
+    peak_starts.push_back({log_amplitude - std::log(kLineToRms), log_frequency});
+  }
+  fitted->outcome.cost = std::numeric_limits<double>::infinity();
+  for (const std::vector<double>& peak : peak_starts) {
+    std::vector<double> start(log_parameters.begin(), log_parameters.begin() + offset);
+    start.insert(start.end(), peak.begin(), peak.end());
+    start.insert(start.end(), log_parameters.begin() + offset + slot_parameter_count(slot), log_parameters.end());
+    const SolveOutcome outcome = refit_structure(points, fitted->structure, start, span, weights);
+    if (outcome.usable && outcome.cost < fitted->outcome.cost) fitted->outcome = outcome;
+  }
+  if (!fitted->outcome.usable) return false;
+  fitted->summary.replacement = term_kind_name(replacement.kind);
+  fitted->summary.peak_frequency_hz = std::exp(log_frequency);
+  fitted->summary.parameter_change = slot_parameter_count(replacement) - slot_parameter_count(slot);
+  return true;
+}
+
+// Index in the alternative's parameter vector of the selected structure's parameter p, or -1
+// when p belongs to the replaced slot.
+int shared_index(const ModelStructure& selected, const FittedAlternative& alternative, int p) {
+  const int begin = parameter_offset(selected, alternative.slot_index);
+  const int end = begin + slot_parameter_count(selected.slots[alternative.slot_index]);
+  if (p < begin) return p;
+  if (p < end) return -1;
+  return p + slot_parameter_count(alternative.structure.slots[alternative.slot_index]) - (end - begin);
+}
+
+}  // namespace
+
+std::vector<StructureAlternative> weigh_peak_alternatives(const std::vector<FitPoint>& points, const DataSpan& span,
+                                                          const FitOptions& options, const ModelStructure& structure,
+                                                          const std::vector<double>& log_parameters, double cost,
+                                                          const MomentWeights& weights,
+                                                          Eigen::MatrixXd* log_covariance) {
+  const std::vector<std::string> names = term_names(model_from_log_parameters(structure, log_parameters));
+  std::vector<FittedAlternative> alternatives;
+  for (size_t i = 0; i < structure.slots.size(); ++i) {
+    const TermKind kind = structure.slots[i].kind;
+    const bool line_to_mode = kind == TermKind::kSinusoid && options.max_resonances > 0;
+    const bool mode_to_line = kind == TermKind::kResonance && options.max_sinusoids > 0;
+    if (!line_to_mode && !mode_to_line) continue;
+    FittedAlternative fitted;
+    if (!fit_alternative(points, span, structure, log_parameters, static_cast<int>(i), weights, &fitted)) continue;
+    fitted.summary.replaced = names[i];
+    // Both costs are J / 2 under the same weights.
+    fitted.summary.distance_change = 2.0 * (fitted.outcome.cost - cost);
+    alternatives.push_back(fitted);
+  }
+  if (alternatives.empty()) return {};
+
+  // Akaike weights, relative to the selected structure (criterion difference 0).
+  double total = 1.0;
+  for (const FittedAlternative& alternative : alternatives) {
+    const double criterion_change =
+        alternative.summary.distance_change + 2.0 * alternative.summary.parameter_change;
+    total += std::exp(-0.5 * criterion_change);
+  }
+  for (FittedAlternative& alternative : alternatives) {
+    const double criterion_change =
+        alternative.summary.distance_change + 2.0 * alternative.summary.parameter_change;
+    alternative.summary.weight = std::exp(-0.5 * criterion_change) / total;
+  }
+
+  // Each structure's covariance of the selected parameters about the reported values: the
+  // alternative's own covariance and its offset where it shares a parameter; the selected
+  // covariance for the replaced slot (the alternative says nothing of it), uncorrelated with the rest.
+  const Eigen::MatrixXd selected_covariance = *log_covariance;
+  const int count = static_cast<int>(selected_covariance.rows());
+  Eigen::MatrixXd widened = selected_covariance / total;
+  for (const FittedAlternative& alternative : alternatives) {
+    const Eigen::MatrixXd covariance =
+        log_parameter_covariance(points, alternative.structure, alternative.outcome.log_parameters, weights);
+    for (int p = 0; p < count; ++p) {
+      const int ap = shared_index(structure, alternative, p);
+      const double offset_p = ap < 0 ? 0.0 : alternative.outcome.log_parameters[ap] - log_parameters[p];
+      for (int q = 0; q < count; ++q) {
+        const int aq = shared_index(structure, alternative, q);
+        double term = 0.0;
+        if (ap >= 0 && aq >= 0) {
+          term = covariance(ap, aq) + offset_p * (alternative.outcome.log_parameters[aq] - log_parameters[q]);
+        } else if (ap < 0 && aq < 0) {
+          term = selected_covariance(p, q);
+        }
+        widened(p, q) += alternative.summary.weight * term;
+      }
+    }
+  }
+  *log_covariance = widened;
+  std::vector<StructureAlternative> summaries;
+  for (const FittedAlternative& alternative : alternatives) summaries.push_back(alternative.summary);
+  return summaries;
+}
+
+}  // namespace identify
+}  // namespace imu_lab
