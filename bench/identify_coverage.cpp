@@ -8,7 +8,8 @@
 //     (N, B, K, Q, R, Markov: amplitude and T_c, sinusoid: amplitude and f, resonance: rms, f_n
 //     and width, low-pass: the white noise's front-end corner). A parameter of a term reported
 //     present is inside when the reported 68.3 % (95 %) interval holds it; a term reported
-//     absent or unconstrained is inside only if the truth lies below its reported upper bound
+//     absent or unconstrained is inside only if the truth lies below its reported one-sigma (95 %)
+//     upper bound
 //     (an absent Markov term, sinusoid or resonance reports only the largest amplitude any shape
 //     could carry, and its shape parameters are judged with it). Targets: 60-76 % inside
 //     the 68.3 % interval, >= 90 % inside the 95 % one. replicas > 1 replaces the sigmas by the
@@ -334,7 +335,10 @@ ParameterOutcome judge(CoverageKind kind, const ParameterEstimate& estimate, Ter
     if (!outcome.inside_95) outcome.miss_side_95 = truth < estimate.value ? -1 : 1;
   } else if (std::isfinite(estimate.upper_bound)) {
     outcome.judged_by = 'b';
-    outcome.inside_68 = outcome.inside_95 = truth <= estimate.upper_bound;
+    // The 68.3 % interval of a bounded term is [0, its one-sigma bound].
+    outcome.inside_95 = truth <= estimate.upper_bound;
+    outcome.inside_68 = truth <= (std::isfinite(estimate.upper_bound_one_sigma) ? estimate.upper_bound_one_sigma
+                                                                               : estimate.upper_bound);
     if (!outcome.inside_95) outcome.miss_side_95 = 1;
   }
   return outcome;

@@ -71,7 +71,8 @@ void apply_bootstrap(const BootstrapSummary& summary, FitResult* fit) {
       term.amplitude.upper_bound =
           profile_upper_bound(fit->points, fit->structure, fit->log_parameters,
                               model_cost(fit->points, fit->structure, fit->log_parameters, fit->weights),
-                              static_cast<int>(i), fit->span, fit->weights, fit->options.upper_bound_confidence);
+                              static_cast<int>(i), fit->span, fit->weights, fit->options.upper_bound_confidence,
+                              &term.amplitude.upper_bound_one_sigma);
     }
   }
 }

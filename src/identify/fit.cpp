@@ -114,7 +114,8 @@ void describe_model_terms(const SelectedModel& selected, const DataSpan& span, F
       estimate.status = TermStatus::kUnconstrained;
       estimate.amplitude.upper_bound =
           profile_upper_bound(fit->points, fit->structure, fit->log_parameters, selected.cost, static_cast<int>(i),
-                              span, selected.weights, fit->options.upper_bound_confidence);
+                              span, selected.weights, fit->options.upper_bound_confidence,
+                              &estimate.amplitude.upper_bound_one_sigma);
     }
     fit->terms.push_back(estimate);
   }
@@ -140,7 +141,7 @@ void describe_absent_shaped_term(const SelectedModel& selected, const DataSpan& 
   estimate.status = TermStatus::kAbsent;
   estimate.amplitude.upper_bound = shaped_profile_upper_bound(
       fit->points, fit->structure, fit->log_parameters, selected.cost, spread_start_shapes(slot, fit->points, span),
-      span, selected.weights, fit->options.upper_bound_confidence);
+      span, selected.weights, fit->options.upper_bound_confidence, &estimate.amplitude.upper_bound_one_sigma);
   fit->terms.push_back(estimate);
 }
 
@@ -175,7 +176,7 @@ void describe_absent_terms(const SelectedModel& selected, const DataSpan& span, 
     const int slot_index = static_cast<int>(structure.slots.size()) - 1;
     estimate.amplitude.upper_bound =
         profile_upper_bound(fit->points, structure, log_parameters, selected.cost, slot_index, span, selected.weights,
-                            fit->options.upper_bound_confidence);
+                            fit->options.upper_bound_confidence, &estimate.amplitude.upper_bound_one_sigma);
     const SolveOutcome added = refit_structure(fit->points, structure, log_parameters, span, selected.weights);
     if (added.usable) {
       estimate.selection_statistic = std::max(0.0, 2.0 * (selected.cost - added.cost));

@@ -10,6 +10,7 @@
 #include "imu_lab/common/atomic_file.h"
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/identify/fit_warnings.h"
+#include "imu_lab/identify/profile_likelihood.h"
 #include "imu_lab/identify/white_equivalent.h"
 
 namespace imu_lab {
@@ -38,6 +39,7 @@ void emit_parameter(YAML::Emitter& out, const std::string& symbol, const std::ve
       emit_number(out, key + "_95_high", estimate.interval_high(1.959964) * unit.per_si);
     }
     emit_number(out, key + upper_bound_suffix(confidence), estimate.upper_bound * unit.per_si);
+    emit_number(out, key + upper_bound_suffix(kOneSigmaConfidence), estimate.upper_bound_one_sigma * unit.per_si);
   }
 }
 

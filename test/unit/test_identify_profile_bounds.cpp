@@ -62,6 +62,36 @@ TEST(IdentifyProfileBounds, ShapedBoundEqualsTheLargestStartByStartBound) {
   EXPECT_TRUE(starts_disagree);
 }
 
+// The one-sigma bound rides along the 95 % climb: below it, and where the profile's distance has
+// risen by the chi2_1 quantile at 2 x 0.6827 - 1 (0.227), to its 4 bisections (2^(1/16) in amplitude).
+TEST(IdentifyProfileBounds, OneSigmaBoundIsWhereTheDistanceRisesByItsQuantile) {
+  const double rate_hz = 100.0, duration_s = 1200.0;
+  const std::vector<double> rates = identify_test::emulate_axis_rates(
+      {noise::WhiteRateParameters{1e-3}, noise::RandomWalkParameters{2e-5}}, rate_hz, duration_s, 20261203);
+  const FitResult fit = fit_noise_model(identify_test::octave_oadev(rates, rate_hz), 1.0 / rate_hz, duration_s);
+  const TermEstimate* ramp = fit.find("rate_ramp");
+  ASSERT_NE(ramp, nullptr);
+  ASSERT_EQ(ramp->status, TermStatus::kAbsent);
+  EXPECT_LT(ramp->amplitude.upper_bound_one_sigma, ramp->amplitude.upper_bound);
+
+  ModelStructure structure = fit.structure;
+  std::vector<double> log_parameters = fit.log_parameters;
+  append_negligible_slot(fit.points, {TermKind::kRateRamp, false, 0.0}, &structure, &log_parameters);
+  const double best_cost = 0.5 * fit.quality.distance;
+  const int ramp_index = parameter_offset(structure, static_cast<int>(structure.slots.size()) - 1);
+  const auto distance_rise = [&](double amplitude) {
+    std::vector<double> start = log_parameters;
+    start[ramp_index] = std::log(amplitude);
+    const SolveOutcome outcome = solve_model(fit.points, structure, start, fit.span, fit.weights, {ramp_index});
+    EXPECT_TRUE(outcome.usable);
+    return 2.0 * (outcome.cost - best_cost);
+  };
+  const double quantile = 0.2267;  // chi2_1 at 0.3654
+  const double bound = ramp->amplitude.upper_bound_one_sigma;
+  EXPECT_GT(distance_rise(bound), quantile * 0.98) << "bound " << bound;
+  EXPECT_LT(distance_rise(bound * std::pow(2.0, -1.0 / 16.0)), quantile * 1.02) << "bound " << bound;
+}
+
 }  // namespace
 }  // namespace identify
 }  // namespace imu_lab

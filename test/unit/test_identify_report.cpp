@@ -13,6 +13,7 @@
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/identify/kalibr_yaml.h"
 #include "imu_lab/identify/noise_report.h"
+#include "imu_lab/identify/profile_likelihood.h"
 #include "imu_lab/identify/partial_curves.h"
 #include "imu_lab/identify/triad_fit.h"
 #include "imu_lab/identify/white_equivalent.h"
@@ -49,6 +50,9 @@ TEST(IdentifyReport, NumbersRoundTripThroughTheYaml) {
             const std::string bound_key = key + upper_bound_suffix(0.95);
             ASSERT_EQ(values.count(bound_key), 1u) << bound_key;
             EXPECT_DOUBLE_EQ(values.at(bound_key), term.amplitude.upper_bound * unit.per_si);
+            const std::string one_sigma_key = key + upper_bound_suffix(kOneSigmaConfidence);
+            ASSERT_EQ(values.count(one_sigma_key), 1u) << one_sigma_key;
+            EXPECT_DOUBLE_EQ(values.at(one_sigma_key), term.amplitude.upper_bound_one_sigma * unit.per_si);
             continue;
           }
           ASSERT_EQ(values.count(key), 1u) << key;

@@ -38,6 +38,9 @@ struct ParameterEstimate {
   double sigma = kNotAvailable;        // SI, one sigma (value * log_sigma); NaN when not estimated
   double log_sigma = kNotAvailable;    // one sigma of ln(value): the fit works on logarithms
   double upper_bound = kNotAvailable;  // SI, one-sided profile bound; NaN if none
+  // SI, one-sided profile bound at 68.27 % (profile_likelihood.h): [0, it] is the term's 68.3 %
+  // interval when it is reported absent or unconstrained; NaN if none.
+  double upper_bound_one_sigma = kNotAvailable;
   // value * exp(+-z log_sigma): the interval is symmetric in ln(value), so asymmetric in value.
   double interval_low(double z) const;
   double interval_high(double z) const;
