@@ -145,26 +145,65 @@ void describe_absent_shaped_term(const SelectedModel& selected, const DataSpan& 
   fit->terms.push_back(estimate);
 }
 
+// The slot a left-out candidate is bounded and added in: one-parameter kinds only (shaped ones
+// get describe_absent_shaped_term, the zero-DC family no bound); a fitted-cutoff bias
+// instability at the Nyquist cutoff. False for the others.
+bool one_parameter_slot(TermSlot* slot, double tau0_s) {
+  if (slot->kind == TermKind::kMarkov || slot->kind == TermKind::kSinusoid || slot->kind == TermKind::kResonance) {
+    return false;
+  }
+  if (shape_count(slot->kind) > 0 && slot->kind != TermKind::kBiasInstability && slot->kind != TermKind::kWhiteRate) {
+    return false;
+  }
+  if (slot->shape_free) {
+    slot->shape_free = false;
+    slot->fixed_shape = 1.0 / (2.0 * tau0_s);
+  }
+  return true;
+}
+
+// The candidate kinds the selection left out, each once, in candidate order.
+std::vector<TermSlot> left_out_slots(const FitResult& fit, const DataSpan& span) {
+  std::vector<TermSlot> left_out;
+  for (const TermSlot& slot : candidate_slots(fit.options, span)) {
+    bool seen = false;
+    for (const Term& term : fit.model.terms) seen = seen || term.kind == slot.kind;
+    for (const TermSlot& earlier : left_out) seen = seen || earlier.kind == slot.kind;
+    if (!seen) left_out.push_back(slot);
+  }
+  return left_out;
+}
+
+// Each left-out one-parameter term fitted freely beside the selected ones, from a negligible
+// amplitude: its selection statistic, and an alternative structure for the sigmas.
+std::vector<TermAddition> fit_left_out_terms(const SelectedModel& selected, const DataSpan& span,
+                                             const FitResult& fit) {
+  std::vector<TermAddition> additions;
+  for (TermSlot slot : left_out_slots(fit, span)) {
+    if (!one_parameter_slot(&slot, fit.tau0_s)) continue;
+    TermAddition addition;
+    addition.kind = slot.kind;
+    addition.structure = fit.structure;
+    std::vector<double> log_parameters = fit.log_parameters;
+    append_negligible_slot(fit.points, slot, &addition.structure, &log_parameters);
+    addition.outcome = refit_structure(fit.points, addition.structure, log_parameters, span, selected.weights);
+    additions.push_back(addition);
+  }
+  return additions;
+}
+
 // Candidate terms the selection left out: absent, with a profile upper bound and, for
 // one-parameter terms, the fall of the distance their free addition would bring.
-void describe_absent_terms(const SelectedModel& selected, const DataSpan& span, FitResult* fit) {
-  std::vector<TermKind> described;
-  for (TermSlot slot : candidate_slots(fit->options, span)) {
-    bool in_model = false;
-    for (const Term& term : fit->model.terms) in_model = in_model || term.kind == slot.kind;
-    if (in_model || std::find(described.begin(), described.end(), slot.kind) != described.end()) continue;
-    described.push_back(slot.kind);
+void describe_absent_terms(const SelectedModel& selected, const DataSpan& span,
+                           const std::vector<TermAddition>& additions, FitResult* fit) {
+  for (TermSlot slot : left_out_slots(*fit, span)) {
     if (slot.kind == TermKind::kMarkov || slot.kind == TermKind::kSinusoid || slot.kind == TermKind::kResonance) {
       describe_absent_shaped_term(selected, span, slot, fit);
       continue;
     }
-    if (shape_count(slot.kind) > 0 && slot.kind != TermKind::kBiasInstability && slot.kind != TermKind::kWhiteRate) {
-      continue;  // the zero-DC family (an option): its shape is not bounded
-    }
-    if (slot.shape_free) {  // bound a fitted-cutoff bias instability at the Nyquist cutoff
-      slot.shape_free = false;
-      slot.fixed_shape = 1.0 / (2.0 * fit->tau0_s);
-    }
+    if (!one_parameter_slot(&slot, fit->tau0_s)) continue;
+    const auto addition = std::find_if(additions.begin(), additions.end(),
+                                       [&](const TermAddition& added) { return added.kind == slot.kind; });
     ModelStructure structure = fit->structure;
     std::vector<double> log_parameters = fit->log_parameters;
     append_negligible_slot(fit->points, slot, &structure, &log_parameters);
@@ -177,9 +216,8 @@ void describe_absent_terms(const SelectedModel& selected, const DataSpan& span, 
     estimate.amplitude.upper_bound =
         profile_upper_bound(fit->points, structure, log_parameters, selected.cost, slot_index, span, selected.weights,
                             fit->options.upper_bound_confidence, &estimate.amplitude.upper_bound_one_sigma);
-    const SolveOutcome added = refit_structure(fit->points, structure, log_parameters, span, selected.weights);
-    if (added.usable) {
-      estimate.selection_statistic = std::max(0.0, 2.0 * (selected.cost - added.cost));
+    if (addition != additions.end() && addition->outcome.usable) {
+      estimate.selection_statistic = std::max(0.0, 2.0 * (selected.cost - addition->outcome.cost));
       estimate.selection_threshold = slot_lr_threshold(fit->options, slot, static_cast<int>(fit->points.size()));
       estimate.borderline = is_borderline(estimate.selection_statistic, estimate.selection_threshold);
     }
@@ -380,12 +418,14 @@ FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, doub
   fit.selection_steps = selected.steps;
   fit.model = model_from_log_parameters(fit.structure, fit.log_parameters);
   fit.log_covariance = log_parameter_covariance(fit.points, fit.structure, fit.log_parameters, selected.weights);
-  fit.structure_alternatives = weigh_peak_alternatives(fit.points, span, allowed, fit.structure, fit.log_parameters,
-                                                       selected.cost, selected.weights, &fit.log_covariance);
+  const std::vector<TermAddition> additions = fit_left_out_terms(selected, span, fit);
+  fit.structure_alternatives =
+      weigh_structure_alternatives(fit.points, span, allowed, fit.structure, fit.log_parameters, selected.cost,
+                                   selected.weights, additions, &fit.log_covariance);
   fit.quality = assess_quality(selected.cost, static_cast<int>(fit.points.size()), parameter_count(fit.structure),
                                selected.weights.discrepancy);
   describe_model_terms(selected, span, &fit);
-  describe_absent_terms(selected, span, &fit);
+  describe_absent_terms(selected, span, additions, &fit);
   fit.band = band_check(evaluable, fit.model, span);
   fit.warnings = fit_warnings(fit);
   return fit;

@@ -145,14 +145,18 @@ void emit_structure_doubt(YAML::Emitter& out, const FitResult& fit) {
   if (fit.structure_alternatives.empty()) return;
   out << YAML::Key << "structure_doubt" << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "note" << YAML::Value
-      << "each peak fitted again as the other kind (a line as a resonance, a resonance as a line); the sigmas "
-         "of the other terms include the spread between the two descriptions, weighed by Akaike's criterion "
-         "(doc/identification.md)";
+      << "each peak fitted again as the other kind (a line as a resonance, a resonance as a line) and each "
+         "left-out term added; the sigmas of the reported terms include the spread between these structures "
+         "and the selected one, weighed by Akaike's criterion (doc/identification.md)";
   out << YAML::Key << "alternatives" << YAML::Value << YAML::BeginSeq;
   for (const StructureAlternative& alternative : fit.structure_alternatives) {
     out << YAML::Flow << YAML::BeginMap;
-    out << YAML::Key << "replaced" << YAML::Value << alternative.replaced;
-    out << YAML::Key << "by" << YAML::Value << alternative.replacement;
+    if (alternative.replaced.empty()) {
+      out << YAML::Key << "added" << YAML::Value << alternative.replacement;
+    } else {
+      out << YAML::Key << "replaced" << YAML::Value << alternative.replaced;
+      out << YAML::Key << "by" << YAML::Value << alternative.replacement;
+    }
     emit_number(out, "peak_frequency_hz", alternative.peak_frequency_hz);
     emit_number(out, "distance_change", alternative.distance_change);
     out << YAML::Key << "parameter_change" << YAML::Value << alternative.parameter_change;

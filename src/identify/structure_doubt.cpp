@@ -19,7 +19,8 @@ constexpr double kRelativeWidthStarts[] = {0.05, 0.15, 0.4};
 
 struct FittedAlternative {
   StructureAlternative summary;
-  int slot_index = 0;
+  int slot_index = 0;  // the swapped slot; for an addition, the appended one (past the selected slots)
+  bool addition = false;
   ModelStructure structure;
   SolveOutcome outcome;
 };
@@ -64,6 +65,7 @@ bool fit_alternative(const std::vector<FitPoint>& points, const DataSpan& span, 
 // Index in the alternative's parameter vector of the selected structure's parameter p, or -1
 // when p belongs to the replaced slot.
 int shared_index(const ModelStructure& selected, const FittedAlternative& alternative, int p) {
+  if (alternative.addition) return p;  // the added slot comes after every selected one
   const int begin = parameter_offset(selected, alternative.slot_index);
   const int end = begin + slot_parameter_count(selected.slots[alternative.slot_index]);
   if (p < begin) return p;
@@ -73,11 +75,13 @@ int shared_index(const ModelStructure& selected, const FittedAlternative& altern
 
 }  // namespace
 
-std::vector<StructureAlternative> weigh_peak_alternatives(const std::vector<FitPoint>& points, const DataSpan& span,
-                                                          const FitOptions& options, const ModelStructure& structure,
-                                                          const std::vector<double>& log_parameters, double cost,
-                                                          const MomentWeights& weights,
-                                                          Eigen::MatrixXd* log_covariance) {
+std::vector<StructureAlternative> weigh_structure_alternatives(const std::vector<FitPoint>& points,
+                                                               const DataSpan& span, const FitOptions& options,
+                                                               const ModelStructure& structure,
+                                                               const std::vector<double>& log_parameters, double cost,
+                                                               const MomentWeights& weights,
+                                                               const std::vector<TermAddition>& additions,
+                                                               Eigen::MatrixXd* log_covariance) {
   const std::vector<std::string> names = term_names(model_from_log_parameters(structure, log_parameters));
   std::vector<FittedAlternative> alternatives;
   for (size_t i = 0; i < structure.slots.size(); ++i) {
@@ -90,6 +94,19 @@ std::vector<StructureAlternative> weigh_peak_alternatives(const std::vector<FitP
     fitted.summary.replaced = names[i];
     // Both costs are J / 2 under the same weights.
     fitted.summary.distance_change = 2.0 * (fitted.outcome.cost - cost);
+    alternatives.push_back(fitted);
+  }
+  for (const TermAddition& addition : additions) {
+    if (!addition.outcome.usable) continue;
+    FittedAlternative fitted;
+    fitted.addition = true;
+    fitted.slot_index = static_cast<int>(structure.slots.size());
+    fitted.structure = addition.structure;
+    fitted.outcome = addition.outcome;
+    fitted.summary.replacement = term_kind_name(addition.kind);
+    fitted.summary.peak_frequency_hz = std::numeric_limits<double>::quiet_NaN();
+    fitted.summary.distance_change = 2.0 * (addition.outcome.cost - cost);
+    fitted.summary.parameter_change = parameter_count(addition.structure) - parameter_count(structure);
     alternatives.push_back(fitted);
   }
   if (alternatives.empty()) return {};
@@ -108,17 +125,22 @@ std::vector<StructureAlternative> weigh_peak_alternatives(const std::vector<FitP
   }
 
   // Each structure's covariance of the selected parameters about the reported values: the
-  // alternative's own covariance and its offset where it shares a parameter; the selected
-  // covariance for the replaced slot (the alternative says nothing of it), uncorrelated with the rest.
+  // alternative's own covariance (an addition: the selected one) and its offset where it shares a
+  // parameter; the selected covariance for the replaced slot (the alternative says nothing of it),
+  // uncorrelated with the rest.
   const Eigen::MatrixXd selected_covariance = *log_covariance;
   const int count = static_cast<int>(selected_covariance.rows());
   Eigen::MatrixXd widened = selected_covariance / total;
-  for (const FittedAlternative& alternative : alternatives) {
+  for (FittedAlternative& alternative : alternatives) {
+    alternative.summary.log_parameter_offsets.assign(count, 0.0);
     const Eigen::MatrixXd covariance =
-        log_parameter_covariance(points, alternative.structure, alternative.outcome.log_parameters, weights);
+        alternative.addition
+            ? selected_covariance
+            : log_parameter_covariance(points, alternative.structure, alternative.outcome.log_parameters, weights);
     for (int p = 0; p < count; ++p) {
       const int ap = shared_index(structure, alternative, p);
       const double offset_p = ap < 0 ? 0.0 : alternative.outcome.log_parameters[ap] - log_parameters[p];
+      alternative.summary.log_parameter_offsets[p] = offset_p;
       for (int q = 0; q < count; ++q) {
         const int aq = shared_index(structure, alternative, q);
         double term = 0.0;

@@ -5,6 +5,7 @@
 // structure's own sigmas, and only the widened sigmas hold the truth.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -45,21 +46,60 @@ TEST(IdentifyStructureDoubt, EveryPeakIsWeighedAgainstItsOtherDescription) {
     const TermKind kind = fit.model.terms[i].kind;
     if (kind == TermKind::kSinusoid || kind == TermKind::kResonance) peaks.push_back(names[i]);
   }
-  ASSERT_EQ(fit.structure_alternatives.size(), peaks.size());
-  double weights = 0.0;
+  std::vector<const StructureAlternative*> swaps;
+  for (const StructureAlternative& alternative : fit.structure_alternatives) {
+    if (!alternative.replaced.empty()) swaps.push_back(&alternative);
+  }
+  ASSERT_EQ(swaps.size(), peaks.size());
   for (size_t i = 0; i < peaks.size(); ++i) {
-    const StructureAlternative& alternative = fit.structure_alternatives[i];
+    const StructureAlternative& alternative = *swaps[i];
     EXPECT_EQ(alternative.replaced, peaks[i]);
     EXPECT_EQ(alternative.replacement, peaks[i].rfind("sinusoid", 0) == 0 ? "resonance" : "sinusoid");
-    EXPECT_GE(alternative.weight, 0.0);
-    weights += alternative.weight;
     // The 0.55 Hz line is a line: as a resonance the curve rejects it outright.
     if (std::abs(alternative.peak_frequency_hz - 0.55) < 0.05) {
       EXPECT_GT(alternative.distance_change, 100.0);
       EXPECT_LT(alternative.weight, 1e-6);
     }
   }
+}
+
+// Each one-parameter term the selection left out is added as an alternative (from a negligible
+// amplitude, so J can only fall), and every alternative widens each shared parameter's variance
+// by at least its weight times its squared offset. Here K (in the truth, 1e-4) is left out, and
+// adding it moves B.
+TEST(IdentifyStructureDoubt, LeftOutTermsAreWeighedAndWidenTheSharedSigmas) {
+  const FitResult fit = fit_mode_beside_front_end();
+  int additions = 0, left_out = 0;
+  for (const TermEstimate& term : fit.terms) {
+    const bool shaped = term.kind == TermKind::kMarkov || term.kind == TermKind::kSinusoid ||
+                        term.kind == TermKind::kResonance;
+    left_out += term.status == TermStatus::kAbsent && !shaped;
+  }
+  double weights = 0.0;
+  const StructureAlternative* walk = nullptr;
+  for (const StructureAlternative& alternative : fit.structure_alternatives) {
+    weights += alternative.weight;
+    ASSERT_EQ(alternative.log_parameter_offsets.size(), fit.log_parameters.size());
+    for (size_t p = 0; p < fit.log_parameters.size(); ++p) {
+      const double offset = alternative.log_parameter_offsets[p];
+      EXPECT_GE(fit.log_covariance(p, p), alternative.weight * offset * offset * (1.0 - 1e-9))
+          << alternative.replacement << ", parameter " << p;
+    }
+    if (!alternative.replaced.empty()) continue;
+    ++additions;
+    EXPECT_EQ(alternative.parameter_change, 1);
+    EXPECT_LE(alternative.distance_change, 1e-9 * fit.quality.distance) << alternative.replacement;
+    const TermEstimate* term = fit.find(alternative.replacement);
+    ASSERT_NE(term, nullptr) << alternative.replacement;
+    EXPECT_EQ(term->status, TermStatus::kAbsent);
+    if (alternative.replacement == "random_walk") walk = &alternative;
+  }
+  EXPECT_EQ(additions, left_out);
   EXPECT_LT(weights, 1.0);  // the selected structure keeps a share
+  ASSERT_NE(walk, nullptr) << "K was expected to be left out of this curve's model";
+  double largest_offset = 0.0;
+  for (double offset : walk->log_parameter_offsets) largest_offset = std::max(largest_offset, std::abs(offset));
+  EXPECT_GT(largest_offset, 1e-3);  // 0.9 % on this curve
 }
 
 // On this curve and grid the selection describes the mode as a line near 17.5 Hz (a resonance
