@@ -169,6 +169,26 @@ TEST(IdentifyAvarCovariance, RampCrossTermMatchesSimulatedRecords) {
   });
 }
 
+// The ramp's cross term beside a random walk: a walk's record-long drift looks like a ramp, and
+// the cross term must carry it (cov(mean d^m, mean d^n) of the walk's differences), where a
+// ramp and a walk share the longest taus (as in the coverage bench's case 8, doc/identification.md).
+TEST(IdentifyAvarCovariance, RampCrossTermBesideARandomWalkMatchesSimulatedRecords) {
+  const double n_density = 1e-3, k_density = 3e-4, ramp_per_s = 1e-4;
+  NoiseModel model;
+  model.terms = {{TermKind::kWhiteRate, n_density, 0.0},
+                 {TermKind::kRandomWalk, k_density},
+                 {TermKind::kRateRamp, ramp_per_s}};
+  std::mt19937_64 generator(20261204);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  expect_formula_matches_simulation(model, {1, 16, 256, 1000, 1800}, 4000, 3000, [&](std::vector<double>* rates) {
+    double walk = 0.0;
+    for (std::size_t k = 0; k < rates->size(); ++k) {
+      walk += k_density * std::sqrt(kTau0S) * unit(generator);
+      (*rates)[k] = n_density / std::sqrt(kTau0S) * unit(generator) + walk + ramp_per_s * (k + 0.5) * kTau0S;
+    }
+  });
+}
+
 // White rate noise under a 3.3 Hz line of random phase that dominates the taus near its period
 // (40 s, 132 periods): the line's differences multiply the noise's, and the cross term is most of
 // the estimates' variance there. The simulation holds the phase-averaged brute force; the
