@@ -317,6 +317,7 @@ struct ParameterOutcome {
   double z = NAN;  // |ln(truth / value)| / log_sigma when judged by the interval
   // Outside the 95 % interval: -1 the truth lies below it, +1 above it (or above the bound).
   int miss_side_95 = 0;
+  int role = 0;  // which parameter of its term: 0 amplitude, 1 shape (T_c, f, f_n, corner), 2 width
 };
 
 struct RecordOutcome {
@@ -369,6 +370,7 @@ void judge_axis(const NoiseModel& truth, const FitResult& fit, RecordOutcome* re
       truth_has_front_end = true;
       record->parameters.push_back(judge(CoverageKind::kLowPass, reported.shape,
                                          reported.shape_fitted ? reported.status : TermStatus::kAbsent, term.shape));
+      record->parameters.back().role = 1;
     }
     // An absent shaped term reports no shape, only the largest amplitude any shape could carry:
     // its shape parameters stand or fall with that bound.
@@ -379,9 +381,11 @@ void judge_axis(const NoiseModel& truth, const FitResult& fit, RecordOutcome* re
     };
     if (term.kind == TermKind::kMarkov || term.kind == TermKind::kSinusoid || term.kind == TermKind::kResonance) {
       record->parameters.push_back(judge_shape(reported.shape, term.shape));
+      record->parameters.back().role = 1;
     }
     if (term.kind == TermKind::kResonance) {
       record->parameters.push_back(judge_shape(reported.width, term.width));
+      record->parameters.back().role = 2;
     }
   }
   for (const TermEstimate& reported : fit.terms) {
@@ -401,7 +405,11 @@ void judge_axis(const NoiseModel& truth, const FitResult& fit, RecordOutcome* re
 struct Tally {
   int truths = 0, inside_68 = 0, inside_95 = 0, by_interval = 0, by_bound = 0, unjudged = 0, spurious = 0;
   int below_95 = 0, above_95 = 0;
+  // |z| of the parameters judged by their interval, per role: a right sigma gives a median of
+  // 0.674 (the half-normal's); a smaller median with misses in the tails means heavy tails.
+  std::array<std::vector<double>, 3> interval_z;
   void add(const ParameterOutcome& outcome) {
+    if (outcome.judged_by == 'p') interval_z[outcome.role].push_back(outcome.z);
     ++truths;
     below_95 += outcome.miss_side_95 < 0;
     above_95 += outcome.miss_side_95 > 0;
@@ -431,6 +439,19 @@ void print_tallies(const std::array<Tally, static_cast<int>(CoverageKind::kCount
       if (tally.truths < 240) std::printf(" (fewer than 240 truths)");
     }
     std::printf("\n");
+    static const char* const kRoleNames[] = {"amplitude", "shape", "width"};
+    for (int role = 0; role < 3; ++role) {
+      std::vector<double> z = tally.interval_z[role];
+      if (z.empty()) continue;
+      std::sort(z.begin(), z.end());
+      const auto share_below = [&](double limit) {
+        return 100.0 * (std::upper_bound(z.begin(), z.end(), limit) - z.begin()) / z.size();
+      };
+      std::printf("  %-10s   %-9s |z| median %.2f (0.67), 90th percentile %.2f (1.64); within 1: %.1f %%, 1.96: "
+                  "%.1f %% of %zu\n",
+                  "", kRoleNames[role], z[z.size() / 2], z[std::min(z.size() - 1, z.size() * 9 / 10)],
+                  share_below(1.0), share_below(1.959964), z.size());
+    }
   }
 }
 
