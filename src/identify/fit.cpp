@@ -390,8 +390,19 @@ FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, doub
     SelectedModel selected =
         select_model(fit.points, span, allowed, covariance, kInitialDiscrepancy, first_weight_model);
     const int dof = static_cast<int>(fit.points.size()) - parameter_count(selected.structure);
+    // The distance that decides the discrepancy is the one of a fit under the weights it tests:
+    // the selection's fit under the 1 % spread is off by many sigma at the short taus, whose
+    // estimates are far more precise, and would report a spread that is not there.
+    SelectedModel exact = selected;
+    reweigh_selected(fit.points, span, allowed, covariance, 0.0, &exact);
+    const NoiseModel exact_model = model_from_log_parameters(exact.structure, exact.log_parameters);
+    double discrepancy = estimate_discrepancy(fit.points, exact_model, covariance, dof);
+    if (discrepancy < kInitialDiscrepancy) {
+      selected = select_model(fit.points, span, allowed, covariance, discrepancy, exact_model, &exact);
+      return selected;
+    }
     const NoiseModel selected_model = model_from_log_parameters(selected.structure, selected.log_parameters);
-    const double discrepancy = estimate_discrepancy(fit.points, selected_model, covariance, dof);
+    discrepancy = estimate_discrepancy(fit.points, selected_model, covariance, dof);
     if (discrepancy < kInitialDiscrepancy) {
       selected = select_model(fit.points, span, allowed, covariance, discrepancy, selected_model, &selected);
     } else {

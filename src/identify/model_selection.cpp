@@ -450,5 +450,11 @@ void refit_selected(const std::vector<FitPoint>& points, const DataSpan& span, c
   removal_statistics(context, selected);
 }
 
+void reweigh_selected(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
+                      OavarCovariance& covariance, double discrepancy, SelectedModel* selected) {
+  const SelectionContext context{points, span, options, covariance, discrepancy, static_cast<int>(points.size())};
+  reweigh(context, selected);
+}
+
 }  // namespace identify
 }  // namespace imu_lab

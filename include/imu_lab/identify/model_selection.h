@@ -70,6 +70,10 @@ SelectedModel select_model(const std::vector<FitPoint>& points, const DataSpan& 
 void refit_selected(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
                     OavarCovariance& covariance, double discrepancy, SelectedModel* selected);
 
+// As refit_selected, without the removal statistics (a refit to measure the distance at).
+void reweigh_selected(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
+                      OavarCovariance& covariance, double discrepancy, SelectedModel* selected);
+
 // Refits a fixed structure from `start` and from a few perturbations of it; the best solve.
 SolveOutcome refit_structure(const std::vector<FitPoint>& points, const ModelStructure& structure,
                              const std::vector<double>& start, const DataSpan& span, const MomentWeights& weights);
