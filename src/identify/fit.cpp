@@ -395,8 +395,24 @@ FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, doub
     // estimates are far more precise, and would report a spread that is not there.
     SelectedModel exact = selected;
     reweigh_selected(fit.points, span, allowed, covariance, 0.0, &exact);
-    const NoiseModel exact_model = model_from_log_parameters(exact.structure, exact.log_parameters);
+    NoiseModel exact_model = model_from_log_parameters(exact.structure, exact.log_parameters);
     double discrepancy = estimate_discrepancy(fit.points, exact_model, covariance, dof);
+    // Under the spread the selection cannot see what only the shortest taus show (a mode taken for
+    // a line, or missed); at the estimates' own precision the selection may find a structure that
+    // describes the curve.
+    if (discrepancy >= kInitialDiscrepancy) {
+      SelectedModel precise = exact;
+      swap_lines_for_modes(fit.points, span, allowed, covariance, 0.0, &precise);
+      precise = select_model(fit.points, span, allowed, covariance, 0.0, exact_model, &precise);
+      const NoiseModel precise_model = model_from_log_parameters(precise.structure, precise.log_parameters);
+      const int precise_dof = static_cast<int>(fit.points.size()) - parameter_count(precise.structure);
+      const double precise_discrepancy = estimate_discrepancy(fit.points, precise_model, covariance, precise_dof);
+      if (precise_discrepancy < kInitialDiscrepancy) {
+        exact = precise;
+        exact_model = precise_model;
+        discrepancy = precise_discrepancy;
+      }
+    }
     if (discrepancy < kInitialDiscrepancy) {
       selected = select_model(fit.points, span, allowed, covariance, discrepancy, exact_model, &exact);
       return selected;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "imu_lab/identify/chi_squared.h"
 #include "imu_lab/identify/model_selection.h"
 
 namespace imu_lab {
@@ -157,6 +158,31 @@ std::vector<StructureAlternative> weigh_structure_alternatives(const std::vector
   std::vector<StructureAlternative> summaries;
   for (const FittedAlternative& alternative : alternatives) summaries.push_back(alternative.summary);
   return summaries;
+}
+
+bool swap_lines_for_modes(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
+                          OavarCovariance& covariance, double discrepancy, SelectedModel* selected) {
+  const double threshold = chi_squared_quantile(1.0 - options.significance, 1);
+  bool swapped = false;
+  for (size_t i = 0; i < selected->structure.slots.size(); ++i) {
+    int resonances = 0;
+    for (const TermSlot& slot : selected->structure.slots) resonances += slot.kind == TermKind::kResonance;
+    if (selected->structure.slots[i].kind != TermKind::kSinusoid || resonances >= options.max_resonances) continue;
+    FittedAlternative mode;
+    if (!fit_alternative(points, span, selected->structure, selected->log_parameters, static_cast<int>(i),
+                         selected->weights, &mode)) {
+      continue;
+    }
+    const double statistic = 2.0 * (selected->cost - mode.outcome.cost);
+    if (!(statistic > threshold)) continue;
+    selected->steps.push_back({"swap sinusoid for", "resonance", statistic, threshold});
+    selected->structure = mode.structure;
+    selected->log_parameters = mode.outcome.log_parameters;
+    reweigh_selected(points, span, options, covariance, discrepancy, selected);
+    swapped = true;
+  }
+  if (swapped) canonical_order(selected->structure, selected->log_parameters);
+  return swapped;
 }
 
 }  // namespace identify

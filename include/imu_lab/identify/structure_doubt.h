@@ -57,5 +57,16 @@ std::vector<StructureAlternative> weigh_structure_alternatives(const std::vector
                                                                const std::vector<TermAddition>& additions,
                                                                Eigen::MatrixXd* log_covariance);
 
+struct SelectedModel;
+class OavarCovariance;
+
+// Each line of `selected` refitted as a resonance (from the starts the doubt uses) under weights
+// at `discrepancy`, kept where J falls by more than one parameter's chi2 quantile at the
+// selection's significance (the line is a resonance of zero width, so the two are nested). The
+// selection under a 1 % spread cannot tell a mode from a line where only the shortest taus see
+// the width; the estimates' own precision often can. Returns whether any line was swapped.
+bool swap_lines_for_modes(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
+                          OavarCovariance& covariance, double discrepancy, SelectedModel* selected);
+
 }  // namespace identify
 }  // namespace imu_lab
