@@ -159,14 +159,14 @@ void BlockMeanAutocorrelation::load(BinaryReader& in, std::int64_t processed_cou
       moments.last = in.get_finite_f64();
       moments.count = in.get_count();
     }
-    // The engine's counts never near 2^63; a payload whose open and pooled counts sum past it
-    // would overflow when the segment is folded.
     BlockSeriesSummary& pooled = closed_[i];
     for (int d = 0; d <= kMaxBlockDifferences; ++d) {
       pooled.lag1_numerator[d] = in.get_finite_f64();
       pooled.centred_squares[d] = in.get_finite_f64();
       pooled.raw_squares[d] = in.get_finite_f64();
       pooled.count[d] = in.get_count();
+      // The engine's counts never near 2^63; a payload whose open and pooled counts sum past it
+      // would overflow when the segment is folded.
       if (open_[i][d].count > std::numeric_limits<std::int64_t>::max() - pooled.count[d]) {
         in.fail("block mean series counts overflow when the open segment is pooled");
       }

@@ -381,46 +381,45 @@ FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, doub
   covariance.set_pooled_term_fractions(pooled_term_fractions(fit.points));
   // The weights stand on a description of the data (descriptive_model.h). The selection first
   // asks the model to describe the curve to 1 % in AVAR (the band's floor is +-1 % in
-  // deviation); the discrepancy the selected model then leaves is estimated. Below 1 % (a model
-  // that is right, as on the emulator) the selection runs again with it, so the estimates'
-  // full precision decides; above, the terms stay as selected and only their fit and sigmas take
-  // the larger spread (selecting again under it would drop terms, raise the spread, and spiral).
+  // deviation); the spread the selected structure leaves is then measured at its refit without
+  // one, since the fit under the 1 % spread is off by many sigma at the short taus, whose
+  // estimates are far more precise. Under 1 % (a model that is right, as on the emulator) the
+  // selection runs again with it, so the estimates' full precision decides. At 1 % or more the
+  // selection looks again at that precision (a mode taken for a line, or missed, shows only at
+  // the shortest taus) and keeps what it finds if that leaves under 1 %; otherwise the terms stay
+  // as selected and only their fit and sigmas take the larger spread (selecting again under it
+  // would drop terms, raise the spread, and spiral). doc/identification.md, "Model discrepancy".
   const NoiseModel first_weight_model = descriptive_model(fit.points, span, quantization);
+  const auto spread_left_by = [&](const SelectedModel& model) {
+    const int dof = static_cast<int>(fit.points.size()) - parameter_count(model.structure);
+    return estimate_discrepancy(fit.points, model_from_log_parameters(model.structure, model.log_parameters),
+                                covariance, dof);
+  };
   const auto select = [&](const FitOptions& allowed) {
     SelectedModel selected =
         select_model(fit.points, span, allowed, covariance, kInitialDiscrepancy, first_weight_model);
-    const int dof = static_cast<int>(fit.points.size()) - parameter_count(selected.structure);
-    // The distance that decides the discrepancy is the one of a fit under the weights it tests:
-    // the selection's fit under the 1 % spread is off by many sigma at the short taus, whose
-    // estimates are far more precise, and would report a spread that is not there.
     SelectedModel exact = selected;
     reweigh_selected(fit.points, span, allowed, covariance, 0.0, &exact);
-    NoiseModel exact_model = model_from_log_parameters(exact.structure, exact.log_parameters);
-    double discrepancy = estimate_discrepancy(fit.points, exact_model, covariance, dof);
-    // Under the spread the selection cannot see what only the shortest taus show (a mode taken for
-    // a line, or missed); at the estimates' own precision the selection may find a structure that
-    // describes the curve.
+    double discrepancy = spread_left_by(exact);
     if (discrepancy >= kInitialDiscrepancy) {
       SelectedModel precise = exact;
       swap_lines_for_modes(fit.points, span, allowed, covariance, 0.0, &precise);
-      precise = select_model(fit.points, span, allowed, covariance, 0.0, exact_model, &precise);
-      const NoiseModel precise_model = model_from_log_parameters(precise.structure, precise.log_parameters);
-      const int precise_dof = static_cast<int>(fit.points.size()) - parameter_count(precise.structure);
-      const double precise_discrepancy = estimate_discrepancy(fit.points, precise_model, covariance, precise_dof);
+      precise = select_model(fit.points, span, allowed, covariance, 0.0,
+                             model_from_log_parameters(exact.structure, exact.log_parameters), &precise);
+      const double precise_discrepancy = spread_left_by(precise);
       if (precise_discrepancy < kInitialDiscrepancy) {
         exact = precise;
-        exact_model = precise_model;
         discrepancy = precise_discrepancy;
       }
     }
     if (discrepancy < kInitialDiscrepancy) {
-      selected = select_model(fit.points, span, allowed, covariance, discrepancy, exact_model, &exact);
-      return selected;
+      return select_model(fit.points, span, allowed, covariance, discrepancy,
+                          model_from_log_parameters(exact.structure, exact.log_parameters), &exact);
     }
-    const NoiseModel selected_model = model_from_log_parameters(selected.structure, selected.log_parameters);
-    discrepancy = estimate_discrepancy(fit.points, selected_model, covariance, dof);
+    discrepancy = spread_left_by(selected);
     if (discrepancy < kInitialDiscrepancy) {
-      selected = select_model(fit.points, span, allowed, covariance, discrepancy, selected_model, &selected);
+      selected = select_model(fit.points, span, allowed, covariance, discrepancy,
+                              model_from_log_parameters(selected.structure, selected.log_parameters), &selected);
     } else {
       refit_selected(fit.points, span, allowed, covariance, discrepancy, &selected);
     }

@@ -160,14 +160,14 @@ std::vector<StructureAlternative> weigh_structure_alternatives(const std::vector
   return summaries;
 }
 
-bool swap_lines_for_modes(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
+void swap_lines_for_modes(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
                           OavarCovariance& covariance, double discrepancy, SelectedModel* selected) {
   const double threshold = chi_squared_quantile(1.0 - options.significance, 1);
+  int resonances = 0;
+  for (const TermSlot& slot : selected->structure.slots) resonances += slot.kind == TermKind::kResonance;
   bool swapped = false;
-  for (size_t i = 0; i < selected->structure.slots.size(); ++i) {
-    int resonances = 0;
-    for (const TermSlot& slot : selected->structure.slots) resonances += slot.kind == TermKind::kResonance;
-    if (selected->structure.slots[i].kind != TermKind::kSinusoid || resonances >= options.max_resonances) continue;
+  for (size_t i = 0; i < selected->structure.slots.size() && resonances < options.max_resonances; ++i) {
+    if (selected->structure.slots[i].kind != TermKind::kSinusoid) continue;
     FittedAlternative mode;
     if (!fit_alternative(points, span, selected->structure, selected->log_parameters, static_cast<int>(i),
                          selected->weights, &mode)) {
@@ -179,10 +179,10 @@ bool swap_lines_for_modes(const std::vector<FitPoint>& points, const DataSpan& s
     selected->structure = mode.structure;
     selected->log_parameters = mode.outcome.log_parameters;
     reweigh_selected(points, span, options, covariance, discrepancy, selected);
+    ++resonances;
     swapped = true;
   }
   if (swapped) canonical_order(selected->structure, selected->log_parameters);
-  return swapped;
 }
 
 }  // namespace identify
