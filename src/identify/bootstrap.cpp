@@ -61,9 +61,11 @@ void apply_bootstrap(const BootstrapSummary& summary, FitResult* fit) {
     term.sigma_source = SigmaSource::kBootstrap;
     term.amplitude.log_sigma = summary.amplitude_log_sigma[i];
     term.amplitude.sigma = term.amplitude.value * term.amplitude.log_sigma;
+    term.amplitude.structure_mixture.clear();  // the refits' spread stands alone
     if (term.shape_fitted) {
       term.shape.log_sigma = summary.shape_log_sigma[i];
       term.shape.sigma = term.shape.value * term.shape.log_sigma;
+      term.shape.structure_mixture.clear();
     }
     if (term.status == TermStatus::kPresent &&
         !(term.amplitude.log_sigma <= fit->options.unconstrained_relative_sigma)) {

@@ -78,14 +78,28 @@ FitQuality assess_quality(double cost, int points, int parameters, double discre
   return quality;
 }
 
-void set_log_sigma(ParameterEstimate* estimate, double log_variance) {
-  estimate->log_sigma = std::sqrt(std::max(0.0, log_variance));
+// The estimate of the combination c' ln(theta) of the fit's log-parameters: its sigma from the
+// (widened) covariance and, where alternatives were weighed, the mixture its intervals come from.
+void set_log_uncertainty(const FitResult& fit, const Eigen::MatrixXd& selected_log_covariance,
+                         const Eigen::VectorXd& combination, ParameterEstimate* estimate) {
+  estimate->log_sigma = std::sqrt(std::max(0.0, combination.dot(fit.log_covariance * combination)));
   estimate->sigma = estimate->value * estimate->log_sigma;
+  if (!fit.structure_alternatives.empty()) {
+    estimate->structure_mixture = structure_mixture(fit.structure_alternatives, selected_log_covariance, combination);
+  }
+}
+
+// The combination picking log-parameters `first` (and `second`, when given) of the fit.
+Eigen::VectorXd log_parameter_sum(const FitResult& fit, int first, int second = -1) {
+  Eigen::VectorXd combination = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(fit.log_parameters.size()));
+  combination(first) = 1.0;
+  if (second >= 0) combination(second) += 1.0;
+  return combination;
 }
 
 // Terms of the selected model, with moment-covariance sigmas and, when too loose, a profile bound.
-void describe_model_terms(const SelectedModel& selected, const DataSpan& span, FitResult* fit) {
-  const Eigen::MatrixXd& covariance = fit->log_covariance;
+void describe_model_terms(const SelectedModel& selected, const DataSpan& span,
+                          const Eigen::MatrixXd& selected_log_covariance, FitResult* fit) {
   const std::vector<std::string> names = term_names(fit->model);
   for (size_t i = 0; i < fit->model.terms.size(); ++i) {
     const Term& term = fit->model.terms[i];
@@ -97,15 +111,17 @@ void describe_model_terms(const SelectedModel& selected, const DataSpan& span, F
     estimate.status = TermStatus::kPresent;
     estimate.sigma_source = SigmaSource::kMomentCovariance;
     estimate.amplitude.value = term.amplitude;
-    set_log_sigma(&estimate.amplitude, covariance(offset, offset));
+    set_log_uncertainty(*fit, selected_log_covariance, log_parameter_sum(*fit, offset), &estimate.amplitude);
     estimate.shape_fitted = slot.shape_free;
     if (has_shape(term.kind) && term.shape > 0.0) estimate.shape.value = term.shape;
-    if (slot.shape_free) set_log_sigma(&estimate.shape, covariance(offset + 1, offset + 1));
+    if (slot.shape_free) {
+      set_log_uncertainty(*fit, selected_log_covariance, log_parameter_sum(*fit, offset + 1), &estimate.shape);
+    }
     if (term.kind == TermKind::kResonance) {
       estimate.width.value = term.width;
       // ln width = ln f_n + ln(width / f_n)
-      set_log_sigma(&estimate.width, covariance(offset + 1, offset + 1) + covariance(offset + 2, offset + 2) +
-                                         2.0 * covariance(offset + 1, offset + 2));
+      set_log_uncertainty(*fit, selected_log_covariance, log_parameter_sum(*fit, offset + 1, offset + 2),
+                          &estimate.width);
     }
     estimate.selection_statistic = selected.removal_lr_statistics[i];
     estimate.selection_threshold = selected.removal_thresholds[i];
@@ -311,8 +327,15 @@ BandLimits band_limits(double measured_deviation, double edf) {
           std::max((1.0 + kBandMinimumHalfWidth) * measured_deviation, bounds.upper)};
 }
 
-double ParameterEstimate::interval_low(double z) const { return value * std::exp(-z * log_sigma); }
-double ParameterEstimate::interval_high(double z) const { return value * std::exp(z * log_sigma); }
+double ParameterEstimate::interval_low(double z) const {
+  if (structure_mixture.empty()) return value * std::exp(-z * log_sigma);
+  return value * std::exp(mixture_log_quantile(structure_mixture, 0.5 * std::erfc(z / std::sqrt(2.0))));
+}
+
+double ParameterEstimate::interval_high(double z) const {
+  if (structure_mixture.empty()) return value * std::exp(z * log_sigma);
+  return value * std::exp(mixture_log_quantile(structure_mixture, 0.5 * std::erfc(-z / std::sqrt(2.0))));
+}
 
 std::string term_status_name(TermStatus status) {
   static const char* const kNames[] = {"present", "unconstrained", "absent"};
@@ -444,13 +467,14 @@ FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, doub
   fit.selection_steps = selected.steps;
   fit.model = model_from_log_parameters(fit.structure, fit.log_parameters);
   fit.log_covariance = log_parameter_covariance(fit.points, fit.structure, fit.log_parameters, selected.weights);
+  const Eigen::MatrixXd selected_log_covariance = fit.log_covariance;
   const std::vector<TermAddition> additions = fit_left_out_terms(selected, span, fit);
   fit.structure_alternatives =
       weigh_structure_alternatives(fit.points, span, allowed, fit.structure, fit.log_parameters, selected.cost,
                                    selected.weights, additions, &fit.log_covariance);
   fit.quality = assess_quality(selected.cost, static_cast<int>(fit.points.size()), parameter_count(fit.structure),
                                selected.weights.discrepancy);
-  describe_model_terms(selected, span, &fit);
+  describe_model_terms(selected, span, selected_log_covariance, &fit);
   describe_absent_terms(selected, span, additions, &fit);
   fit.band = band_check(evaluable, fit.model, span);
   fit.warnings = fit_warnings(fit);

@@ -140,14 +140,16 @@ void emit_white_equivalent(YAML::Emitter& out, SensorKind sensor, const FitResul
   out << YAML::EndMap;
 }
 
-// Each line or resonance's other description and its weight in the sigmas (structure_doubt.h).
+// Each line or resonance's other description and its weight in the sigmas and intervals
+// (structure_doubt.h).
 void emit_structure_doubt(YAML::Emitter& out, const FitResult& fit) {
   if (fit.structure_alternatives.empty()) return;
   out << YAML::Key << "structure_doubt" << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "note" << YAML::Value
       << "each peak fitted again as the other kind (a line as a resonance, a resonance as a line) and each "
          "left-out term added; the sigmas of the reported terms include the spread between these structures "
-         "and the selected one, weighed by Akaike's criterion (doc/identification.md)";
+         "and the selected one, weighed by Akaike's criterion, and their intervals are the quantiles of the "
+         "weighed structures' mixture (doc/identification.md)";
   out << YAML::Key << "alternatives" << YAML::Value << YAML::BeginSeq;
   for (const StructureAlternative& alternative : fit.structure_alternatives) {
     out << YAML::Flow << YAML::BeginMap;

@@ -1,6 +1,7 @@
 #include "imu_lab/identify/structure_doubt.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -134,23 +135,29 @@ std::vector<StructureAlternative> weigh_structure_alternatives(const std::vector
   Eigen::MatrixXd widened = selected_covariance / total;
   for (FittedAlternative& alternative : alternatives) {
     alternative.summary.log_parameter_offsets.assign(count, 0.0);
+    alternative.summary.log_covariance = Eigen::MatrixXd::Zero(count, count);
     const Eigen::MatrixXd covariance =
         alternative.addition
             ? selected_covariance
             : log_parameter_covariance(points, alternative.structure, alternative.outcome.log_parameters, weights);
     for (int p = 0; p < count; ++p) {
       const int ap = shared_index(structure, alternative, p);
-      const double offset_p = ap < 0 ? 0.0 : alternative.outcome.log_parameters[ap] - log_parameters[p];
-      alternative.summary.log_parameter_offsets[p] = offset_p;
+      alternative.summary.log_parameter_offsets[p] =
+          ap < 0 ? 0.0 : alternative.outcome.log_parameters[ap] - log_parameters[p];
+    }
+    const std::vector<double>& offsets = alternative.summary.log_parameter_offsets;
+    for (int p = 0; p < count; ++p) {
+      const int ap = shared_index(structure, alternative, p);
       for (int q = 0; q < count; ++q) {
         const int aq = shared_index(structure, alternative, q);
-        double term = 0.0;
+        double own = 0.0;
         if (ap >= 0 && aq >= 0) {
-          term = covariance(ap, aq) + offset_p * (alternative.outcome.log_parameters[aq] - log_parameters[q]);
+          own = covariance(ap, aq);
         } else if (ap < 0 && aq < 0) {
-          term = selected_covariance(p, q);
+          own = selected_covariance(p, q);
         }
-        widened(p, q) += alternative.summary.weight * term;
+        alternative.summary.log_covariance(p, q) = own;
+        widened(p, q) += alternative.summary.weight * (own + offsets[p] * offsets[q]);
       }
     }
   }
@@ -158,6 +165,49 @@ std::vector<StructureAlternative> weigh_structure_alternatives(const std::vector
   std::vector<StructureAlternative> summaries;
   for (const FittedAlternative& alternative : alternatives) summaries.push_back(alternative.summary);
   return summaries;
+}
+
+std::vector<LogNormalComponent> structure_mixture(const std::vector<StructureAlternative>& alternatives,
+                                                  const Eigen::MatrixXd& selected_log_covariance,
+                                                  const Eigen::VectorXd& combination) {
+  const auto sigma_under = [&](const Eigen::MatrixXd& covariance) {
+    return std::sqrt(std::max(0.0, combination.dot(covariance * combination)));
+  };
+  std::vector<LogNormalComponent> components(1);
+  for (const StructureAlternative& alternative : alternatives) {
+    const Eigen::Map<const Eigen::VectorXd> offsets(alternative.log_parameter_offsets.data(),
+                                                    static_cast<Eigen::Index>(alternative.log_parameter_offsets.size()));
+    components.push_back({alternative.weight, combination.dot(offsets), sigma_under(alternative.log_covariance)});
+    components.front().weight -= alternative.weight;
+  }
+  components.front().log_sigma = sigma_under(selected_log_covariance);
+  return components;
+}
+
+double mixture_log_quantile(const std::vector<LogNormalComponent>& components, double probability) {
+  if (components.empty()) return 0.0;
+  double total = 0.0, low = std::numeric_limits<double>::infinity(), high = -low;
+  for (const LogNormalComponent& component : components) {
+    total += component.weight;
+    low = std::min(low, component.log_offset - 10.0 * component.log_sigma);
+    high = std::max(high, component.log_offset + 10.0 * component.log_sigma);
+  }
+  const auto below = [&](double log_value) {
+    double mass = 0.0;
+    for (const LogNormalComponent& component : components) {
+      const double standardized = component.log_sigma > 0.0
+                                      ? (log_value - component.log_offset) / component.log_sigma
+                                      : (log_value >= component.log_offset ? 1e300 : -1e300);
+      mass += component.weight * 0.5 * std::erfc(-standardized / std::sqrt(2.0));
+    }
+    return mass / total;
+  };
+  // The mixture's distribution function rises monotonically from ~0 at `low` to ~1 at `high`.
+  for (int iteration = 0; iteration < 200 && high - low > 1e-12 * (1.0 + std::abs(high)); ++iteration) {
+    const double middle = 0.5 * (low + high);
+    (below(middle) < probability ? low : high) = middle;
+  }
+  return 0.5 * (low + high);
 }
 
 void swap_lines_for_modes(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,

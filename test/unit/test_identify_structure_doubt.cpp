@@ -132,6 +132,42 @@ TEST(IdentifyStructureDoubt, TheFrontEndHoldsItsTruthWhenTheModeIsTakenForALine)
   // truth; the widened variance holds weight x (its offset)^2 and more.
   EXPECT_LT(sigmas_off(white->shape, 40.0), 1.96) << "corner " << white->shape.value << " Hz";
   EXPECT_LT(sigmas_off(white->amplitude, 4e-3), 1.96) << "N " << white->amplitude.value;
+  // The intervals are the mixture's quantiles. The mode's corner lies above the line's (and is
+  // loosely held: the mode and the corner trade), so the 95 % interval reaches up to the truth
+  // and further up than down, where it stays inside the symmetric widened +-1.96 sigma.
+  const double z95 = 1.959964;
+  EXPECT_LE(white->shape.interval_low(z95), 40.0);
+  EXPECT_GE(white->shape.interval_high(z95), 40.0);
+  const double reach_up = std::log(white->shape.interval_high(z95) / white->shape.value);
+  const double reach_down = std::log(white->shape.value / white->shape.interval_low(z95));
+  EXPECT_GT(reach_up, 1.5 * reach_down) << "the interval did not lean towards the alternative";
+  EXPECT_LT(reach_down, z95 * white->shape.log_sigma);
+}
+
+// The normal cumulative distribution, written out here apart from the code under test.
+double normal_below(double x) { return 0.5 * (1.0 + std::erf(x / std::sqrt(2.0))); }
+
+TEST(IdentifyStructureDoubt, OneStructureGivesTheSymmetricIntervalInTheLogarithm) {
+  const std::vector<LogNormalComponent> alone = {{1.0, 0.0, 0.2}};
+  EXPECT_NEAR(mixture_log_quantile(alone, normal_below(1.0)), 0.2, 1e-9);
+  EXPECT_NEAR(mixture_log_quantile(alone, normal_below(-1.959964)), -0.2 * 1.959964, 1e-9);
+}
+
+// 0.8 N(0, 0.1) + 0.2 N(-1, 0.1): the upper 84.1 % limit is where 0.2 + 0.8 Phi(q / 0.1) = 0.841,
+// q = 0.1 Phi^-1(0.8016) = 0.0847; the lower 2.5 % limit lies inside the alternative's component.
+TEST(IdentifyStructureDoubt, MixtureLimitsAreWhereTheWeightedTailsReachTheirShare) {
+  const std::vector<LogNormalComponent> mixture = {{0.8, 0.0, 0.1}, {0.2, -1.0, 0.1}};
+  const auto below = [&](double q) { return 0.8 * normal_below(q / 0.1) + 0.2 * normal_below((q + 1.0) / 0.1); };
+  for (double probability : {0.025, 0.1587, 0.5, 0.8413, 0.975}) {
+    const double q = mixture_log_quantile(mixture, probability);
+    EXPECT_NEAR(below(q), probability, 1e-9) << probability;
+  }
+  EXPECT_NEAR(mixture_log_quantile(mixture, normal_below(1.0)), 0.0847, 5e-4);
+  EXPECT_LT(mixture_log_quantile(mixture, 0.025), -0.9);
+  // Zero-sigma components are steps at their offsets.
+  const std::vector<LogNormalComponent> steps = {{0.3, -1.0, 0.0}, {0.7, 2.0, 0.0}};
+  EXPECT_NEAR(mixture_log_quantile(steps, 0.2), -1.0, 1e-9);
+  EXPECT_NEAR(mixture_log_quantile(steps, 0.5), 2.0, 1e-9);
 }
 
 }  // namespace

@@ -41,7 +41,12 @@ struct ParameterEstimate {
   // SI, one-sided profile bound at 68.27 % (profile_likelihood.h): [0, it] is the term's 68.3 %
   // interval when it is reported absent or unconstrained; NaN if none.
   double upper_bound_one_sigma = kNotAvailable;
-  // value * exp(+-z log_sigma): the interval is symmetric in ln(value), so asymmetric in value.
+  // The structures weighed for this parameter (structure_doubt.h), the selected one first; empty
+  // when no alternative was weighed (or the sigma is the bootstrap's).
+  std::vector<LogNormalComponent> structure_mixture;
+  // The interval of probability erf(z / sqrt 2): value * exp(+-z log_sigma), symmetric in
+  // ln(value) and so asymmetric in value; with a structure mixture, its quantiles instead (the
+  // model-averaged tail area interval), which may be asymmetric in ln(value) too.
   double interval_low(double z) const;
   double interval_high(double z) const;
 };

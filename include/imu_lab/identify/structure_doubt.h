@@ -12,6 +12,11 @@
 // var_a the alternative's own for a swapped peak, the selected one's for an added term (which
 // may have gone to a negligible amplitude, where its own covariance is singular).
 // The reported values stay the selected model's, so the drawn total is still the fitted one.
+// That variance is a mean square (Burnham and Anderson, Model Selection and Multimodel
+// Inference, 2nd ed. 2002, section 6.3; Buckland et al. averaged the root instead); it is what
+// `sigma` reports. The intervals are the mixture's own quantiles, the model-averaged tail area
+// limits of Turek and Fletcher (Computational Statistics & Data Analysis 2012): an alternative
+// that moves a parameter one way widens its interval on that side only.
 #pragma once
 
 #include <Eigen/Core>
@@ -35,7 +40,30 @@ struct StructureAlternative {
   double weight = 0.0;             // Akaike weight among the selected structure and the alternatives
   // Per selected log-parameter: ln(theta_alternative / theta_selected), 0 where not shared.
   std::vector<double> log_parameter_offsets;
+  // The alternative's own covariance of the selected log-parameters about its values (an
+  // addition, and the replaced slot: the selected structure's; the replaced slot uncorrelated
+  // with the rest).
+  Eigen::MatrixXd log_covariance;
 };
+
+// One structure's share in the uncertainty of a parameter's logarithm: its weight, its value's
+// offset from the reported (selected) one, and its own sigma.
+struct LogNormalComponent {
+  double weight = 1.0;
+  double log_offset = 0.0;
+  double log_sigma = 0.0;
+};
+
+// For the combination c' ln(theta) of the selected log-parameters: the selected structure (the
+// weight the alternatives leave, offset 0, its sigma from `selected_log_covariance`), then each
+// alternative with its weight, offset and own sigma.
+std::vector<LogNormalComponent> structure_mixture(const std::vector<StructureAlternative>& alternatives,
+                                                  const Eigen::MatrixXd& selected_log_covariance,
+                                                  const Eigen::VectorXd& combination);
+
+// The `probability` quantile of the weighted mixture of normals: a model-averaged tail area
+// limit of ln(value / reported value). Components of zero sigma are steps at their offset.
+double mixture_log_quantile(const std::vector<LogNormalComponent>& components, double probability);
 
 // A term the selection left out, fitted freely beside the selected ones: `structure` is the
 // selected one with the term's slot appended, `outcome` the fit.
