@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "imu_lab/identify/white_equivalent.h"
 
@@ -103,6 +104,43 @@ void warn_band(const FitResult& fit, std::vector<std::string>* warnings) {
   }
 }
 
+// Every present parameter whose reported value lies outside its own 68.3 % interval, named
+// "term parameter", comma-separated.
+std::string values_outside_their_intervals(const FitResult& fit) {
+  std::string names;
+  for (const TermEstimate& term : fit.terms) {
+    if (term.status != TermStatus::kPresent) continue;
+    const std::pair<const char*, const ParameterEstimate*> parameters[] = {
+        {"amplitude", &term.amplitude}, {"shape", &term.shape}, {"width", &term.width}};
+    for (const auto& [label, estimate] : parameters) {
+      if (!std::isfinite(estimate->value) || !std::isfinite(estimate->log_sigma)) continue;
+      if (estimate->value >= estimate->interval_low(1.0) && estimate->value <= estimate->interval_high(1.0)) continue;
+      names += (names.empty() ? "" : ", ") + term.name + " " + label;
+    }
+  }
+  return names;
+}
+
+// An alternative structure with a larger Akaike weight than the selected one (a left-out term
+// whose addition lowers J by more than 2 but less than the selection's threshold): the intervals,
+// the weighed structures' quantiles, lean to its values and may leave reported ones out.
+void warn_outweighed_selection(const FitResult& fit, std::vector<std::string>* warnings) {
+  double selected_weight = 1.0;
+  for (const StructureAlternative& alternative : fit.structure_alternatives) selected_weight -= alternative.weight;
+  const std::string outside = values_outside_their_intervals(fit);
+  for (const StructureAlternative& alternative : fit.structure_alternatives) {
+    if (!(alternative.weight > selected_weight)) continue;
+    const std::string structure = alternative.replaced.empty()
+                                      ? "with " + alternative.replacement + " added"
+                                      : "with " + alternative.replaced + " described as a " + alternative.replacement;
+    warnings->push_back("the structure " + structure + " outweighs the selected one by Akaike's criterion (weight " +
+                        format_number(alternative.weight) + " against " + format_number(selected_weight) +
+                        ", J lower by " + format_number(-alternative.distance_change) +
+                        "): the intervals lean towards its values" +
+                        (outside.empty() ? "" : "; outside their own 68 % interval: " + outside));
+  }
+}
+
 }  // namespace
 
 std::vector<BandExcursion> band_excursions(const std::vector<BandPoint>& band) {
@@ -140,6 +178,7 @@ std::vector<std::string> fit_warnings(const FitResult& fit) {
                        "and the sigmas include it (a front end or a process outside the model family)");
   }
   warn_band(fit, &warnings);
+  warn_outweighed_selection(fit, &warnings);
   for (const TermEstimate& term : fit.terms) {
     if (term.status == TermStatus::kUnconstrained) {
       warnings.push_back(term.name + " is in the model but the data do not constrain it: report its upper bound " +

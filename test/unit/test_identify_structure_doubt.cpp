@@ -170,6 +170,33 @@ TEST(IdentifyStructureDoubt, MixtureLimitsAreWhereTheWeightedTailsReachTheirShar
   EXPECT_NEAR(mixture_log_quantile(steps, 0.5), 2.0, 1e-9);
 }
 
+// When an alternative outweighs the selected structure (a left-out term whose addition lowers J
+// by more than Akaike's 2 but less than the selection's threshold), the intervals lean to its
+// values and may leave reported ones out: a warning says so and names them.
+TEST(IdentifyStructureDoubt, AnAlternativeThatOutweighsTheSelectionIsWarnedAbout) {
+  const FitResult fit = fit_mode_beside_front_end();
+  double selected_weight = 1.0;
+  const StructureAlternative* walk = nullptr;
+  for (const StructureAlternative& alternative : fit.structure_alternatives) {
+    selected_weight -= alternative.weight;
+    if (alternative.replacement == "random_walk") walk = &alternative;
+  }
+  ASSERT_NE(walk, nullptr);
+  ASSERT_GT(walk->weight, selected_weight) << "this test needs a curve where adding K outweighs the selection";
+  const std::string* warning = nullptr;
+  for (const std::string& text : fit.warnings) {
+    if (text.find("with random_walk added outweighs") != std::string::npos) warning = &text;
+  }
+  ASSERT_NE(warning, nullptr);
+  // Every reported amplitude its 68 % interval leaves out is named.
+  for (const TermEstimate& term : fit.terms) {
+    if (term.status != TermStatus::kPresent) continue;
+    const bool outside =
+        term.amplitude.value < term.amplitude.interval_low(1.0) || term.amplitude.value > term.amplitude.interval_high(1.0);
+    EXPECT_EQ(outside, warning->find(term.name + " amplitude") != std::string::npos) << term.name << ": " << *warning;
+  }
+}
+
 }  // namespace
 }  // namespace identify
 }  // namespace imu_lab
