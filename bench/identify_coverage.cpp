@@ -57,25 +57,9 @@ double process_cpu_s() {
   return now.tv_sec + now.tv_nsec * 1e-9;
 }
 
-// Rates of the three axes of a triad at rest.
-std::array<std::vector<double>, 3> emulate_triad(const emulator::TriadErrorModel& model, const std::string& triad_name,
-                                                 double rate_hz, double duration_s, std::uint64_t seed) {
-  emulator::TriadChannel channel(model, triad_name, seed);
-  const double interval_s = 1.0 / rate_hz;
-  const long long count = std::llround(duration_s * rate_hz);
-  std::array<std::vector<double>, 3> rates;
-  for (auto& axis : rates) axis.resize(count);
-  for (long long k = 0; k < count; ++k) {
-    const Eigen::Vector3d sample =
-        channel.measure(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), k * interval_s, interval_s);
-    for (int axis = 0; axis < 3; ++axis) rates[axis][k] = sample[axis];
-  }
-  return rates;
-}
-
 std::vector<double> emulate_x(const emulator::TriadErrorModel& model, double rate_hz, double duration_s,
                               std::uint64_t seed) {
-  return emulate_triad(model, "gyro", rate_hz, duration_s, seed)[0];
+  return emulator::rates_at_rest(model, "gyro", rate_hz, duration_s, seed)[0];
 }
 
 // The overlapping Allan variance at the allan tool's default grid, round(10^(i / 10)), which holds
@@ -487,7 +471,7 @@ int run_coverage(int seeds, int threads, int replicas, const std::string& picked
       FitOptions options;
       for (int triad = 0; triad < 2; ++triad) {
         double mark_s = thread_cpu_s();
-        const auto rates = emulate_triad(triad_model(study, triad, seed), triad == 0 ? "gyro" : "accelerometer",
+        const auto rates = emulator::rates_at_rest(triad_model(study, triad, seed), triad == 0 ? "gyro" : "accelerometer",
                                          study.rate_hz, study.duration_s, seed);
         std::array<std::vector<allan::StabilityPoint>, 3> curves;
         for (int axis = 0; axis < 3; ++axis) curves[axis] = oavar_curve(rates[axis], study.rate_hz);

@@ -120,5 +120,20 @@ Eigen::Vector3d TriadChannel::sample_variance(double interval_s) const {
   return variance;
 }
 
+std::array<std::vector<double>, 3> rates_at_rest(const TriadErrorModel& model, const std::string& triad_name,
+                                                 double rate_hz, double duration_s, std::uint64_t seed) {
+  TriadChannel channel(model, triad_name, seed);
+  const double interval_s = 1.0 / rate_hz;
+  const long long count = std::llround(duration_s * rate_hz);
+  std::array<std::vector<double>, 3> rates;
+  for (auto& axis : rates) axis.resize(count);
+  for (long long k = 0; k < count; ++k) {
+    const Eigen::Vector3d sample =
+        channel.measure(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), k * interval_s, interval_s);
+    for (int axis = 0; axis < 3; ++axis) rates[axis][k] = sample[axis];
+  }
+  return rates;
+}
+
 }  // namespace emulator
 }  // namespace imu_lab

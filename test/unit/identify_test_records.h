@@ -19,17 +19,7 @@ namespace identify_test {
 // Rate samples (interval averages) of the three axes of a triad at rest.
 inline std::array<std::vector<double>, 3> emulate_triad_rates(const emulator::TriadErrorModel& model, double rate_hz,
                                                               double duration_s, std::uint64_t seed) {
-  emulator::TriadChannel channel(model, "gyro", seed);
-  const double interval_s = 1.0 / rate_hz;
-  const long long count = static_cast<long long>(duration_s * rate_hz);
-  std::array<std::vector<double>, 3> rates;
-  for (auto& axis : rates) axis.resize(count);
-  for (long long k = 0; k < count; ++k) {
-    const Eigen::Vector3d sample =
-        channel.measure(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), k * interval_s, interval_s);
-    for (int axis = 0; axis < 3; ++axis) rates[axis][k] = sample[axis];
-  }
-  return rates;
+  return emulator::rates_at_rest(model, "gyro", rate_hz, duration_s, seed);
 }
 
 // Rate samples of axis x of a gyro triad at rest carrying `noise` on x only.

@@ -244,6 +244,24 @@ TEST(EmulatorSettingsCheck, ImpossibleRatesAndStartsAreRefusedByKey) {
   EXPECT_NE(refusal(200.0, INFINITY).find("start_time_s"), std::string::npos);
 }
 
+// The rates of a triad at rest are its channel's outputs for a zero input, sample by sample
+// (the same streams: same model, name and seed), round(duration x rate) of them.
+TEST(EmulatorStatic, RatesAtRestAreTheChannelsOutputsForAZeroInput) {
+  TriadErrorModel model;
+  model.bias_fixed = Eigen::Vector3d(1e-3, -2e-3, 3e-3);
+  model.noise_per_axis[1] = {noise::WhiteRateParameters{1e-3}};
+  const double rate_hz = 50.0, duration_s = 1.01;
+  const auto rates = rates_at_rest(model, "gyro", rate_hz, duration_s, 7);
+  TriadChannel channel(model, "gyro", 7);
+  for (int axis = 0; axis < 3; ++axis) ASSERT_EQ(rates[axis].size(), 51u);
+  for (int k = 0; k < 51; ++k) {
+    const Eigen::Vector3d sample =
+        channel.measure(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), k / rate_hz, 1.0 / rate_hz);
+    for (int axis = 0; axis < 3; ++axis) EXPECT_EQ(rates[axis][k], sample[axis]) << "axis " << axis << ", sample " << k;
+  }
+  EXPECT_NE(rates[1][0], rates[1][1]);  // the noise is there
+}
+
 }  // namespace
 }  // namespace emulator
 }  // namespace imu_lab

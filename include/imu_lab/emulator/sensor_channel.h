@@ -73,5 +73,10 @@ class TriadChannel {
   Eigen::Matrix3d white_factor_ = Eigen::Matrix3d::Identity();
 };
 
+// Rate samples (interval averages) of the three axes of a triad at rest at the reference
+// temperature: round(duration_s x rate_hz) samples from a TriadChannel(model, triad_name, seed).
+std::array<std::vector<double>, 3> rates_at_rest(const TriadErrorModel& model, const std::string& triad_name,
+                                                 double rate_hz, double duration_s, std::uint64_t seed);
+
 }  // namespace emulator
 }  // namespace imu_lab
