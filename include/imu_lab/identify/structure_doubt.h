@@ -7,14 +7,14 @@
 // under the selected model's weights, is weighed against the selected structure by Akaike's
 // criterion on the GMM distance, J + 2 x parameters (Andrews, Econometrica 1999); every parameter
 // the structures share then gets as its log-variance its mean squared distance from the reported
-// (selected) value over the structures (Buckland, Burnham and Augustin, Biometrics 1997):
+// (selected) value over the structures (the mean-square form of Burnham and Anderson, Model
+// Selection and Multimodel Inference, 2nd ed. 2002, section 6.3; Buckland, Burnham and Augustin,
+// Biometrics 1997, average the root):
 //   w_sel var_sel + sum_a w_a (var_a + (ln theta_a - ln theta_sel)^2),
 // var_a the alternative's own for a swapped peak, the selected one's for an added term (which
-// may have gone to a negligible amplitude, where its own covariance is singular).
-// The reported values stay the selected model's, so the drawn total is still the fitted one.
-// That variance is a mean square (Burnham and Anderson, Model Selection and Multimodel
-// Inference, 2nd ed. 2002, section 6.3; Buckland et al. averaged the root instead); it is what
-// `sigma` reports. The intervals are the mixture's own quantiles, the model-averaged tail area
+// may have gone to a negligible amplitude, where its own covariance is singular). That is what
+// `sigma` reports. The reported values stay the selected model's, so the drawn total is still
+// the fitted one. The intervals are the mixture's own quantiles, the model-averaged tail area
 // limits of Turek and Fletcher (Computational Statistics & Data Analysis 2012): an alternative
 // that moves a parameter one way widens its interval on that side only.
 #pragma once
