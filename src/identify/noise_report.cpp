@@ -28,15 +28,21 @@ void emit_number(YAML::Emitter& out, const std::string& key, double value) {
 // value, sigma, intervals and bound of one parameter in every unit it is reported in.
 void emit_parameter(YAML::Emitter& out, const std::string& symbol, const std::vector<UnitScale>& units,
                     const ParameterEstimate& estimate, double confidence) {
+  // The limits in SI, once: with a structure mixture each is a quantile search.
+  const bool has_interval = std::isfinite(estimate.log_sigma);
+  const double low_68 = has_interval ? estimate.interval_low(1.0) : std::nan("");
+  const double high_68 = has_interval ? estimate.interval_high(1.0) : std::nan("");
+  const double low_95 = has_interval ? estimate.interval_low(1.959964) : std::nan("");
+  const double high_95 = has_interval ? estimate.interval_high(1.959964) : std::nan("");
   for (const UnitScale& unit : units) {
     const std::string key = parameter_key(symbol, unit.key);
     emit_number(out, key, estimate.value * unit.per_si);
     emit_number(out, key + "_sigma", estimate.sigma * unit.per_si);
-    if (std::isfinite(estimate.log_sigma)) {
-      emit_number(out, key + "_68_low", estimate.interval_low(1.0) * unit.per_si);
-      emit_number(out, key + "_68_high", estimate.interval_high(1.0) * unit.per_si);
-      emit_number(out, key + "_95_low", estimate.interval_low(1.959964) * unit.per_si);
-      emit_number(out, key + "_95_high", estimate.interval_high(1.959964) * unit.per_si);
+    if (has_interval) {
+      emit_number(out, key + "_68_low", low_68 * unit.per_si);
+      emit_number(out, key + "_68_high", high_68 * unit.per_si);
+      emit_number(out, key + "_95_low", low_95 * unit.per_si);
+      emit_number(out, key + "_95_high", high_95 * unit.per_si);
     }
     emit_number(out, key + upper_bound_suffix(confidence), estimate.upper_bound * unit.per_si);
     emit_number(out, key + upper_bound_suffix(kOneSigmaConfidence), estimate.upper_bound_one_sigma * unit.per_si);
