@@ -264,9 +264,26 @@ void log_parameter_bounds(const ModelStructure& structure, const DataSpan& span,
   }
 }
 
+namespace {
+
+// Ends a solve at the first iterate whose cost lies below a level (Ceres accepts only steps that
+// lower the cost, so the minimum it would reach lies below too).
+class CostBelow : public ceres::IterationCallback {
+ public:
+  explicit CostBelow(double level) : level_(level) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
+    return summary.cost < level_ ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  double level_;
+};
+
+}  // namespace
+
 SolveOutcome solve_model(const std::vector<FitPoint>& points, const ModelStructure& structure,
                          const std::vector<double>& start, const DataSpan& span, const MomentWeights& weights,
-                         const std::vector<int>& held_fixed) {
+                         const std::vector<int>& held_fixed, double stop_below_cost) {
   std::vector<double> lower, upper;
   log_parameter_bounds(structure, span, &lower, &upper);
   std::vector<double> parameters = start;
@@ -287,7 +304,9 @@ SolveOutcome solve_model(const std::vector<FitPoint>& points, const ModelStructu
   if (!held_fixed.empty()) {
     problem.SetManifold(parameters.data(), new ceres::SubsetManifold(static_cast<int>(parameters.size()), held_fixed));
   }
-  const ceres::Solver::Options options = small_fit_solver_options({100, 1e-10, 1e-12, 1e-10});
+  ceres::Solver::Options options = small_fit_solver_options({100, 1e-10, 1e-12, 1e-10});
+  CostBelow stop(stop_below_cost);
+  if (std::isfinite(stop_below_cost)) options.callbacks.push_back(&stop);
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
   outcome.log_parameters = parameters;

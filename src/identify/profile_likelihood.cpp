@@ -55,7 +55,7 @@ class ProfileClimb {
     bool one_sigma_crossed = false;
     for (int step = 0; step < 80; ++step) {
       high_ = low_ + std::log(2.0);
-      const double excess = excess_at(high_);
+      const double excess = excess_at(high_, one_sigma_crossed ? critical_ : one_sigma_critical_);
       if (!one_sigma_crossed && excess >= one_sigma_critical_) {
         one_sigma_crossed = true;
         one_sigma_low_ = low_;
@@ -75,17 +75,20 @@ class ProfileClimb {
   double one_sigma_high() const { return one_sigma_high_; }
 
  private:
-  double excess_at(double log_amplitude) {
+  // The distance's excess over the best fit at an amplitude, exact at or above `decisive` (the
+  // critical value the caller compares with); below it, the first iterate found under it.
+  double excess_at(double log_amplitude, double decisive) {
     std::vector<double> start = current_;
     start[amplitude_index_] = log_amplitude;
-    const SolveOutcome outcome = solve_model(points_, structure_, start, span_, weights_, {amplitude_index_});
+    const SolveOutcome outcome =
+        solve_model(points_, structure_, start, span_, weights_, {amplitude_index_}, best_cost_ + decisive);
     if (outcome.usable && outcome.cost < best_cost_ + critical_) current_ = outcome.log_parameters;
     return outcome.usable ? outcome.cost - best_cost_ : critical_ + 1.0;
   }
 
   void bisect_bracket(double critical, double* low, double* high) {
     const double middle = 0.5 * (*low + *high);
-    if (excess_at(middle) >= critical) {
+    if (excess_at(middle, critical) >= critical) {
       *high = middle;
     } else {
       *low = middle;

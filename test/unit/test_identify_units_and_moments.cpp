@@ -191,6 +191,50 @@ TEST(IdentifyMoments, CovarianceOfLnNIsTheGeneralisedLeastSquaresOne) {
   EXPECT_NEAR(std::sqrt(log_covariance(0, 0)) * 2.0 * std::sqrt(information), 1.0, 1e-3);
 }
 
+// A profile's solve given a level stops at the first iterate under it; without one (or with a
+// level under the minimum) it converges. The stopped iterate lies under the level and above the
+// minimum, and a start already under the level is returned as it is.
+TEST(IdentifyMoments, ASolveGivenALevelStopsAtTheFirstIterateUnderIt) {
+  const double tau0_s = 0.01, density = 2e-5, rate_walk = 3e-4;
+  const long long samples = 20000;
+  NoiseModel model;
+  model.terms = {{TermKind::kWhiteRate, density, 0.0}, {TermKind::kRandomWalk, rate_walk, 0.0}};
+  std::vector<FitPoint> points;
+  for (int m : {1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048}) {
+    points.push_back({m * tau0_s, m, model_avar(model, m * tau0_s)});
+  }
+  ModelStructure structure;
+  structure.slots = {{TermKind::kWhiteRate, false, 0.0}, {TermKind::kRandomWalk, false, 0.0}};
+  DataSpan span;
+  span.tau0_s = tau0_s;
+  span.record_length_s = samples * tau0_s;
+  span.sample_count = samples;
+  span.tau_min_s = points.front().tau_s;
+  span.tau_max_s = points.back().tau_s;
+  span.smallest_avar = points.back().avar;
+  span.largest_avar = points.front().avar;
+  OavarCovariance covariance(averaging_factors(points), tau0_s, samples);
+  const MomentWeights weights = moment_weights(points, model, covariance, 0.0);
+  const std::vector<double> start = {std::log(30.0 * density), std::log(0.1 * rate_walk)};
+  const double start_cost = model_cost(points, structure, start, weights);
+  const SolveOutcome converged = solve_model(points, structure, start, span, weights);
+  ASSERT_TRUE(converged.usable);
+  ASSERT_LT(converged.cost, 1e-3 * start_cost);
+
+  const double level = std::sqrt(start_cost * converged.cost);  // between, on a log scale
+  const SolveOutcome stopped = solve_model(points, structure, start, span, weights, {}, level);
+  ASSERT_TRUE(stopped.usable);
+  EXPECT_LT(stopped.cost, level);
+  EXPECT_GT(stopped.cost, converged.cost * (1.0 + 1e-6));
+  EXPECT_NEAR(stopped.cost, model_cost(points, structure, stopped.log_parameters, weights), 1e-12 * start_cost);
+
+  const SolveOutcome under_minimum = solve_model(points, structure, start, span, weights, {}, 0.5 * converged.cost);
+  EXPECT_NEAR(under_minimum.cost, converged.cost, 1e-9 * start_cost);
+
+  const SolveOutcome at_once = solve_model(points, structure, start, span, weights, {}, 2.0 * start_cost);
+  EXPECT_EQ(at_once.log_parameters, start);
+}
+
 }  // namespace
 }  // namespace identify
 }  // namespace imu_lab

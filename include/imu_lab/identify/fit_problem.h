@@ -14,6 +14,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
 #include <vector>
 
 #include "imu_lab/identify/avar_covariance.h"
@@ -74,10 +75,13 @@ void log_parameter_bounds(const ModelStructure& structure, const DataSpan& span,
                           std::vector<double>* upper);
 
 // Minimises J from `start` (clamped into the bounds); parameters listed in held_fixed keep their
-// start values (profiles).
+// start values (profiles). A profile that only asks whether the minimum lies below a cost can
+// give it as stop_below_cost: the solver stops at the first iterate under it (its steps only
+// lower the cost, so the full minimum would lie below too) and returns that iterate.
 SolveOutcome solve_model(const std::vector<FitPoint>& points, const ModelStructure& structure,
                          const std::vector<double>& start, const DataSpan& span, const MomentWeights& weights,
-                         const std::vector<int>& held_fixed = {});
+                         const std::vector<int>& held_fixed = {},
+                         double stop_below_cost = -std::numeric_limits<double>::infinity());
 
 // J / 2 at given parameters.
 double model_cost(const std::vector<FitPoint>& points, const ModelStructure& structure,
