@@ -592,7 +592,15 @@ struct OavarCovariance::Cache {
     }
     std::vector<Term> involved_terms;
     for (int index : involved) involved_terms.push_back(units[index]);
+    // The reach rounded up to a power of two: batches whose terms decay at nearly the same rate
+    // (a front end's corner refitted, another axis's) visit the same lags and share their sums;
+    // a longer reach only adds a few graded quadrature points, and no accuracy is lost.
     LagReach reach = lag_reach(involved_terms, tau0_s);
+    if (reach.tail_lags > 0.0) reach.tail_lags = std::exp2(std::ceil(std::log2(reach.tail_lags)));
+    const long long exact_half_width = reach.exact_half_width;
+    reach.exact_half_width = 1;
+    while (reach.exact_half_width < exact_half_width) reach.exact_half_width *= 2;
+    reach.oscillation_factor_limit *= static_cast<double>(reach.exact_half_width) / exact_half_width;
     // A tail beyond the record changes no lag range (each is clipped to the record): one key.
     reach.tail_lags = std::min(reach.tail_lags, static_cast<double>(sample_count));
     // Kernels another covariance of this record has summed with this reach are copied.
