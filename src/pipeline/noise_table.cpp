@@ -19,6 +19,12 @@ std::string format_term(const identify::TermEstimate& term, const identify::Unit
       text += " ± " + format_table_number(amplitude.sigma * unit.per_si) + " (" +
               identify::sigma_source_name(term.sigma_source) + ")";
     }
+    // Where other structures were weighed, the 68.3 % interval is their mixture's quantiles: it
+    // may sit off-centre, or far inside value ± sigma (doc/identification.md, "Units 4-6").
+    if (!amplitude.structure_mixture.empty()) {
+      text += ", 68 %: " + format_table_number(amplitude.interval_low(1.0) * unit.per_si) + " to " +
+              format_table_number(amplitude.interval_high(1.0) * unit.per_si);
+    }
     return text;
   }
   if (std::isfinite(amplitude.upper_bound)) {

@@ -1,6 +1,7 @@
 // The allan tool's console table of the identified noise parameters: per axis and term, the value
 // ± sigma in the field's customary unit (deg/sqrt(h), deg/h, deg/h/sqrt(h); m/s/sqrt(h),
-// micro-g, ...), "< bound" for absent and unconstrained terms, and each triad's worst axis.
+// micro-g, ...) and, where alternative structures were weighed, the 68.3 % interval; "< bound"
+// for absent and unconstrained terms; each triad's worst axis.
 #pragma once
 
 #include <string>
