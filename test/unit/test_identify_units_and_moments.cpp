@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -147,6 +148,22 @@ TEST(IdentifyFitPoints, EngineGridsBeyondTheExactRangeGiveTheSameLadder) {
                               631, 1000, 1586, 2512, 3984, 6312, 10000, 15856, 25120, 39872, 63104, 100096, 158720}));
 }
 
+// The span of a record's points, as the fit forms it.
+DataSpan span_of(const std::vector<FitPoint>& points, double tau0_s, long long samples) {
+  DataSpan span;
+  span.tau0_s = tau0_s;
+  span.record_length_s = samples * tau0_s;
+  span.sample_count = samples;
+  span.tau_min_s = points.front().tau_s;
+  span.tau_max_s = points.back().tau_s;
+  span.smallest_avar = span.largest_avar = points.front().avar;
+  for (const FitPoint& point : points) {
+    span.smallest_avar = std::min(span.smallest_avar, point.avar);
+    span.largest_avar = std::max(span.largest_avar, point.avar);
+  }
+  return span;
+}
+
 // For a white-noise-only model the GMM information about ln N is 4 (1' R^-1 1) with R the
 // relative covariance of the AVAR estimates: sigma(ln N) = 1 / (2 sqrt(1' R^-1 1)). R here comes
 // from the brute-force lag sum, independent of the weights' quadrature; dropping the correlation
@@ -162,14 +179,7 @@ TEST(IdentifyMoments, CovarianceOfLnNIsTheGeneralisedLeastSquaresOne) {
   }
   ModelStructure structure;
   structure.slots = {{TermKind::kWhiteRate, false, 0.0}};
-  DataSpan span;
-  span.tau0_s = tau0_s;
-  span.record_length_s = samples * tau0_s;
-  span.sample_count = samples;
-  span.tau_min_s = points.front().tau_s;
-  span.tau_max_s = points.back().tau_s;
-  span.smallest_avar = points.back().avar;
-  span.largest_avar = points.front().avar;
+  const DataSpan span = span_of(points, tau0_s, samples);
   OavarCovariance covariance(averaging_factors(points), tau0_s, samples);
   const MomentWeights weights = moment_weights(points, model, covariance, 0.0);
   const SolveOutcome outcome = solve_model(points, structure, {std::log(1e-4)}, span, weights);
@@ -205,14 +215,7 @@ TEST(IdentifyMoments, ASolveGivenALevelStopsAtTheFirstIterateUnderIt) {
   }
   ModelStructure structure;
   structure.slots = {{TermKind::kWhiteRate, false, 0.0}, {TermKind::kRandomWalk, false, 0.0}};
-  DataSpan span;
-  span.tau0_s = tau0_s;
-  span.record_length_s = samples * tau0_s;
-  span.sample_count = samples;
-  span.tau_min_s = points.front().tau_s;
-  span.tau_max_s = points.back().tau_s;
-  span.smallest_avar = points.back().avar;
-  span.largest_avar = points.front().avar;
+  const DataSpan span = span_of(points, tau0_s, samples);
   OavarCovariance covariance(averaging_factors(points), tau0_s, samples);
   const MomentWeights weights = moment_weights(points, model, covariance, 0.0);
   const std::vector<double> start = {std::log(30.0 * density), std::log(0.1 * rate_walk)};
