@@ -208,6 +208,51 @@ std::vector<TermAddition> fit_left_out_terms(const SelectedModel& selected, cons
   return additions;
 }
 
+// A Markov term of the selected model whose correlation time is long carries a rise that a
+// left-out K or R would carry (over the record's taus their AVARs grow alike), and the profile
+// bound, which keeps the Markov term, then lies below the value the structure with the Markov
+// term replaced by the left-out one finds. Each such swap is weighed against the selected
+// structure by Akaike's criterion on the GMM distance (as structure_doubt.h weighs its
+// alternatives, here pairwise), and its lognormal may hold at most its weight's share of the
+// bound's tail: the bound rises to the swap's quantile at 1 - tail / weight where that lies
+// above it (doc/identification.md, "Bounds of a K carried by a Markov term").
+void widen_bound_by_markov_swaps(const SelectedModel& selected, const DataSpan& span, const TermSlot& slot,
+                                 const FitResult& fit, ParameterEstimate* amplitude) {
+  for (size_t swapped_out = 0; swapped_out < fit.structure.slots.size(); ++swapped_out) {
+    if (fit.structure.slots[swapped_out].kind != TermKind::kMarkov) continue;
+    ModelStructure swapped;
+    std::vector<double> start;
+    for (size_t i = 0; i < fit.structure.slots.size(); ++i) {
+      if (i == swapped_out) continue;
+      swapped.slots.push_back(fit.structure.slots[i]);
+      const auto first = fit.log_parameters.begin() + parameter_offset(fit.structure, static_cast<int>(i));
+      start.insert(start.end(), first, first + slot_parameter_count(fit.structure.slots[i]));
+    }
+    append_negligible_slot(fit.points, slot, &swapped, &start);
+    const SolveOutcome outcome = refit_structure(fit.points, swapped, start, span, selected.weights);
+    if (!outcome.usable) continue;
+    const double criterion_change = 2.0 * (outcome.cost - selected.cost) +
+                                    2.0 * (parameter_count(swapped) - parameter_count(fit.structure));
+    const double weight = 1.0 / (1.0 + std::exp(0.5 * criterion_change));
+    const int index = parameter_count(swapped) - 1;
+    const Eigen::MatrixXd covariance =
+        log_parameter_covariance(fit.points, swapped, outcome.log_parameters, selected.weights);
+    const double log_sigma = std::sqrt(covariance(index, index));
+    if (!std::isfinite(log_sigma)) continue;
+    const auto raise = [&](double tail, double* bound) {
+      if (!(weight > tail)) return;
+      // The normal's quantile at p = 1 - tail / weight: z^2 is chi-squared(1) at |2p - 1|, z of
+      // the sign of p - 1/2.
+      const double centred = 1.0 - 2.0 * tail / weight;
+      const double z = std::copysign(std::sqrt(chi_squared_quantile(std::abs(centred), 1.0)), centred);
+      const double candidate = std::exp(outcome.log_parameters[index] + z * log_sigma);
+      if (!(candidate <= *bound)) *bound = candidate;
+    };
+    raise(1.0 - fit.options.upper_bound_confidence, &amplitude->upper_bound);
+    raise(1.0 - kOneSigmaConfidence, &amplitude->upper_bound_one_sigma);
+  }
+}
+
 // Candidate terms the selection left out: absent, with a profile upper bound and, for
 // one-parameter terms, the fall of the distance their free addition would bring.
 void describe_absent_terms(const SelectedModel& selected, const DataSpan& span,
@@ -232,6 +277,9 @@ void describe_absent_terms(const SelectedModel& selected, const DataSpan& span,
     estimate.amplitude.upper_bound =
         profile_upper_bound(fit->points, structure, log_parameters, selected.cost, slot_index, span, selected.weights,
                             fit->options.upper_bound_confidence, &estimate.amplitude.upper_bound_one_sigma);
+    if (slot.kind == TermKind::kRandomWalk || slot.kind == TermKind::kRateRamp) {
+      widen_bound_by_markov_swaps(selected, span, slot, *fit, &estimate.amplitude);
+    }
     if (addition != additions.end() && addition->outcome.usable) {
       estimate.selection_statistic = std::max(0.0, 2.0 * (selected.cost - addition->outcome.cost));
       estimate.selection_threshold = slot_lr_threshold(fit->options, slot, static_cast<int>(fit->points.size()));
