@@ -238,7 +238,9 @@ void widen_bound_by_markov_swaps(const SelectedModel& selected, const DataSpan& 
     const Eigen::MatrixXd covariance =
         log_parameter_covariance(fit.points, swapped, outcome.log_parameters, selected.weights);
     const double log_sigma = std::sqrt(covariance(index, index));
-    if (!std::isfinite(log_sigma)) continue;
+    // A swap that leaves the term loose says no more than the profile: its quantiles would run
+    // off to any size.
+    if (!(log_sigma <= fit.options.unconstrained_relative_sigma)) continue;
     const auto raise = [&](double tail, double* bound) {
       if (!(weight > tail)) return;
       // The normal's quantile at p = 1 - tail / weight: z^2 is chi-squared(1) at |2p - 1|, z of
