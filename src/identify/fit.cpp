@@ -220,14 +220,9 @@ void widen_bound_by_markov_swaps(const SelectedModel& selected, const DataSpan& 
                                  const FitResult& fit, ParameterEstimate* amplitude) {
   for (size_t swapped_out = 0; swapped_out < fit.structure.slots.size(); ++swapped_out) {
     if (fit.structure.slots[swapped_out].kind != TermKind::kMarkov) continue;
-    ModelStructure swapped;
-    std::vector<double> start;
-    for (size_t i = 0; i < fit.structure.slots.size(); ++i) {
-      if (i == swapped_out) continue;
-      swapped.slots.push_back(fit.structure.slots[i]);
-      const auto first = fit.log_parameters.begin() + parameter_offset(fit.structure, static_cast<int>(i));
-      start.insert(start.end(), first, first + slot_parameter_count(fit.structure.slots[i]));
-    }
+    ModelStructure swapped = fit.structure;
+    std::vector<double> start = fit.log_parameters;
+    remove_slot(swapped, start, static_cast<int>(swapped_out));
     append_negligible_slot(fit.points, slot, &swapped, &start);
     const SolveOutcome outcome = refit_structure(fit.points, swapped, start, span, selected.weights);
     if (!outcome.usable) continue;

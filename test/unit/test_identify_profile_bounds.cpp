@@ -76,13 +76,10 @@ struct SwapCheck {
 };
 
 SwapCheck swap_check(const FitResult& fit) {
-  ModelStructure swapped;
-  std::vector<double> start;
-  for (size_t i = 0; i < fit.structure.slots.size(); ++i) {
-    if (fit.structure.slots[i].kind == TermKind::kMarkov) continue;
-    swapped.slots.push_back(fit.structure.slots[i]);
-    const auto first = fit.log_parameters.begin() + parameter_offset(fit.structure, static_cast<int>(i));
-    start.insert(start.end(), first, first + slot_parameter_count(fit.structure.slots[i]));
+  ModelStructure swapped = fit.structure;
+  std::vector<double> start = fit.log_parameters;
+  for (int i = static_cast<int>(swapped.slots.size()) - 1; i >= 0; --i) {
+    if (swapped.slots[i].kind == TermKind::kMarkov) remove_slot(swapped, start, i);
   }
   append_negligible_slot(fit.points, {TermKind::kRandomWalk, false, 0.0}, &swapped, &start);
   const SolveOutcome outcome = refit_structure(fit.points, swapped, start, fit.span, fit.weights);
