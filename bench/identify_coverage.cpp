@@ -1,7 +1,7 @@
 // Coverage of the identification's reported intervals, per term kind, on emulated records whose
 // truth is exact (doc/identification.md, "Emulated coverage").
 //
-//   identify_coverage coverage [seeds=20] [threads=2] [replicas=0] [cases=12345678]
+//   identify_coverage coverage [seeds=20] [threads=2] [replicas=0] [cases=12345678] [truths_csv]
 //     Every case below on all six axes of a gyro and an accelerometer triad (their own noise
 //     streams), `seeds` records each, fitted with default options (the output's LSB given, as
 //     the allan tool finds it in the data). Every truth parameter counts under its term's kind
@@ -13,7 +13,10 @@
 //     (an absent Markov term, sinusoid or resonance reports only the largest amplitude any shape
 //     could carry, and its shape parameters are judged with it). Targets: 60-76 % inside
 //     the 68.3 % interval, >= 90 % inside the 95 % one. replicas > 1 replaces the sigmas by the
-//     parametric bootstrap's (slow); `cases` picks cases by their numbers (digits).
+//     parametric bootstrap's (slow); `cases` picks cases by their numbers (digits). With
+//     `truths_csv`, every judged truth parameter is also written there, one row each (case, seed,
+//     triad, axis, kind, role, truth, the reported status, value, ln sigma, intervals, bounds and
+//     verdicts): a miss traced to its record and to the terms reported beside it.
 //   identify_coverage rlg [hours=150] [rate_hz=10] [replicas=0] [profile=config/sensors/rlg_navigation.yaml]
 //     The navigation-grade ring-laser gyro profile (x axis, at rest): B's estimate and sigma, and
 //     the record length the fit says B needs for 15 %. The profile's 1 arcsec pulses are replaced
@@ -28,6 +31,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <ostream>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -35,6 +39,7 @@
 #include <vector>
 
 #include "imu_lab/allan/batch.h"
+#include "imu_lab/common/atomic_file.h"
 #include "imu_lab/emulator/sensor_channel.h"
 #include "imu_lab/emulator/sensor_profile.h"
 #include "imu_lab/identify/bootstrap.h"
@@ -292,7 +297,7 @@ emulator::TriadErrorModel triad_model(const CoverageCase& study, int triad, std:
 }
 
 struct ParameterOutcome {
-  CoverageKind kind;
+  CoverageKind kind = CoverageKind::kN;
   bool inside_68 = false;
   bool inside_95 = false;
   // p: term present, its interval used; b: absent or unconstrained, judged by its upper bound;
@@ -302,16 +307,25 @@ struct ParameterOutcome {
   // Outside the 95 % interval: -1 the truth lies below it, +1 above it (or above the bound).
   int miss_side_95 = 0;
   int role = 0;  // which parameter of its term: 0 amplitude, 1 shape (T_c, f, f_n, corner), 2 width
+  // What was reported, for the per-truth listing.
+  double truth = NAN;
+  TermStatus status = TermStatus::kAbsent;
+  ParameterEstimate reported;
 };
 
 struct RecordOutcome {
+  int triad = 0, axis = 0;
   std::vector<ParameterOutcome> parameters;
   std::array<int, static_cast<int>(CoverageKind::kCount)> spurious{};  // present terms of kinds the truth lacks
   bool failed = false;
 };
 
 ParameterOutcome judge(CoverageKind kind, const ParameterEstimate& estimate, TermStatus status, double truth) {
-  ParameterOutcome outcome{kind};
+  ParameterOutcome outcome;
+  outcome.kind = kind;
+  outcome.truth = truth;
+  outcome.status = status;
+  outcome.reported = estimate;
   if (status == TermStatus::kPresent && std::isfinite(estimate.value) && std::isfinite(estimate.log_sigma)) {
     outcome.judged_by = 'p';
     outcome.z = std::abs(std::log(truth / estimate.value)) / estimate.log_sigma;
@@ -439,7 +453,33 @@ void print_tallies(const std::array<Tally, static_cast<int>(CoverageKind::kCount
   }
 }
 
-int run_coverage(int seeds, int threads, int replicas, const std::string& picked) {
+// One row per judged truth parameter (the usage above); written atomically.
+void write_truths_csv(const std::string& path, const std::vector<int>& case_numbers, const std::vector<int>& seeds,
+                      const std::vector<std::vector<RecordOutcome>>& outcomes) {
+  static const char* const kTriadNames[] = {"gyro", "accelerometer"};
+  static const char* const kRoleNames[] = {"amplitude", "shape", "width"};
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "case,seed,triad,axis,kind,role,truth,status,value,log_sigma,low_68,high_68,low_95,high_95,upper_68,"
+           "upper_95,judged_by,z,inside_68,inside_95\n";
+    out.precision(6);
+    for (size_t j = 0; j < outcomes.size(); ++j) {
+      for (const RecordOutcome& record : outcomes[j]) {
+        for (const ParameterOutcome& parameter : record.parameters) {
+          const ParameterEstimate& reported = parameter.reported;
+          out << case_numbers[j] << ',' << seeds[j] << ',' << kTriadNames[record.triad] << ',' << "xyz"[record.axis]
+              << ',' << kCoverageKindNames[static_cast<int>(parameter.kind)] << ',' << kRoleNames[parameter.role]
+              << ',' << parameter.truth << ',' << term_status_name(parameter.status) << ',' << reported.value << ','
+              << reported.log_sigma << ',' << reported.interval_low(1.0) << ',' << reported.interval_high(1.0) << ','
+              << reported.interval_low(1.959964) << ',' << reported.interval_high(1.959964) << ','
+              << reported.upper_bound_one_sigma << ',' << reported.upper_bound << ',' << parameter.judged_by << ','
+              << parameter.z << ',' << parameter.inside_68 << ',' << parameter.inside_95 << '\n';
+        }
+      }
+    }
+  });
+}
+
+int run_coverage(int seeds, int threads, int replicas, const std::string& picked, const std::string& truths_csv) {
   std::vector<CoverageCase> cases;
   for (const CoverageCase& study : coverage_cases()) {
     if (picked.find(study.name[0]) != std::string::npos) cases.push_back(study);
@@ -480,6 +520,8 @@ int run_coverage(int seeds, int threads, int replicas, const std::string& picked
         options.output_quantization_step = study.output_lsb[triad];
         for (int axis = 0; axis < 3; ++axis) {
           RecordOutcome record;
+          record.triad = triad;
+          record.axis = axis;
           try {
             FitResult fit = fit_noise_model(curves[axis], 1.0 / study.rate_hz, study.duration_s, options);
             if (replicas > 1) apply_bootstrap(bootstrap_uncertainty(fit, {replicas, 77ULL * seed + axis}), &fit);
@@ -533,6 +575,15 @@ int run_coverage(int seeds, int threads, int replicas, const std::string& picked
   print_tallies(total, true);
   std::printf("failed fits: %d; %.0f s wall, %.0f s CPU on %d threads\n", failures, seconds_since(start),
               process_cpu_s() - start_cpu_s, threads);
+  if (!truths_csv.empty()) {
+    std::vector<int> case_numbers, job_seeds;
+    for (const Job& job : jobs) {
+      case_numbers.push_back(number(job.case_index));
+      job_seeds.push_back(job.seed);
+    }
+    write_truths_csv(truths_csv, case_numbers, job_seeds, outcomes);
+    std::printf("every judged truth: %s\n", truths_csv.c_str());
+  }
   return 0;
 }
 
@@ -594,14 +645,14 @@ int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "coverage";
   if (mode == "coverage") {
     return run_coverage(argc > 2 ? std::atoi(argv[2]) : 20, argc > 3 ? std::atoi(argv[3]) : 2,
-                        argc > 4 ? std::atoi(argv[4]) : 0, argc > 5 ? argv[5] : "12345678");
+                        argc > 4 ? std::atoi(argv[4]) : 0, argc > 5 ? argv[5] : "12345678", argc > 6 ? argv[6] : "");
   }
   if (mode == "rlg") {
     return run_rlg(argc > 2 ? std::atof(argv[2]) : 150.0, argc > 3 ? std::atof(argv[3]) : 10.0,
                    argc > 4 ? std::atoi(argv[4]) : 0, argc > 5 ? argv[5] : "config/sensors/rlg_navigation.yaml");
   }
   std::fprintf(stderr,
-               "usage: identify_coverage coverage [seeds] [threads] [replicas] [cases] | rlg [hours] [rate_hz] "
+               "usage: identify_coverage coverage [seeds] [threads] [replicas] [cases] [truths_csv] | rlg [hours] [rate_hz] "
                "[replicas] [profile]\n");
   return 2;
 }
