@@ -16,7 +16,8 @@
 //     parametric bootstrap's (slow); `cases` picks cases by their numbers (digits). With
 //     `truths_csv`, every judged truth parameter is also written there, one row each (case, seed,
 //     triad, axis, kind, role, truth, the reported status, value, ln sigma, intervals, bounds and
-//     verdicts): a miss traced to its record and to the terms reported beside it.
+//     verdicts), and every present term of a kind the truth lacks (role "spurious", its shape in
+//     the last column): a miss traced to its record and to the terms reported beside it.
 //   identify_coverage rlg [hours=150] [rate_hz=10] [replicas=0] [profile=config/sensors/rlg_navigation.yaml]
 //     The navigation-grade ring-laser gyro profile (x axis, at rest): B's estimate and sigma, and
 //     the record length the fit says B needs for 15 %. The profile's 1 arcsec pulses are replaced
@@ -317,6 +318,7 @@ struct RecordOutcome {
   int triad = 0, axis = 0;
   std::vector<ParameterOutcome> parameters;
   std::array<int, static_cast<int>(CoverageKind::kCount)> spurious{};  // present terms of kinds the truth lacks
+  std::vector<TermEstimate> spurious_terms;                             // those terms, for the per-truth listing
   bool failed = false;
 };
 
@@ -395,8 +397,10 @@ void judge_axis(const NoiseModel& truth, const FitResult& fit, RecordOutcome* re
         reported.kind == TermKind::kHighPassWhite) {
       continue;  // not enabled by the default options the bench scores
     }
-    if (!in_truth[static_cast<int>(coverage_kind(reported.kind))])
+    if (!in_truth[static_cast<int>(coverage_kind(reported.kind))]) {
       ++record->spurious[static_cast<int>(coverage_kind(reported.kind))];
+      record->spurious_terms.push_back(reported);
+    }
   }
 }
 
@@ -460,7 +464,7 @@ void write_truths_csv(const std::string& path, const std::vector<int>& case_numb
   static const char* const kRoleNames[] = {"amplitude", "shape", "width"};
   write_file_atomically(path, [&](std::ostream& out) {
     out << "case,seed,triad,axis,kind,role,truth,status,value,log_sigma,low_68,high_68,low_95,high_95,upper_68,"
-           "upper_95,judged_by,z,inside_68,inside_95\n";
+           "upper_95,judged_by,z,inside_68,inside_95,spurious_shape\n";
     out.precision(6);
     for (size_t j = 0; j < outcomes.size(); ++j) {
       for (const RecordOutcome& record : outcomes[j]) {
@@ -472,7 +476,17 @@ void write_truths_csv(const std::string& path, const std::vector<int>& case_numb
               << reported.log_sigma << ',' << reported.interval_low(1.0) << ',' << reported.interval_high(1.0) << ','
               << reported.interval_low(1.959964) << ',' << reported.interval_high(1.959964) << ','
               << reported.upper_bound_one_sigma << ',' << reported.upper_bound << ',' << parameter.judged_by << ','
-              << parameter.z << ',' << parameter.inside_68 << ',' << parameter.inside_95 << '\n';
+              << parameter.z << ',' << parameter.inside_68 << ',' << parameter.inside_95 << ",\n";
+        }
+        // Present terms of kinds the truth lacks: role "spurious", no truth, their shape last.
+        for (const TermEstimate& term : record.spurious_terms) {
+          const ParameterEstimate& reported = term.amplitude;
+          out << case_numbers[j] << ',' << seeds[j] << ',' << kTriadNames[record.triad] << ',' << "xyz"[record.axis]
+              << ',' << kCoverageKindNames[static_cast<int>(coverage_kind(term.kind))] << ",spurious,,"
+              << term_status_name(term.status) << ',' << reported.value << ',' << reported.log_sigma << ','
+              << reported.interval_low(1.0) << ',' << reported.interval_high(1.0) << ','
+              << reported.interval_low(1.959964) << ',' << reported.interval_high(1.959964) << ",,,,,,,"
+              << term.shape.value << '\n';
         }
       }
     }
