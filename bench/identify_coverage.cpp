@@ -32,12 +32,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <filesystem>
 #include <ostream>
 #include <random>
 #include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <unistd.h>
 
 #include "imu_lab/allan/batch.h"
 #include "imu_lab/common/atomic_file.h"
@@ -494,6 +497,15 @@ void write_truths_csv(const std::string& path, const std::vector<int>& case_numb
 }
 
 int run_coverage(int seeds, int threads, int replicas, const std::string& picked, const std::string& truths_csv) {
+  // A listing that cannot be written is said before the run, not after it.
+  if (!truths_csv.empty()) {
+    const std::string directory = std::filesystem::absolute(truths_csv).parent_path().string();
+    if (::access(directory.c_str(), W_OK) != 0) {
+      std::fprintf(stderr, "identify_coverage: cannot write %s: directory %s is missing or not writable\n",
+                   truths_csv.c_str(), directory.c_str());
+      return 2;
+    }
+  }
   std::vector<CoverageCase> cases;
   for (const CoverageCase& study : coverage_cases()) {
     if (picked.find(study.name[0]) != std::string::npos) cases.push_back(study);
@@ -595,7 +607,12 @@ int run_coverage(int seeds, int threads, int replicas, const std::string& picked
       case_numbers.push_back(number(job.case_index));
       job_seeds.push_back(job.seed);
     }
-    write_truths_csv(truths_csv, case_numbers, job_seeds, outcomes);
+    try {
+      write_truths_csv(truths_csv, case_numbers, job_seeds, outcomes);
+    } catch (const std::exception& error) {
+      std::fprintf(stderr, "identify_coverage: %s\n", error.what());
+      return 1;
+    }
     std::printf("every judged truth: %s\n", truths_csv.c_str());
   }
   return 0;
