@@ -318,7 +318,7 @@ struct ParameterOutcome {
 };
 
 struct RecordOutcome {
-  int triad = 0, axis = 0;
+  int case_number = 0, seed = 0, triad = 0, axis = 0;  // which record, for the per-truth listing
   std::vector<ParameterOutcome> parameters;
   std::array<int, static_cast<int>(CoverageKind::kCount)> spurious{};  // present terms of kinds the truth lacks
   std::vector<TermEstimate> spurious_terms;                             // those terms, for the per-truth listing
@@ -460,36 +460,43 @@ void print_tallies(const std::array<Tally, static_cast<int>(CoverageKind::kCount
   }
 }
 
-// One row per judged truth parameter (the usage above); written atomically.
-void write_truths_csv(const std::string& path, const std::vector<int>& case_numbers, const std::vector<int>& seeds,
-                      const std::vector<std::vector<RecordOutcome>>& outcomes) {
+// One row per judged truth parameter and per spurious present term (the usage above); written
+// atomically.
+void write_truths_csv(const std::string& path, const std::vector<std::vector<RecordOutcome>>& outcomes) {
   static const char* const kTriadNames[] = {"gyro", "accelerometer"};
   static const char* const kRoleNames[] = {"amplitude", "shape", "width"};
   write_file_atomically(path, [&](std::ostream& out) {
     out << "case,seed,triad,axis,kind,role,truth,status,value,log_sigma,low_68,high_68,low_95,high_95,upper_68,"
            "upper_95,judged_by,z,inside_68,inside_95,spurious_shape\n";
     out.precision(6);
-    for (size_t j = 0; j < outcomes.size(); ++j) {
-      for (const RecordOutcome& record : outcomes[j]) {
+    // Columns case to status (an empty truth where there is none), then value to high_95: the
+    // same for both kinds of row.
+    const auto head = [&](const RecordOutcome& record, CoverageKind kind, const char* role, double truth,
+                          TermStatus status) {
+      out << record.case_number << ',' << record.seed << ',' << kTriadNames[record.triad] << ','
+          << "xyz"[record.axis] << ',' << kCoverageKindNames[static_cast<int>(kind)] << ',' << role << ',';
+      if (std::isfinite(truth)) out << truth;
+      out << ',' << term_status_name(status);
+    };
+    const auto estimate = [&](const ParameterEstimate& reported) {
+      out << ',' << reported.value << ',' << reported.log_sigma << ',' << reported.interval_low(1.0) << ','
+          << reported.interval_high(1.0) << ',' << reported.interval_low(1.959964) << ','
+          << reported.interval_high(1.959964);
+    };
+    for (const std::vector<RecordOutcome>& job : outcomes) {
+      for (const RecordOutcome& record : job) {
         for (const ParameterOutcome& parameter : record.parameters) {
-          const ParameterEstimate& reported = parameter.reported;
-          out << case_numbers[j] << ',' << seeds[j] << ',' << kTriadNames[record.triad] << ',' << "xyz"[record.axis]
-              << ',' << kCoverageKindNames[static_cast<int>(parameter.kind)] << ',' << kRoleNames[parameter.role]
-              << ',' << parameter.truth << ',' << term_status_name(parameter.status) << ',' << reported.value << ','
-              << reported.log_sigma << ',' << reported.interval_low(1.0) << ',' << reported.interval_high(1.0) << ','
-              << reported.interval_low(1.959964) << ',' << reported.interval_high(1.959964) << ','
-              << reported.upper_bound_one_sigma << ',' << reported.upper_bound << ',' << parameter.judged_by << ','
-              << parameter.z << ',' << parameter.inside_68 << ',' << parameter.inside_95 << ",\n";
+          head(record, parameter.kind, kRoleNames[parameter.role], parameter.truth, parameter.status);
+          estimate(parameter.reported);
+          out << ',' << parameter.reported.upper_bound_one_sigma << ',' << parameter.reported.upper_bound << ','
+              << parameter.judged_by << ',' << parameter.z << ',' << parameter.inside_68 << ','
+              << parameter.inside_95 << ",\n";
         }
         // Present terms of kinds the truth lacks: role "spurious", no truth, their shape last.
         for (const TermEstimate& term : record.spurious_terms) {
-          const ParameterEstimate& reported = term.amplitude;
-          out << case_numbers[j] << ',' << seeds[j] << ',' << kTriadNames[record.triad] << ',' << "xyz"[record.axis]
-              << ',' << kCoverageKindNames[static_cast<int>(coverage_kind(term.kind))] << ",spurious,,"
-              << term_status_name(term.status) << ',' << reported.value << ',' << reported.log_sigma << ','
-              << reported.interval_low(1.0) << ',' << reported.interval_high(1.0) << ','
-              << reported.interval_low(1.959964) << ',' << reported.interval_high(1.959964) << ",,,,,,,"
-              << term.shape.value << '\n';
+          head(record, coverage_kind(term.kind), "spurious", NAN, term.status);
+          estimate(term.amplitude);
+          out << ",,,,,,," << term.shape.value << '\n';
         }
       }
     }
@@ -546,6 +553,8 @@ int run_coverage(int seeds, int threads, int replicas, const std::string& picked
         options.output_quantization_step = study.output_lsb[triad];
         for (int axis = 0; axis < 3; ++axis) {
           RecordOutcome record;
+          record.case_number = number(jobs[j].case_index);
+          record.seed = jobs[j].seed;
           record.triad = triad;
           record.axis = axis;
           try {
@@ -602,13 +611,8 @@ int run_coverage(int seeds, int threads, int replicas, const std::string& picked
   std::printf("failed fits: %d; %.0f s wall, %.0f s CPU on %d threads\n", failures, seconds_since(start),
               process_cpu_s() - start_cpu_s, threads);
   if (!truths_csv.empty()) {
-    std::vector<int> case_numbers, job_seeds;
-    for (const Job& job : jobs) {
-      case_numbers.push_back(number(job.case_index));
-      job_seeds.push_back(job.seed);
-    }
     try {
-      write_truths_csv(truths_csv, case_numbers, job_seeds, outcomes);
+      write_truths_csv(truths_csv, outcomes);
     } catch (const std::exception& error) {
       std::fprintf(stderr, "identify_coverage: %s\n", error.what());
       return 1;
