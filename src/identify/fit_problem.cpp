@@ -224,6 +224,9 @@ void log_parameter_bounds(const ModelStructure& structure, const DataSpan& span,
         high = 2.0 * span.record_length_s;
         break;
       case TermKind::kSinusoid:
+        low = std::min(kFewestLinePeriods / span.record_length_s, nyquist_hz);
+        high = nyquist_hz;
+        break;
       case TermKind::kBiasInstability:
         low = 1.0 / span.record_length_s;
         high = nyquist_hz;

@@ -49,7 +49,10 @@ std::vector<Term> start_shapes(const TermSlot& slot, const std::vector<FitPoint>
     default:
       for (const FitPoint& point : points) {
         if (slot.kind == TermKind::kMarkov) add(point.tau_s / 2.0, 0.0);
-        if (slot.kind == TermKind::kSinusoid) add(std::min(nyquist_hz, 0.371 / point.tau_s), 0.0);
+        if (slot.kind == TermKind::kSinusoid) {
+          const double frequency_hz = std::min(nyquist_hz, 0.371 / point.tau_s);
+          if (frequency_hz * span.record_length_s >= kFewestLinePeriods) add(frequency_hz, 0.0);
+        }
         if (slot.kind == TermKind::kZeroDcFamily) add(point.tau_s, 0.0);
         if (slot.kind == TermKind::kZeroDcGaussian) add(point.tau_s * point.tau_s, 0.0);
         if (slot.kind == TermKind::kHighPassWhite) add(std::min(nyquist_hz, 1.0 / (2.0 * units::kPi * point.tau_s)), 0.0);

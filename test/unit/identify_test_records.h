@@ -37,6 +37,17 @@ inline std::vector<allan::StabilityPoint> octave_oadev(const std::vector<double>
                                    identify::octave_averaging_factors(rates.size()));
 }
 
+// Overlapping Allan deviation of the rates at the allan tool's default grid, round(10^(i / 10)).
+inline std::vector<allan::StabilityPoint> default_grid_oadev(const std::vector<double>& rates, double rate_hz) {
+  std::vector<int> factors;
+  for (int i = 0;; ++i) {
+    const int m = static_cast<int>(std::lround(std::pow(10.0, i / 10.0)));
+    if (2.0 * m > static_cast<double>(rates.size()) - 1.0) break;
+    if (factors.empty() || factors.back() != m) factors.push_back(m);
+  }
+  return allan::evaluate_frequency(allan::Statistic::kOverlappingAllan, rates, 1.0 / rate_hz, factors);
+}
+
 // A noise-free overlapping-Allan curve of `model` at octave factors for a record of length_s,
 // with white-FM-like EDFs (1.5 length / tau).
 inline std::vector<allan::StabilityPoint> exact_octave_curve(const identify::NoiseModel& model, double tau0_s,

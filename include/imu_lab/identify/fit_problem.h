@@ -67,8 +67,14 @@ struct SolveOutcome {
 // A resonance narrower than this (relative to f_n) is a line: a sinusoid describes it.
 constexpr double kSmallestResonanceRelativeWidth = 0.02;
 
+// A line holds at least this many periods in the record. Its AVAR peaks at tau = 0.371 / f and
+// falls after it; with fewer periods that fall lies at taus of a few degrees of freedom, where a
+// slow line can carry the rise of a random walk or ramp (doc/identification.md, "Selection").
+constexpr double kFewestLinePeriods = 10.0;
+
 // Bounds of each ln-parameter: amplitudes in a wide finite box (see the source); Markov T_c in
-// [tau_min, 2 T]; sinusoid and bias cutoff frequencies in [1 / T, 1 / (2 tau0)]; resonance
+// [tau_min, 2 T]; sinusoid frequencies in [kFewestLinePeriods / T, 1 / (2 tau0)] and bias
+// cutoff frequencies in [1 / T, 1 / (2 tau0)]; resonance
 // f_n in [0.05 / tau0, 1 / (2 tau0)] and width / f_n in [0.02, 1.9]; a white rate's front-end
 // corner in [0.1 / tau0, 5 / tau0]; zero-DC beta in [tau0, T].
 void log_parameter_bounds(const ModelStructure& structure, const DataSpan& span, std::vector<double>* lower,
