@@ -27,7 +27,34 @@ struct FittedAlternative {
   SolveOutcome outcome;
 };
 
-// The slot's peak described by the other kind, from starts at the same frequency and power.
+bool is_peak(const TermSlot& slot) {
+  return slot.shape_free && (slot.kind == TermKind::kSinusoid || slot.kind == TermKind::kResonance);
+}
+
+// Whether every peak of the alternative still describes the selected structure's peak in its slot:
+// the nearest (in ln f) of the selected peaks to each is its own. A refit may trade two peaks
+// (the swapped one moving onto another line while that line takes its place); the parameters are
+// then compared slot by slot with those of a different peak, and the alternative is not the
+// same peak described by the other kind.
+bool keeps_peak_identities(const ModelStructure& selected, const std::vector<double>& selected_log_parameters,
+                           const ModelStructure& alternative, const std::vector<double>& alternative_log_parameters) {
+  const auto log_frequency = [](const ModelStructure& structure, const std::vector<double>& log_parameters,
+                                size_t slot) { return log_parameters[parameter_offset(structure, static_cast<int>(slot)) + 1]; };
+  for (size_t i = 0; i < alternative.slots.size(); ++i) {
+    if (!is_peak(alternative.slots[i])) continue;
+    const double own = log_frequency(alternative, alternative_log_parameters, i);
+    const double own_distance = std::abs(own - log_frequency(selected, selected_log_parameters, i));
+    for (size_t j = 0; j < selected.slots.size(); ++j) {
+      if (j == i || !is_peak(selected.slots[j])) continue;
+      if (std::abs(own - log_frequency(selected, selected_log_parameters, j)) < own_distance) return false;
+    }
+  }
+  return true;
+}
+
+// The slot's peak described by the other kind, from starts at the same frequency and power. None
+// when the other kind cannot sit at that frequency (a resonance's f_n lies in the top decade below
+// the Nyquist frequency: fit_problem.h) or every refit trades peaks (keeps_peak_identities).
 bool fit_alternative(const std::vector<FitPoint>& points, const DataSpan& span, const ModelStructure& structure,
                      const std::vector<double>& log_parameters, int slot_index, const MomentWeights& weights,
                      FittedAlternative* fitted) {
@@ -49,13 +76,18 @@ bool fit_alternative(const std::vector<FitPoint>& points, const DataSpan& span, 
     replacement.kind = TermKind::kSinusoid;
     peak_starts.push_back({log_amplitude - std::log(kLineToRms), log_frequency});
   }
+  std::vector<double> lower, upper;
+  log_parameter_bounds(fitted->structure, span, &lower, &upper);
+  if (log_frequency < lower[offset + 1] || log_frequency > upper[offset + 1]) return false;
   fitted->outcome.cost = std::numeric_limits<double>::infinity();
   for (const std::vector<double>& peak : peak_starts) {
     std::vector<double> start(log_parameters.begin(), log_parameters.begin() + offset);
     start.insert(start.end(), peak.begin(), peak.end());
     start.insert(start.end(), log_parameters.begin() + offset + slot_parameter_count(slot), log_parameters.end());
     const SolveOutcome outcome = refit_structure(points, fitted->structure, start, span, weights);
-    if (outcome.usable && outcome.cost < fitted->outcome.cost) fitted->outcome = outcome;
+    if (!outcome.usable || outcome.cost >= fitted->outcome.cost) continue;
+    if (!keeps_peak_identities(structure, log_parameters, fitted->structure, outcome.log_parameters)) continue;
+    fitted->outcome = outcome;
   }
   if (!fitted->outcome.usable) return false;
   fitted->summary.replacement = term_kind_name(replacement.kind);
