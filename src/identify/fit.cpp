@@ -463,7 +463,7 @@ FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, doub
     return estimate_discrepancy(fit.points, model_from_log_parameters(model.structure, model.log_parameters),
                                 covariance, dof);
   };
-  const auto select = [&](const FitOptions& allowed) {
+  const auto select_terms = [&](const FitOptions& allowed) {
     SelectedModel selected =
         select_model(fit.points, span, allowed, covariance, kInitialDiscrepancy, first_weight_model);
     SelectedModel exact = selected;
@@ -491,6 +491,12 @@ FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, doub
     } else {
       refit_selected(fit.points, span, allowed, covariance, discrepancy, &selected);
     }
+    return selected;
+  };
+  // A mode that a line describes at least as well, with a parameter fewer, is taken as the line.
+  const auto select = [&](const FitOptions& allowed) {
+    SelectedModel selected = select_terms(allowed);
+    swap_dominated_modes_for_lines(fit.points, span, allowed, covariance, selected.weights.discrepancy, &selected);
     return selected;
   };
   // A term that claims more than the curve holds is not reported present: its kind is left out

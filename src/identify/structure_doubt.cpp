@@ -267,5 +267,32 @@ void swap_lines_for_modes(const std::vector<FitPoint>& points, const DataSpan& s
   if (swapped) canonical_order(selected->structure, selected->log_parameters);
 }
 
+void swap_dominated_modes_for_lines(const std::vector<FitPoint>& points, const DataSpan& span,
+                                    const FitOptions& options, OavarCovariance& covariance, double discrepancy,
+                                    SelectedModel* selected) {
+  int lines = 0;
+  for (const TermSlot& slot : selected->structure.slots) lines += slot.kind == TermKind::kSinusoid;
+  bool swapped = false;
+  for (size_t i = 0; i < selected->structure.slots.size() && lines < options.max_sinusoids; ++i) {
+    if (selected->structure.slots[i].kind != TermKind::kResonance) continue;
+    FittedAlternative line;
+    if (!fit_alternative(points, span, selected->structure, selected->log_parameters, static_cast<int>(i),
+                         selected->weights, &line)) {
+      continue;
+    }
+    const double statistic = 2.0 * (line.outcome.cost - selected->cost);
+    if (!(statistic <= 0.0)) continue;
+    selected->steps.push_back({"swap resonance for", "sinusoid", statistic, 0.0});
+    selected->structure = line.structure;
+    selected->log_parameters = line.outcome.log_parameters;
+    selected->cost = line.outcome.cost;
+    ++lines;
+    swapped = true;
+  }
+  if (!swapped) return;
+  canonical_order(selected->structure, selected->log_parameters);
+  refit_selected(points, span, options, covariance, discrepancy, selected);
+}
+
 }  // namespace identify
 }  // namespace imu_lab

@@ -96,5 +96,14 @@ class OavarCovariance;
 void swap_lines_for_modes(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
                           OavarCovariance& covariance, double discrepancy, SelectedModel* selected);
 
+// Each resonance of `selected` refitted as a line (under its own weights), taken where the line
+// fits at least as well: a structure with a parameter more and a higher J is dominated, whatever
+// the criterion. A line is not a resonance's limit here (the width has a floor, and the two AVARs
+// differ), so the selection, which adds a mode or a line by its own threshold, can end with a
+// mode the line describes better (doc/identification.md, "Selection").
+void swap_dominated_modes_for_lines(const std::vector<FitPoint>& points, const DataSpan& span,
+                                    const FitOptions& options, OavarCovariance& covariance, double discrepancy,
+                                    SelectedModel* selected);
+
 }  // namespace identify
 }  // namespace imu_lab
