@@ -242,56 +242,57 @@ double mixture_log_quantile(const std::vector<LogNormalComponent>& components, d
   return 0.5 * (low + high);
 }
 
-void swap_lines_for_modes(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
-                          OavarCovariance& covariance, double discrepancy, SelectedModel* selected) {
-  const double threshold = chi_squared_quantile(1.0 - options.significance, 1);
-  int resonances = 0;
-  for (const TermSlot& slot : selected->structure.slots) resonances += slot.kind == TermKind::kResonance;
+namespace {
+
+// Each peak of `selected` of one kind refitted as the other (fit_alternative) under the current
+// weights and swapped where the change of J passes: to modes, where J falls by more than one
+// parameter's chi2 quantile (nested); to lines, where J does not rise (dominance). Reweighed after
+// each swap; returns whether any was made.
+bool swap_peak_kinds(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
+                     OavarCovariance& covariance, double discrepancy, bool lines_to_modes, SelectedModel* selected) {
+  const TermKind from = lines_to_modes ? TermKind::kSinusoid : TermKind::kResonance;
+  const TermKind to = lines_to_modes ? TermKind::kResonance : TermKind::kSinusoid;
+  const int room = lines_to_modes ? options.max_resonances : options.max_sinusoids;
+  const double threshold = lines_to_modes ? chi_squared_quantile(1.0 - options.significance, 1) : 0.0;
+  int taken = 0;
+  for (const TermSlot& slot : selected->structure.slots) taken += slot.kind == to;
   bool swapped = false;
-  for (size_t i = 0; i < selected->structure.slots.size() && resonances < options.max_resonances; ++i) {
-    if (selected->structure.slots[i].kind != TermKind::kSinusoid) continue;
-    FittedAlternative mode;
+  for (size_t i = 0; i < selected->structure.slots.size() && taken < room; ++i) {
+    if (selected->structure.slots[i].kind != from) continue;
+    FittedAlternative other;
     if (!fit_alternative(points, span, selected->structure, selected->log_parameters, static_cast<int>(i),
-                         selected->weights, &mode)) {
+                         selected->weights, &other)) {
       continue;
     }
-    const double statistic = 2.0 * (selected->cost - mode.outcome.cost);
-    if (!(statistic > threshold)) continue;
-    selected->steps.push_back({"swap sinusoid for", "resonance", statistic, threshold});
-    selected->structure = mode.structure;
-    selected->log_parameters = mode.outcome.log_parameters;
+    // The fall of J for a mode (which must exceed the threshold), its rise for a line (which
+    // must not).
+    const double change = 2.0 * (other.outcome.cost - selected->cost);
+    const double statistic = lines_to_modes ? -change : change;
+    if (lines_to_modes ? !(statistic > threshold) : !(statistic <= threshold)) continue;
+    selected->steps.push_back({"swap " + term_kind_name(from) + " for", term_kind_name(to), statistic, threshold});
+    selected->structure = other.structure;
+    selected->log_parameters = other.outcome.log_parameters;
     reweigh_selected(points, span, options, covariance, discrepancy, selected);
-    ++resonances;
+    ++taken;
     swapped = true;
   }
   if (swapped) canonical_order(selected->structure, selected->log_parameters);
+  return swapped;
+}
+
+}  // namespace
+
+void swap_lines_for_modes(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
+                          OavarCovariance& covariance, double discrepancy, SelectedModel* selected) {
+  swap_peak_kinds(points, span, options, covariance, discrepancy, true, selected);
 }
 
 void swap_dominated_modes_for_lines(const std::vector<FitPoint>& points, const DataSpan& span,
                                     const FitOptions& options, OavarCovariance& covariance, double discrepancy,
                                     SelectedModel* selected) {
-  int lines = 0;
-  for (const TermSlot& slot : selected->structure.slots) lines += slot.kind == TermKind::kSinusoid;
-  bool swapped = false;
-  for (size_t i = 0; i < selected->structure.slots.size() && lines < options.max_sinusoids; ++i) {
-    if (selected->structure.slots[i].kind != TermKind::kResonance) continue;
-    FittedAlternative line;
-    if (!fit_alternative(points, span, selected->structure, selected->log_parameters, static_cast<int>(i),
-                         selected->weights, &line)) {
-      continue;
-    }
-    const double statistic = 2.0 * (line.outcome.cost - selected->cost);
-    if (!(statistic <= 0.0)) continue;
-    selected->steps.push_back({"swap resonance for", "sinusoid", statistic, 0.0});
-    selected->structure = line.structure;
-    selected->log_parameters = line.outcome.log_parameters;
-    selected->cost = line.outcome.cost;
-    ++lines;
-    swapped = true;
+  if (swap_peak_kinds(points, span, options, covariance, discrepancy, false, selected)) {
+    refit_selected(points, span, options, covariance, discrepancy, selected);
   }
-  if (!swapped) return;
-  canonical_order(selected->structure, selected->log_parameters);
-  refit_selected(points, span, options, covariance, discrepancy, selected);
 }
 
 }  // namespace identify
