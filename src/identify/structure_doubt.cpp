@@ -39,7 +39,9 @@ bool is_peak(const TermSlot& slot) {
 bool keeps_peak_identities(const ModelStructure& selected, const std::vector<double>& selected_log_parameters,
                            const ModelStructure& alternative, const std::vector<double>& alternative_log_parameters) {
   const auto log_frequency = [](const ModelStructure& structure, const std::vector<double>& log_parameters,
-                                size_t slot) { return log_parameters[parameter_offset(structure, static_cast<int>(slot)) + 1]; };
+                                size_t slot) {
+    return log_parameters[parameter_offset(structure, static_cast<int>(slot)) + 1];
+  };
   for (size_t i = 0; i < alternative.slots.size(); ++i) {
     if (!is_peak(alternative.slots[i])) continue;
     const double own = log_frequency(alternative, alternative_log_parameters, i);

@@ -159,7 +159,8 @@ TEST(IdentifyRiseTerms, ALineOfFewPeriodsIsNotTakenForTheRiseOfAWalkAndARamp) {
     model.noise_per_axis[axis] = emulator_processes(scaled, 1.0 / rate_hz, duration_s);
   }
   const auto rates = identify_test::emulate_triad_rates(model, rate_hz, duration_s, 8001);
-  const FitResult fit = fit_noise_model(identify_test::default_grid_oadev(rates[0], rate_hz), 1.0 / rate_hz, duration_s);
+  const FitResult fit =
+      fit_noise_model(identify_test::default_grid_oadev(rates[0], rate_hz), 1.0 / rate_hz, duration_s);
 
   for (const TermEstimate& term : fit.terms) {
     if (term.kind != TermKind::kSinusoid || term.status != TermStatus::kPresent) continue;

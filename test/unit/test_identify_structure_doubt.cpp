@@ -104,8 +104,10 @@ TEST(IdentifyStructureDoubt, NoAlternativeTradesTwoPeaks) {
   for (const TermEstimate& term : fit.terms) {
     if (term.kind != TermKind::kSinusoid || term.status != TermStatus::kPresent) continue;
     ++lines;
-    EXPECT_GT(term.shape.interval_low(1.96), term.shape.value / 2.0) << term.name << " at " << term.shape.value << " Hz";
-    EXPECT_LT(term.shape.interval_high(1.96), term.shape.value * 2.0) << term.name << " at " << term.shape.value << " Hz";
+    EXPECT_GT(term.shape.interval_low(1.96), term.shape.value / 2.0)
+        << term.name << " at " << term.shape.value << " Hz";
+    EXPECT_LT(term.shape.interval_high(1.96), term.shape.value * 2.0)
+        << term.name << " at " << term.shape.value << " Hz";
   }
   EXPECT_EQ(lines, 2) << "this test needs the two lines the tool reports";
 }
