@@ -43,6 +43,7 @@
 #include <unistd.h>
 
 #include "imu_lab/allan/batch.h"
+#include "imu_lab/allan/streaming_tau_plan.h"
 #include "imu_lab/common/atomic_file.h"
 #include "imu_lab/emulator/sensor_channel.h"
 #include "imu_lab/emulator/sensor_profile.h"
@@ -78,10 +79,8 @@ std::vector<allan::StabilityPoint> oavar_curve(const std::vector<double>& rates,
   const std::vector<double> phase = allan::phase_from_frequency(rates, tau0_s);
   const long long samples = static_cast<long long>(rates.size());
   std::vector<allan::StabilityPoint> curve;
-  for (int i = 0;; ++i) {
-    const int m = static_cast<int>(std::lround(std::pow(10.0, i / 10.0)));
-    if (2LL * m > samples - 1) break;
-    if (!curve.empty() && curve.back().averaging_factor == m) continue;
+  for (const std::int64_t factor : allan::logarithmic_averaging_factors(10.0, (samples - 1) / 2)) {
+    const int m = static_cast<int>(factor);
     allan::StabilityPoint point;
     point.averaging_factor = m;
     point.tau_s = m * tau0_s;

@@ -30,17 +30,22 @@ std::vector<std::int64_t> requested_factors(const StreamingOptions& options, std
     }
     return factors;
   }
+  return logarithmic_averaging_factors(options.points_per_decade, max_factor);
+}
+
+}  // namespace
+
+std::vector<std::int64_t> logarithmic_averaging_factors(double points_per_decade, std::int64_t max_averaging_factor) {
+  std::vector<std::int64_t> factors;
   for (int i = 0;; ++i) {
-    const double m = std::round(std::pow(10.0, i / options.points_per_decade));
-    if (m > static_cast<double>(max_factor)) break;
+    const double m = std::round(std::pow(10.0, i / points_per_decade));
+    if (m > static_cast<double>(max_averaging_factor)) break;
     if (factors.empty() || factors.back() != static_cast<std::int64_t>(m)) {
       factors.push_back(static_cast<std::int64_t>(m));
     }
   }
   return factors;
 }
-
-}  // namespace
 
 TauPlan plan_taus(const StreamingOptions& options, double tau0_s) {
   // StabilityPoint holds m as an int; far beyond any run length anyway.

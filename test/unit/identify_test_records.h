@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "imu_lab/allan/batch.h"
+#include "imu_lab/allan/streaming_tau_plan.h"
 #include "imu_lab/emulator/sensor_channel.h"
 #include "imu_lab/emulator/sensor_profile.h"
 #include "imu_lab/identify/fit_points.h"
@@ -38,13 +39,11 @@ inline std::vector<allan::StabilityPoint> octave_oadev(const std::vector<double>
 }
 
 // Overlapping Allan deviation of the rates at the allan tool's default grid, round(10^(i / 10)).
+// An OAVAR at m needs 2 m + 1 phase points, rates.size() + 1 of them.
 inline std::vector<allan::StabilityPoint> default_grid_oadev(const std::vector<double>& rates, double rate_hz) {
   std::vector<int> factors;
-  for (int i = 0;; ++i) {
-    const int m = static_cast<int>(std::lround(std::pow(10.0, i / 10.0)));
-    if (2.0 * m > static_cast<double>(rates.size()) - 1.0) break;
-    if (factors.empty() || factors.back() != m) factors.push_back(m);
-  }
+  const auto largest = static_cast<std::int64_t>((rates.size() - 1) / 2);
+  for (std::int64_t m : allan::logarithmic_averaging_factors(10.0, largest)) factors.push_back(static_cast<int>(m));
   return allan::evaluate_frequency(allan::Statistic::kOverlappingAllan, rates, 1.0 / rate_hz, factors);
 }
 

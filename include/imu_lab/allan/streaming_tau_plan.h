@@ -4,6 +4,7 @@
 // limit, rounded to a multiple of 2^L (the reported m is that multiple).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "imu_lab/allan/streaming_options.h"
@@ -19,6 +20,10 @@ struct PlannedLevel {
 struct TauPlan {
   std::vector<PlannedLevel> levels;  // ascending level; only levels with factors
 };
+
+// The logarithmic grid's averaging factors up to max_averaging_factor: round(10^(i /
+// points_per_decade)), duplicates removed (the allan tool's default grid at 10 per decade).
+std::vector<std::int64_t> logarithmic_averaging_factors(double points_per_decade, std::int64_t max_averaging_factor);
 
 // max_averaging_factor = floor(max_tau_s / tau0); at least 1.
 TauPlan plan_taus(const StreamingOptions& options, double tau0_s);
