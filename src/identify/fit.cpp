@@ -191,14 +191,23 @@ std::vector<TermSlot> left_out_slots(const FitResult& fit, const DataSpan& span)
 }
 
 // Each left-out one-parameter term fitted freely beside the selected ones, from a negligible
-// amplitude: its selection statistic, and an alternative structure for the sigmas.
+// amplitude: its selection statistic, and an alternative structure for the sigmas. A left-out
+// Markov term is fitted as the selection fits a candidate (its correlation time searched) and
+// kept where it lowers J: a slow hump on a floor of bias instability that the selection's
+// threshold for a searched shape left out moves B (doc/identification.md, "Doubt").
 std::vector<TermAddition> fit_left_out_terms(const SelectedModel& selected, const DataSpan& span,
                                              const FitResult& fit) {
   std::vector<TermAddition> additions;
   for (TermSlot slot : left_out_slots(fit, span)) {
-    if (!one_parameter_slot(&slot, fit.tau0_s)) continue;
     TermAddition addition;
     addition.kind = slot.kind;
+    if (slot.kind == TermKind::kMarkov) {
+      addition.outcome = fit_with_new_slot(fit.points, span, fit.options, fit.structure, fit.log_parameters, slot,
+                                           selected.weights, &addition.structure);
+      if (addition.outcome.usable && addition.outcome.cost < selected.cost) additions.push_back(addition);
+      continue;
+    }
+    if (!one_parameter_slot(&slot, fit.tau0_s)) continue;
     addition.structure = fit.structure;
     std::vector<double> log_parameters = fit.log_parameters;
     append_negligible_slot(fit.points, slot, &addition.structure, &log_parameters);

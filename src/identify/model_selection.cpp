@@ -79,24 +79,6 @@ void reweigh(const SelectionContext& context, SelectedModel* current) {
   current->cost = model_cost(context.points, current->structure, current->log_parameters, current->weights);
 }
 
-SolveOutcome fit_with_new_slot(const SelectionContext& context, const ModelStructure& base,
-                               const std::vector<double>& base_parameters, const TermSlot& slot,
-                               const MomentWeights& weights, ModelStructure* extended) {
-  *extended = base;
-  extended->slots.push_back(slot);
-  std::vector<std::vector<double>> starts;
-  for (const auto& slot_start :
-       new_slot_starts(slot, context.points, context.span, context.options.envelope_fractions)) {
-    for (double base_factor : {1.0, 0.5}) {
-      if (base.slots.empty() && base_factor != 1.0) continue;
-      std::vector<double> start = scaled_amplitudes(base, base_parameters, base_factor);
-      start.insert(start.end(), slot_start.begin(), slot_start.end());
-      starts.push_back(start);
-    }
-  }
-  return best_of(context.points, *extended, starts, context.options.solves_per_candidate, context.span, weights);
-}
-
 // A term driven to a negligible amplitude has no gradient left and stays there (a local
 // optimum the next step inherits). Restart each term in turn from fractions of its envelope.
 SolveOutcome polish(const SelectionContext& context, const ModelStructure& structure, const SolveOutcome& fitted,
@@ -142,7 +124,8 @@ Addition best_addition(const SelectionContext& context, const ModelStructure& ba
     };
     if (std::any_of(candidates.begin(), candidates.begin() + c, same_slot)) continue;
     ModelStructure extended;
-    const SolveOutcome outcome = fit_with_new_slot(context, base, base_parameters, candidates[c], weights, &extended);
+    const SolveOutcome outcome = fit_with_new_slot(context.points, context.span, context.options, base, base_parameters,
+                                                   candidates[c], weights, &extended);
     if (!outcome.usable) continue;
     // The distance left plus half the candidate's threshold: among candidates of different
     // parameter counts (a sinusoid or a resonance for one peak) the one whose fall of J clears
@@ -384,6 +367,23 @@ std::vector<TermSlot> candidate_slots(const FitOptions& options, const DataSpan&
 double slot_lr_threshold(const FitOptions& options, const TermSlot& slot, int point_count) {
   const double trials = slot.shape_free ? std::max(1, point_count) : 1.0;
   return chi_squared_quantile(1.0 - options.significance / trials, slot_parameter_count(slot));
+}
+
+SolveOutcome fit_with_new_slot(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
+                               const ModelStructure& base, const std::vector<double>& base_parameters,
+                               const TermSlot& slot, const MomentWeights& weights, ModelStructure* extended) {
+  *extended = base;
+  extended->slots.push_back(slot);
+  std::vector<std::vector<double>> starts;
+  for (const auto& slot_start : new_slot_starts(slot, points, span, options.envelope_fractions)) {
+    for (double base_factor : {1.0, 0.5}) {
+      if (base.slots.empty() && base_factor != 1.0) continue;
+      std::vector<double> start = scaled_amplitudes(base, base_parameters, base_factor);
+      start.insert(start.end(), slot_start.begin(), slot_start.end());
+      starts.push_back(start);
+    }
+  }
+  return best_of(points, *extended, starts, options.solves_per_candidate, span, weights);
 }
 
 SolveOutcome refit_structure(const std::vector<FitPoint>& points, const ModelStructure& structure,

@@ -109,6 +109,26 @@ int shared_index(const ModelStructure& selected, const FittedAlternative& altern
   return p + slot_parameter_count(alternative.structure.slots[alternative.slot_index]) - (end - begin);
 }
 
+// The alternative's own covariance of its log-parameters, for a swapped peak and an added Markov
+// term (its correlation time trades with the floor beside it, which the offset alone misses). An
+// added one-parameter term takes the selected structure's: it often sits at a negligible
+// amplitude, where its own covariance is singular, and where it does not, its offset carries what
+// it moves. So does a Markov term whose structure leaves any parameter loose (ln-sigma over
+// FitOptions::unconstrained_relative_sigma): a hump that takes a floor's whole share leaves the
+// floor unconstrained there, and its weight, however small, would swell the floor's mean-square
+// sigma (doc/identification.md, "Doubt").
+Eigen::MatrixXd alternative_covariance(const std::vector<FitPoint>& points, const FittedAlternative& alternative,
+                                       const MomentWeights& weights, const FitOptions& options,
+                                       const Eigen::MatrixXd& selected_covariance) {
+  const bool added = alternative.addition;
+  if (added && alternative.structure.slots.back().kind != TermKind::kMarkov) return selected_covariance;
+  const Eigen::MatrixXd own =
+      log_parameter_covariance(points, alternative.structure, alternative.outcome.log_parameters, weights);
+  if (!added) return own;
+  const double loosest = options.unconstrained_relative_sigma;
+  return own.allFinite() && own.diagonal().maxCoeff() <= loosest * loosest ? own : selected_covariance;
+}
+
 }  // namespace
 
 std::vector<StructureAlternative> weigh_structure_alternatives(const std::vector<FitPoint>& points,
@@ -147,21 +167,24 @@ std::vector<StructureAlternative> weigh_structure_alternatives(const std::vector
   }
   if (alternatives.empty()) return {};
 
-  // Akaike weights, relative to the selected structure (criterion difference 0).
+  // Akaike weights, relative to the selected structure (criterion difference 0). An added term
+  // whose shape was searched (a Markov term's T_c over one start per point) is charged 2 ln(points)
+  // more: the best of m chi-squared falls exceeds a single one by about 2 ln m, and with 2 per
+  // parameter alone a Markov term that lowers J by chance would take a fair weight on every curve
+  // (doc/identification.md, "Doubt").
+  const auto criterion_change = [&](const FittedAlternative& alternative) {
+    const bool searched = alternative.addition && alternative.structure.slots.back().shape_free;
+    return alternative.summary.distance_change + 2.0 * alternative.summary.parameter_change +
+           (searched ? 2.0 * std::log(std::max<double>(1.0, static_cast<double>(points.size()))) : 0.0);
+  };
   double total = 1.0;
-  for (const FittedAlternative& alternative : alternatives) {
-    const double criterion_change =
-        alternative.summary.distance_change + 2.0 * alternative.summary.parameter_change;
-    total += std::exp(-0.5 * criterion_change);
-  }
+  for (const FittedAlternative& alternative : alternatives) total += std::exp(-0.5 * criterion_change(alternative));
   for (FittedAlternative& alternative : alternatives) {
-    const double criterion_change =
-        alternative.summary.distance_change + 2.0 * alternative.summary.parameter_change;
-    alternative.summary.weight = std::exp(-0.5 * criterion_change) / total;
+    alternative.summary.weight = std::exp(-0.5 * criterion_change(alternative)) / total;
   }
 
   // Each structure's covariance of the selected parameters about the reported values: the
-  // alternative's own covariance (an addition: the selected one) and its offset where it shares a
+  // alternative's own covariance (alternative_covariance) and its offset where it shares a
   // parameter; the selected covariance for the replaced slot (the alternative says nothing of it),
   // uncorrelated with the rest.
   const Eigen::MatrixXd selected_covariance = *log_covariance;
@@ -171,9 +194,7 @@ std::vector<StructureAlternative> weigh_structure_alternatives(const std::vector
     alternative.summary.log_parameter_offsets.assign(count, 0.0);
     alternative.summary.log_covariance = Eigen::MatrixXd::Zero(count, count);
     const Eigen::MatrixXd covariance =
-        alternative.addition
-            ? selected_covariance
-            : log_parameter_covariance(points, alternative.structure, alternative.outcome.log_parameters, weights);
+        alternative_covariance(points, alternative, weights, options, selected_covariance);
     for (int p = 0; p < count; ++p) {
       const int ap = shared_index(structure, alternative, p);
       alternative.summary.log_parameter_offsets[p] =

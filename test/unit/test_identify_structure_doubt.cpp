@@ -14,6 +14,7 @@
 
 #include "identify_test_records.h"
 #include "imu_lab/identify/fit.h"
+#include "imu_lab/identify/record_simulation.h"
 
 namespace imu_lab {
 namespace identify {
@@ -147,9 +148,10 @@ TEST(IdentifyStructureDoubt, LeftOutTermsAreWeighedAndWidenTheSharedSigmas) {
   const FitResult fit = fit_mode_beside_front_end();
   int additions = 0, left_out = 0;
   for (const TermEstimate& term : fit.terms) {
-    const bool shaped = term.kind == TermKind::kMarkov || term.kind == TermKind::kSinusoid ||
-                        term.kind == TermKind::kResonance;
-    left_out += term.status == TermStatus::kAbsent && !shaped;
+    // Lines and modes left out are bounded, not added; a left-out Markov term is added where it
+    // lowers J.
+    const bool peak = term.kind == TermKind::kSinusoid || term.kind == TermKind::kResonance;
+    left_out += term.status == TermStatus::kAbsent && !peak && term.kind != TermKind::kMarkov;
   }
   double weights = 0.0;
   const StructureAlternative* walk = nullptr;
@@ -162,6 +164,11 @@ TEST(IdentifyStructureDoubt, LeftOutTermsAreWeighedAndWidenTheSharedSigmas) {
           << alternative.replacement << ", parameter " << p;
     }
     if (!alternative.replaced.empty()) continue;
+    if (alternative.replacement == "markov") {
+      EXPECT_EQ(alternative.parameter_change, 2);
+      EXPECT_LT(alternative.distance_change, 0.0);
+      continue;
+    }
     ++additions;
     EXPECT_EQ(alternative.parameter_change, 1);
     EXPECT_LE(alternative.distance_change, 1e-9 * fit.quality.distance) << alternative.replacement;
@@ -222,6 +229,45 @@ TEST(IdentifyStructureDoubt, TheFrontEndHoldsItsTruthWhenTheModeIsTakenForALine)
 
 // The normal cumulative distribution, written out here apart from the code under test.
 double normal_below(double x) { return 0.5 * (1.0 + std::erf(x / std::sqrt(2.0))); }
+
+// A slow Markov hump on the floor of bias instability, lower than the coverage bench's case 10
+// (N behind a 40 Hz front end at 100 Hz, B 3e-4, a Markov term of T_c 30 s standing 1.26x over
+// the floor near 60 s where the bench's stands 1.52x, two hours). The selection often leaves the
+// hump out (its fall of J, 4-15 here, is under the threshold of a searched shape, 15.9), and B
+// alone then carries the floor 8-14 % high with a sigma of 2-4 %. The left-out Markov term is
+// weighed as an alternative like every left-out term (its searched shape charged 2 ln(points),
+// its own covariance used: B trades with the hump there): B's 95 % interval must hold the truth
+// as a 95 % interval should. With nominal coverage, 5 or fewer of 8 records holding it has a
+// chance of 0.6 %; these 8 hold it 6 times, and 2 times without the Markov alternative.
+TEST(IdentifyStructureDoubt, AMarkovHumpTheSelectionLeftOutWidensTheFloorsInterval) {
+  NoiseModel truth;
+  truth.terms = {
+      {TermKind::kWhiteRate, 5e-4}, {TermKind::kBiasInstability, 3e-4, 50.0}, {TermKind::kMarkov, 2e-3, 30.0}};
+  constexpr double kRateHz = 100.0, kLengthS = 7200.0, kFrontEndHz = 40.0;
+  constexpr int kRecords = 8, kFewestHolding = 6;
+  const double true_b = truth.terms[1].amplitude;
+  const auto processes = emulator_processes(truth, 1.0 / kRateHz, kLengthS);
+  int holding = 0, hump_left_out = 0;
+  std::string misses;
+  for (int seed = 1; seed <= kRecords; ++seed) {
+    const auto rates = identify_test::emulate_axis_rates(processes, kRateHz, kLengthS, seed, kFrontEndHz);
+    const FitResult fit = fit_noise_model(identify_test::default_grid_oadev(rates, kRateHz), 1.0 / kRateHz, kLengthS);
+    const TermEstimate* bias = fit.find("bias_instability");
+    ASSERT_NE(bias, nullptr) << "seed " << seed;
+    ASSERT_EQ(bias->status, TermStatus::kPresent) << "seed " << seed;
+    if (fit.find("markov_1") == nullptr) ++hump_left_out;
+    const double low = bias->amplitude.interval_low(1.959964), high = bias->amplitude.interval_high(1.959964);
+    if (true_b >= low && true_b <= high) {
+      ++holding;
+    } else {
+      misses += " seed " + std::to_string(seed) + ": B " + std::to_string(bias->amplitude.value) + ", 95 % [" +
+                std::to_string(low) + ", " + std::to_string(high) + "];";
+    }
+  }
+  // The case this test is about: the hump left out on most records (6 of 8 on these seeds).
+  EXPECT_GE(hump_left_out, kRecords / 2);
+  EXPECT_GE(holding, kFewestHolding) << misses;
+}
 
 TEST(IdentifyStructureDoubt, OneStructureGivesTheSymmetricIntervalInTheLogarithm) {
   const std::vector<LogNormalComponent> alone = {{1.0, 0.0, 0.2}};

@@ -74,6 +74,13 @@ void refit_selected(const std::vector<FitPoint>& points, const DataSpan& span, c
 void reweigh_selected(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
                       OavarCovariance& covariance, double discrepancy, SelectedModel* selected);
 
+// `base` with `slot` appended, fitted as the selection fits a candidate: from each start shape at
+// each of options.envelope_fractions, beside the base terms as they are and halved, the best of
+// options.solves_per_candidate solves (ranked by their starting distance).
+SolveOutcome fit_with_new_slot(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
+                               const ModelStructure& base, const std::vector<double>& base_parameters,
+                               const TermSlot& slot, const MomentWeights& weights, ModelStructure* extended);
+
 // Refits a fixed structure from `start` and from a few perturbations of it; the best solve.
 SolveOutcome refit_structure(const std::vector<FitPoint>& points, const ModelStructure& structure,
                              const std::vector<double>& start, const DataSpan& span, const MomentWeights& weights);

@@ -2,7 +2,8 @@
 // took for a line (sinusoid) is often described almost as well by a narrow resonance, and the
 // other way round (doc/identification.md, "Emulated coverage": a 20 Hz mode 6 Hz wide beside a
 // 40 Hz front end); a term left out just below its threshold (B beside K) would, if added, move
-// the terms that took its share. The moment covariance of the selected structure carries neither.
+// the terms that took its share; so would a slow Markov hump left out on a floor of bias
+// instability. The moment covariance of the selected structure carries none of these.
 // Each alternative (a peak's slot swapped for the other kind, or one left-out term added), fitted
 // under the selected model's weights, is weighed against the selected structure by Akaike's
 // criterion on the GMM distance, J + 2 x parameters (Andrews, Econometrica 1999); every parameter
@@ -11,12 +12,13 @@
 // Selection and Multimodel Inference, 2nd ed. 2002, section 6.3; Buckland, Burnham and Augustin,
 // Biometrics 1997, average the root):
 //   w_sel var_sel + sum_a w_a (var_a + (ln theta_a - ln theta_sel)^2),
-// var_a the alternative's own for a swapped peak, the selected one's for an added term (which
-// may have gone to a negligible amplitude, where its own covariance is singular). That is what
-// `sigma` reports. The reported values stay the selected model's, so the drawn total is still
-// the fitted one. The intervals are the mixture's own quantiles, the model-averaged tail area
-// limits of Turek and Fletcher (Computational Statistics & Data Analysis 2012): an alternative
-// that moves a parameter one way widens its interval on that side only.
+// var_a the alternative's own for a swapped peak and an added Markov term (unless that term is
+// left loose), the selected one's for an added one-parameter term (which may have gone to a
+// negligible amplitude, where its own covariance is singular). That is what `sigma` reports.
+// The reported values stay the selected model's, so the drawn total is still the fitted one. The
+// intervals are the mixture's own quantiles, the model-averaged tail area limits of Turek and
+// Fletcher (Computational Statistics & Data Analysis 2012): an alternative that moves a
+// parameter one way widens its interval on that side only.
 #pragma once
 
 #include <Eigen/Core>
