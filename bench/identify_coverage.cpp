@@ -149,6 +149,13 @@ NoiseModel scaled(NoiseModel model, double factor) {
   return model;
 }
 
+// A case whose accelerometer triad carries the gyro's model scaled (the fit is scale-free), both
+// triads with varied axes, unquantised.
+CoverageCase one_model_case(const char* name, double rate_hz, double duration_s, const NoiseModel& gyro,
+                            double accelerometer_scale) {
+  return {name, rate_hz, duration_s, {varied_axes(gyro), varied_axes(scaled(gyro, accelerometer_scale))}, {0.0, 0.0}};
+}
+
 std::vector<CoverageCase> coverage_cases() {
   std::vector<CoverageCase> cases;
   // The identification tests' cases (test/unit/test_identify_*.cpp), the accelerometer triad
@@ -281,11 +288,7 @@ std::vector<CoverageCase> coverage_cases() {
                   {TermKind::kWhiteRate, 2.9e-6},
                   {TermKind::kBiasInstability, 1.45e-6, 50.0},
                   {TermKind::kRandomWalk, 6e-8}};
-    cases.push_back({"9 FOG floor (Q N B K), 200 Hz, 2 h",
-                     200.0,
-                     7200.0,
-                     {varied_axes(gyro), varied_axes(scaled(gyro, 70.0))},
-                     {0.0, 0.0}});
+    cases.push_back(one_model_case("9 FOG floor (Q N B K), 200 Hz, 2 h", 200.0, 7200.0, gyro, 70.0));
   }
   {
     // A MEMS unit whose floor carries a slow Markov hump, as units 4-6 show (doc/identification.md):
@@ -294,11 +297,8 @@ std::vector<CoverageCase> coverage_cases() {
     NoiseModel gyro;
     gyro.terms = {
         {TermKind::kWhiteRate, 5e-4, 40.0}, {TermKind::kBiasInstability, 3e-4, 50.0}, {TermKind::kMarkov, 3e-3, 30.0}};
-    cases.push_back({"10 front end, B under a Markov hump (N+low-pass B Markov), 100 Hz, 2 h",
-                     100.0,
-                     7200.0,
-                     {varied_axes(gyro), varied_axes(scaled(gyro, 10.0))},
-                     {0.0, 0.0}});
+    cases.push_back(one_model_case("10 front end, B under a Markov hump (N+low-pass B Markov), 100 Hz, 2 h", 100.0,
+                                   7200.0, gyro, 10.0));
   }
   return cases;
 }
