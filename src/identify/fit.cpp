@@ -27,18 +27,7 @@ constexpr double kLargestDiscrepancy = 0.1;
 
 double distance_at(const std::vector<FitPoint>& points, const Eigen::MatrixXd& model_covariance,
                    const Eigen::VectorXd& model_values, double discrepancy) {
-  Eigen::MatrixXd covariance(points.size(), points.size());
-  Eigen::VectorXd residual(points.size());
-  for (size_t k = 0; k < points.size(); ++k) {
-    for (size_t j = 0; j < points.size(); ++j) {
-      covariance(k, j) = model_covariance(k, j) / (model_values(k) * model_values(j));
-    }
-    residual(k) =
-        std::log(points[k].avar) - mean_log_scaled_chi_squared(2.0 / covariance(k, k)) - std::log(model_values(k));
-    covariance(k, k) += discrepancy * discrepancy;
-  }
-  const Eigen::LDLT<Eigen::MatrixXd> factor(covariance);
-  return residual.dot(factor.solve(residual));
+  return moment_distance(points, model_values, moment_weights(model_values, model_covariance, discrepancy));
 }
 
 // The relative spread to add to every point's variance so that the distance at the estimate
@@ -490,6 +479,17 @@ FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, doub
       }
     }
     if (discrepancy < kInitialDiscrepancy) {
+      // A line the first spread let stand for a mode is weighed as the mode at the estimates' own
+      // precision here too, not only where it leaves a spread: whether it does is a matter of
+      // the other points (how far the longest taus, at a few EDF, happen to lie off).
+      SelectedModel swapped = exact;
+      if (swap_lines_for_modes(fit.points, span, allowed, covariance, 0.0, &swapped)) {
+        const double swapped_discrepancy = spread_left_by(swapped);
+        if (swapped_discrepancy < kInitialDiscrepancy) {
+          exact = swapped;
+          discrepancy = swapped_discrepancy;
+        }
+      }
       return select_model(fit.points, span, allowed, covariance, discrepancy,
                           model_from_log_parameters(exact.structure, exact.log_parameters), &exact);
     }

@@ -1,6 +1,5 @@
 #include "imu_lab/identify/fit_problem.h"
 
-#include <boost/math/special_functions/digamma.hpp>
 #include <ceres/ceres.h>
 
 #include <Eigen/Dense>
@@ -12,6 +11,7 @@
 #include <stdexcept>
 
 #include "imu_lab/common/ceres_solver_options.h"
+#include "imu_lab/identify/chi_squared.h"
 #include "imu_lab/noise/analytic_avar.h"
 
 namespace imu_lab {
@@ -64,18 +64,23 @@ void model_and_jacobian(const std::vector<FitPoint>& points, const ModelStructur
   }
 }
 
-// The moments: ln of each measured AVAR less the mean of ln(chi2_edf / edf) at its EDF, so that
-// they are unbiased for ln of the true AVAR.
-Eigen::VectorXd log_moments(const std::vector<FitPoint>& points, const MomentWeights& weights) {
-  Eigen::VectorXd values(points.size());
-  for (size_t k = 0; k < points.size(); ++k) values(k) = std::log(points[k].avar) - weights.log_bias(k);
-  return values;
+// The whitened residuals L^-1 (z - ln nu(theta)) at the model's AVARs and, when asked, their
+// Jacobian from the model's. False where a model value is not positive and finite.
+bool whitened_residuals(const std::vector<FitPoint>& points, const Eigen::VectorXd& model,
+                        const Eigen::MatrixXd* model_jacobian, const MomentWeights& weights, Eigen::VectorXd* residuals,
+                        Eigen::MatrixXd* jacobian) {
+  if (!model.allFinite() || !(model.minCoeff() > 0.0)) return false;
+  Eigen::VectorXd moments(points.size());
+  for (size_t k = 0; k < points.size(); ++k) moments(k) = std::log(points[k].avar / model(k)) - weights.log_bias(k);
+  *residuals = weights.whitening * moments;
+  if (model_jacobian != nullptr) *jacobian = -weights.whitening * (model.cwiseInverse().asDiagonal() * *model_jacobian);
+  return true;
 }
 
 class MomentCost : public ceres::CostFunction {
  public:
   MomentCost(const std::vector<FitPoint>& points, const ModelStructure& structure, const MomentWeights& weights)
-      : points_(points), structure_(structure), whitening_(weights.whitening), moments_(log_moments(points, weights)) {
+      : points_(points), structure_(structure), weights_(weights) {
     set_num_residuals(static_cast<int>(points.size()));
     mutable_parameter_block_sizes()->push_back(parameter_count(structure));
   }
@@ -109,12 +114,14 @@ class MomentCost : public ceres::CostFunction {
     Eigen::VectorXd model;
     Eigen::MatrixXd jacobian;
     model_and_jacobian(points_, structure_, last_.parameters, &model, with_jacobian ? &jacobian : nullptr);
-    if (!model.allFinite()) return;
-    if (!(model.minCoeff() > 0.0)) return;
-    last_.residuals = whitening_ * (moments_ - model.array().log().matrix());
-    last_.residuals_usable = true;
-    if (with_jacobian && jacobian.allFinite()) {
-      last_.jacobian = -whitening_ * (model.cwiseInverse().asDiagonal() * jacobian);
+    Eigen::MatrixXd whitened_jacobian;
+    if (!whitened_residuals(points_, model, with_jacobian ? &jacobian : nullptr, weights_, &last_.residuals,
+                            &whitened_jacobian)) {
+      return;
+    }
+    last_.residuals_usable = last_.residuals.allFinite();
+    if (with_jacobian && last_.residuals_usable && whitened_jacobian.allFinite()) {
+      last_.jacobian = whitened_jacobian;
       last_.jacobian_usable = true;
     }
   }
@@ -131,19 +138,11 @@ class MomentCost : public ceres::CostFunction {
 
   const std::vector<FitPoint>& points_;
   ModelStructure structure_;
-  Eigen::MatrixXd whitening_;
-  Eigen::VectorXd moments_;
+  const MomentWeights& weights_;
   mutable Evaluation last_;  // Ceres runs one thread here (ceres_solver_options.h)
 };
 
 }  // namespace
-
-double mean_log_scaled_chi_squared(double edf) {
-  if (!(edf > 0.0)) return 0.0;
-  // E ln(chi2_e / e) = digamma(e / 2) - ln(e / 2); its asymptotic series beyond e = 200.
-  if (edf > 200.0) return -1.0 / edf - 1.0 / (3.0 * edf * edf);
-  return boost::math::digamma(0.5 * edf) - std::log(0.5 * edf);
-}
 
 std::vector<int> averaging_factors(const std::vector<FitPoint>& points) {
   std::vector<int> factors;
@@ -159,20 +158,32 @@ std::vector<double> pooled_term_fractions(const std::vector<FitPoint>& points) {
 
 MomentWeights moment_weights(const std::vector<FitPoint>& points, const NoiseModel& model,
                              OavarCovariance& model_covariance, double discrepancy) {
-  // Relative covariance: cov(nu_i, nu_j) / (nu_i nu_j) is the covariance of ln nu to first order;
-  // it depends on the model's shape only, not on how far its level is from the data's.
   Eigen::VectorXd level(points.size());
   for (size_t k = 0; k < points.size(); ++k) level(k) = model_avar(model, points[k].tau_s);
+  return moment_weights(level, model_covariance.covariance(model), discrepancy);
+}
+
+MomentWeights moment_weights(const Eigen::VectorXd& model_avars, const Eigen::MatrixXd& avar_covariance,
+                             double discrepancy) {
+  // Relative covariance: cov(nu_i, nu_j) / (nu_i nu_j) is the covariance of ln nu to first order;
+  // it depends on the model's shape only, not on how far its level is from the data's. Its
+  // diagonal gives each estimate's EDF, and the variance of ln nu is then trigamma(e / 2)
+  // (chi_squared.h): the first order's 2 / e understates it 1.6-2.5 times at the few EDF of the
+  // longest taus. The correlations stay the first order's.
   Eigen::MatrixXd covariance =
-      level.cwiseInverse().asDiagonal() * model_covariance.covariance(model) * level.cwiseInverse().asDiagonal();
+      model_avars.cwiseInverse().asDiagonal() * avar_covariance * model_avars.cwiseInverse().asDiagonal();
+  const int count = static_cast<int>(model_avars.size());
   MomentWeights weights;
-  weights.log_bias = Eigen::VectorXd(points.size());
-  weights.edf = Eigen::VectorXd(points.size());
-  for (size_t k = 0; k < points.size(); ++k) {
+  weights.edf = Eigen::VectorXd(count);
+  weights.log_bias = Eigen::VectorXd(count);
+  Eigen::VectorXd log_scale(count);
+  for (int k = 0; k < count; ++k) {
     weights.edf(k) = 2.0 / covariance(k, k);
     weights.log_bias(k) = mean_log_scaled_chi_squared(weights.edf(k));
-    covariance(k, k) += discrepancy * discrepancy;
+    log_scale(k) = std::sqrt(variance_log_scaled_chi_squared(weights.edf(k)) / covariance(k, k));
   }
+  covariance = log_scale.asDiagonal() * covariance * log_scale.asDiagonal();
+  for (int k = 0; k < count; ++k) covariance(k, k) += discrepancy * discrepancy;
   Eigen::LLT<Eigen::MatrixXd> factor(covariance);
   if (factor.info() != Eigen::Success) {
     // The lag sums carry relative errors near 1e-5 (1e-3 for a resonance's truncated
@@ -197,7 +208,7 @@ MomentWeights moment_weights(const std::vector<FitPoint>& points, const NoiseMod
   weights.discrepancy = discrepancy;
   const Eigen::MatrixXd lower = factor.matrixL();
   weights.whitening = lower.triangularView<Eigen::Lower>().solve(
-      Eigen::MatrixXd::Identity(static_cast<int>(points.size()), static_cast<int>(points.size())));
+      Eigen::MatrixXd::Identity(count, count));
   return weights;
 }
 
@@ -318,12 +329,20 @@ SolveOutcome solve_model(const std::vector<FitPoint>& points, const ModelStructu
   return outcome;
 }
 
+double moment_distance(const std::vector<FitPoint>& points, const Eigen::VectorXd& model_values,
+                       const MomentWeights& weights) {
+  Eigen::VectorXd residuals;
+  if (!whitened_residuals(points, model_values, nullptr, weights, &residuals, nullptr)) {
+    return std::numeric_limits<double>::infinity();
+  }
+  return residuals.squaredNorm();
+}
+
 double model_cost(const std::vector<FitPoint>& points, const ModelStructure& structure,
                   const std::vector<double>& log_parameters, const MomentWeights& weights) {
   Eigen::VectorXd model;
   model_and_jacobian(points, structure, log_parameters, &model, nullptr);
-  if (!model.allFinite() || !(model.minCoeff() > 0.0)) return std::numeric_limits<double>::infinity();
-  return 0.5 * (weights.whitening * (log_moments(points, weights) - model.array().log().matrix())).squaredNorm();
+  return 0.5 * moment_distance(points, model, weights);
 }
 
 Eigen::MatrixXd log_parameter_covariance(const std::vector<FitPoint>& points, const ModelStructure& structure,
@@ -331,7 +350,11 @@ Eigen::MatrixXd log_parameter_covariance(const std::vector<FitPoint>& points, co
   Eigen::VectorXd model;
   Eigen::MatrixXd jacobian;
   model_and_jacobian(points, structure, log_parameters, &model, &jacobian);
-  const Eigen::MatrixXd whitened = weights.whitening * (model.cwiseInverse().asDiagonal() * jacobian);
+  Eigen::VectorXd residuals;
+  Eigen::MatrixXd whitened;
+  if (!whitened_residuals(points, model, &jacobian, weights, &residuals, &whitened)) {
+    throw std::runtime_error("noise identification: the model has no positive AVAR at the estimate");
+  }
   const Eigen::MatrixXd information = whitened.transpose() * whitened;
   return information.completeOrthogonalDecomposition().pseudoInverse();
 }

@@ -305,9 +305,9 @@ bool swap_peak_kinds(const std::vector<FitPoint>& points, const DataSpan& span, 
 
 }  // namespace
 
-void swap_lines_for_modes(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
+bool swap_lines_for_modes(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
                           OavarCovariance& covariance, double discrepancy, SelectedModel* selected) {
-  swap_peak_kinds(points, span, options, covariance, discrepancy, true, selected);
+  return swap_peak_kinds(points, span, options, covariance, discrepancy, true, selected);
 }
 
 void swap_dominated_modes_for_lines(const std::vector<FitPoint>& points, const DataSpan& span,

@@ -67,6 +67,39 @@ TEST(IdentifyLikelihood, ChiSquaredTailAndQuantile) {
   EXPECT_NEAR(chi_squared_upper_tail(3.841459, 1.0), 0.05, 1e-6);
 }
 
+// The law of ln(chi2_e / e): closed forms at e = 1 and 2 (digamma(1/2) = -gamma - 2 ln 2,
+// trigamma(1/2) = pi^2 / 2, trigamma(1) = pi^2 / 6), the series beyond e = 200 against the special
+// functions just below it, and 200000 draws at e = 3 (the sample variance's standard error there
+// is 0.0033: the tolerance is 4 of them).
+TEST(IdentifyLikelihood, TheLogOfAScaledChiSquaredHasDigammaMeanAndTrigammaVariance) {
+  constexpr double kEulerGamma = 0.5772156649015329;
+  EXPECT_NEAR(mean_log_scaled_chi_squared(1.0), -kEulerGamma - 2.0 * std::log(2.0) + std::log(2.0), 1e-12);
+  EXPECT_NEAR(variance_log_scaled_chi_squared(1.0), kPi * kPi / 2.0, 1e-12);
+  EXPECT_NEAR(mean_log_scaled_chi_squared(2.0), -kEulerGamma, 1e-12);
+  EXPECT_NEAR(variance_log_scaled_chi_squared(2.0), kPi * kPi / 6.0, 1e-12);
+  // Both fall like 1 / e there: e times each is continuous across e = 200.
+  EXPECT_NEAR(200.0001 * variance_log_scaled_chi_squared(200.0001) / (199.9999 * variance_log_scaled_chi_squared(199.9999)),
+              1.0, 1e-7);
+  EXPECT_NEAR(200.0001 * mean_log_scaled_chi_squared(200.0001) / (199.9999 * mean_log_scaled_chi_squared(199.9999)),
+              1.0, 1e-7);
+
+  std::mt19937_64 generator(20261205);
+  std::chi_squared_distribution<double> chi_squared(3.0);
+  constexpr int kDraws = 200000;
+  double sum = 0.0, sum_of_squares = 0.0;
+  for (int i = 0; i < kDraws; ++i) {
+    const double log_ratio = std::log(chi_squared(generator) / 3.0);
+    sum += log_ratio;
+    sum_of_squares += log_ratio * log_ratio;
+  }
+  const double mean = sum / kDraws;
+  const double variance = sum_of_squares / kDraws - mean * mean;
+  EXPECT_NEAR(mean, mean_log_scaled_chi_squared(3.0), 4.0 * std::sqrt(variance / kDraws));
+  EXPECT_NEAR(variance, variance_log_scaled_chi_squared(3.0), 4.0 * 0.0033);
+  // The first order, 2 / e, is 30 % short of it at e = 3.
+  EXPECT_GT(variance, 1.3 * 2.0 / 3.0);
+}
+
 std::vector<allan::StabilityPoint> curve(const std::vector<double>& taus) {
   std::vector<allan::StabilityPoint> points;
   for (double tau : taus) {
@@ -196,9 +229,39 @@ TEST(IdentifyMoments, CovarianceOfLnNIsTheGeneralisedLeastSquaresOne) {
                        (points[i].avar * points[j].avar);
     }
   }
+  // Each log's variance is trigamma(e / 2) at the estimate's EDF e = 2 / relative variance; the
+  // correlations are the AVARs'.
+  Eigen::VectorXd log_scale(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    log_scale(i) = std::sqrt(variance_log_scaled_chi_squared(2.0 / relative(i, i)) / relative(i, i));
+  }
+  relative = log_scale.asDiagonal() * relative * log_scale.asDiagonal();
   const double information = Eigen::VectorXd::Ones(n).dot(relative.ldlt().solve(Eigen::VectorXd::Ones(n)));
   const Eigen::MatrixXd log_covariance = log_parameter_covariance(points, structure, outcome.log_parameters, weights);
   EXPECT_NEAR(std::sqrt(log_covariance(0, 0)) * 2.0 * std::sqrt(information), 1.0, 1e-3);
+}
+
+// At the longest taus of a record an estimate has a few EDF, and the weights give its log the
+// variance trigamma(e / 2) (1.6-2.5 times the first order's 2 / e there), plus the discrepancy's.
+TEST(IdentifyMoments, TheWeightsGiveEachLogItsTrigammaVariance) {
+  const double tau0_s = 0.01, density = 2e-5, discrepancy = 0.01;
+  const long long samples = 20000;
+  NoiseModel model;
+  model.terms = {{TermKind::kWhiteRate, density, 0.0}};
+  std::vector<FitPoint> points;
+  for (int m : {1, 10, 100, 1000, 4000, 9000}) points.push_back({m * tau0_s, m, model_avar(model, m * tau0_s)});
+  OavarCovariance covariance(averaging_factors(points), tau0_s, samples);
+  const MomentWeights weights = moment_weights(points, model, covariance, discrepancy);
+  const Eigen::MatrixXd log_covariance = (weights.whitening.transpose() * weights.whitening).inverse();
+  ASSERT_LT(weights.edf(points.size() - 1), 3.0);
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const double first_order = 2.0 / weights.edf(k);
+    EXPECT_NEAR(log_covariance(k, k), variance_log_scaled_chi_squared(weights.edf(k)) + discrepancy * discrepancy,
+                1e-9 * log_covariance(k, k))
+        << "at m = " << points[k].averaging_factor << " (EDF " << weights.edf(k) << ", first order " << first_order
+        << ")";
+    EXPECT_NEAR(weights.log_bias(k), mean_log_scaled_chi_squared(weights.edf(k)), 1e-12);
+  }
 }
 
 // A profile's solve given a level stops at the first iterate under it; without one (or with a

@@ -3,14 +3,13 @@
 // z = ln nu - E ln(chi2_e / e) (each measured AVAR's log, unbiased at its EDF e), matched to
 // ln nu(theta) in the distance
 //   J(theta) = (z - ln nu(theta))' R^-1 (z - ln nu(theta)),
-// where R is the relative covariance of the estimates, cov(nu_i, nu_j) / (nu_i nu_j) under a
-// previous model (avar_covariance.h; it carries the EDFs and the correlations across taus),
-// plus a relative discrepancy variance for what no model of this family describes (a real front
-// end that is not exactly first order, for instance). On logarithms a point far above the model
-// and one far below weigh alike, as in the chi-squared likelihood of each point, and R depends on
-// the model's shape only, never on how far its level is from the data's. With R fixed the
-// difference of J between nested models is a chi-squared statistic (the GMM distance test).
-// Parameters are logarithms; shapes are bounded to what the data can express.
+// where R is the covariance of the logs of the estimates under a previous model (avar_covariance.h
+// gives their covariance, which carries the EDFs and the correlations across taus; each log's
+// variance is trigamma(e / 2), chi_squared.h), plus a relative discrepancy variance for what no
+// model of this family describes (a real front end that is not exactly first order, for
+// instance). R depends on the model's shape only, never on how far its level is from the data's.
+// With R fixed the difference of J between nested models is a chi-squared statistic (the GMM
+// distance test). Parameters are logarithms; shapes are bounded to what the data can express.
 #pragma once
 
 #include <Eigen/Core>
@@ -18,6 +17,7 @@
 #include <vector>
 
 #include "imu_lab/identify/avar_covariance.h"
+#include "imu_lab/identify/chi_squared.h"
 #include "imu_lab/identify/fit_points.h"
 #include "imu_lab/identify/model_structure.h"
 
@@ -37,20 +37,21 @@ struct DataSpan {
 
 // R^-1/2 for the fit points: residuals r = L^-1 (z - ln nu(theta)) with R = L L'.
 struct MomentWeights {
-  Eigen::MatrixXd whitening;  // L^-1
-  Eigen::VectorXd log_bias;   // E ln(chi2_e / e) at each point's EDF under the weighing model
-  double discrepancy = 0.0;   // relative standard deviation added to every point
-  Eigen::VectorXd edf;        // 2 / relative variance of each estimate under the weighing model
+  Eigen::MatrixXd whitening;                // L^-1
+  Eigen::VectorXd log_bias;                 // E ln(chi2_e / e) at each point's EDF under the weighing model
+  double discrepancy = 0.0;                 // relative standard deviation added to every point
+  Eigen::VectorXd edf;                      // 2 / relative variance of each estimate under the weighing model
 };
 
-// E ln(chi2_e / e) = digamma(e / 2) - ln(e / 2).
-double mean_log_scaled_chi_squared(double edf);
 
 // The weights under `model` (its relative covariance of the estimates, from `covariance`, which
 // holds the fit points' averaging factors, plus discrepancy^2 on the diagonal). A covariance
 // that rounding made indefinite has its correlation eigenvalues clipped. Throws
 // std::runtime_error if even that fails.
 MomentWeights moment_weights(const std::vector<FitPoint>& points, const NoiseModel& model, OavarCovariance& covariance,
+                             double discrepancy);
+// The same from the model's AVAR at each point and the covariance of the estimates under it.
+MomentWeights moment_weights(const Eigen::VectorXd& model_avars, const Eigen::MatrixXd& avar_covariance,
                              double discrepancy);
 
 // The averaging factors of the points, in order (what an OavarCovariance for them needs).
@@ -88,6 +89,10 @@ SolveOutcome solve_model(const std::vector<FitPoint>& points, const ModelStructu
                          const std::vector<double>& start, const DataSpan& span, const MomentWeights& weights,
                          const std::vector<int>& held_fixed = {},
                          double stop_below_cost = -std::numeric_limits<double>::infinity());
+
+// J at the model's AVAR at each point; infinity where one is not positive and finite.
+double moment_distance(const std::vector<FitPoint>& points, const Eigen::VectorXd& model_values,
+                       const MomentWeights& weights);
 
 // J / 2 at given parameters.
 double model_cost(const std::vector<FitPoint>& points, const ModelStructure& structure,

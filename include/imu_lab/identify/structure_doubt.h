@@ -94,8 +94,8 @@ class OavarCovariance;
 // at `discrepancy`, kept where J falls by more than one parameter's chi2 quantile at the
 // selection's significance (the line is a resonance of zero width, so the two are nested). The
 // selection under a 1 % spread cannot tell a mode from a line where only the shortest taus see
-// the width; the estimates' own precision often can.
-void swap_lines_for_modes(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
+// the width; the estimates' own precision often can. True when a line was swapped.
+bool swap_lines_for_modes(const std::vector<FitPoint>& points, const DataSpan& span, const FitOptions& options,
                           OavarCovariance& covariance, double discrepancy, SelectedModel* selected);
 
 // Each resonance of `selected` refitted as a line (under its own weights), taken where the line
