@@ -64,15 +64,18 @@ void model_and_jacobian(const std::vector<FitPoint>& points, const ModelStructur
   }
 }
 
-// The whitened residuals L^-1 (z - ln nu(theta)) at the model's AVARs and, when asked, their
-// Jacobian from the model's. False where a model value is not positive and finite.
+// The whitened residuals L^-1 (z - ln nu(theta)) at the model's AVARs and, when asked (either
+// may be null), their Jacobian from the model's. False where a model value is not positive and
+// finite.
 bool whitened_residuals(const std::vector<FitPoint>& points, const Eigen::VectorXd& model,
                         const Eigen::MatrixXd* model_jacobian, const MomentWeights& weights, Eigen::VectorXd* residuals,
                         Eigen::MatrixXd* jacobian) {
   if (!model.allFinite() || !(model.minCoeff() > 0.0)) return false;
-  Eigen::VectorXd moments(points.size());
-  for (size_t k = 0; k < points.size(); ++k) moments(k) = std::log(points[k].avar / model(k)) - weights.log_bias(k);
-  *residuals = weights.whitening * moments;
+  if (residuals != nullptr) {
+    Eigen::VectorXd moments(points.size());
+    for (size_t k = 0; k < points.size(); ++k) moments(k) = std::log(points[k].avar / model(k)) - weights.log_bias(k);
+    *residuals = weights.whitening * moments;
+  }
   if (model_jacobian != nullptr) *jacobian = -weights.whitening * (model.cwiseInverse().asDiagonal() * *model_jacobian);
   return true;
 }
@@ -350,9 +353,8 @@ Eigen::MatrixXd log_parameter_covariance(const std::vector<FitPoint>& points, co
   Eigen::VectorXd model;
   Eigen::MatrixXd jacobian;
   model_and_jacobian(points, structure, log_parameters, &model, &jacobian);
-  Eigen::VectorXd residuals;
   Eigen::MatrixXd whitened;
-  if (!whitened_residuals(points, model, &jacobian, weights, &residuals, &whitened)) {
+  if (!whitened_residuals(points, model, &jacobian, weights, nullptr, &whitened)) {
     throw std::runtime_error("noise identification: the model has no positive AVAR at the estimate");
   }
   const Eigen::MatrixXd information = whitened.transpose() * whitened;

@@ -37,12 +37,11 @@ struct DataSpan {
 
 // R^-1/2 for the fit points: residuals r = L^-1 (z - ln nu(theta)) with R = L L'.
 struct MomentWeights {
-  Eigen::MatrixXd whitening;                // L^-1
-  Eigen::VectorXd log_bias;                 // E ln(chi2_e / e) at each point's EDF under the weighing model
-  double discrepancy = 0.0;                 // relative standard deviation added to every point
-  Eigen::VectorXd edf;                      // 2 / relative variance of each estimate under the weighing model
+  Eigen::MatrixXd whitening;  // L^-1
+  Eigen::VectorXd log_bias;   // E ln(chi2_e / e) at each point's EDF under the weighing model
+  double discrepancy = 0.0;   // relative standard deviation added to every point
+  Eigen::VectorXd edf;        // 2 / relative variance of each estimate under the weighing model
 };
-
 
 // The weights under `model` (its relative covariance of the estimates, from `covariance`, which
 // holds the fit points' averaging factors, plus discrepancy^2 on the diagonal). A covariance
