@@ -114,7 +114,7 @@ void describe_model_terms(const SelectedModel& selected, const DataSpan& span,
     }
     estimate.selection_statistic = selected.removal_lr_statistics[i];
     estimate.selection_threshold = selected.removal_thresholds[i];
-    estimate.borderline = is_borderline(estimate.selection_statistic, estimate.selection_threshold);
+    estimate.borderline = is_borderline(estimate.selection_statistic, estimate.selection_threshold, true);
     if (!(estimate.amplitude.log_sigma <= fit->options.unconstrained_relative_sigma)) {
       estimate.status = TermStatus::kUnconstrained;
       estimate.amplitude.upper_bound =
@@ -278,7 +278,7 @@ void describe_absent_terms(const SelectedModel& selected, const DataSpan& span,
     if (addition != additions.end() && addition->outcome.usable) {
       estimate.selection_statistic = std::max(0.0, 2.0 * (selected.cost - addition->outcome.cost));
       estimate.selection_threshold = slot_lr_threshold(fit->options, slot, static_cast<int>(fit->points.size()));
-      estimate.borderline = is_borderline(estimate.selection_statistic, estimate.selection_threshold);
+      estimate.borderline = is_borderline(estimate.selection_statistic, estimate.selection_threshold, false);
     }
     fit->terms.push_back(estimate);
   }

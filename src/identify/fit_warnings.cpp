@@ -81,6 +81,29 @@ void warn_bias_instability(const FitResult& fit, std::vector<std::string>* warni
   }
 }
 
+// A term on the other side of its threshold from the decision was selected under a smaller
+// spread than the one it is reported under (doc/identification.md, "Model discrepancy").
+std::string borderline_warning(const TermEstimate& term, double discrepancy) {
+  const bool in_model = term.status != TermStatus::kAbsent;
+  const std::string statistic = format_number(term.selection_statistic);
+  const std::string threshold = format_number(term.selection_threshold);
+  std::string reason;
+  if (in_model && term.selection_statistic < term.selection_threshold) {
+    reason = "in the model, but under the weights reported its statistic " + statistic + " is below the threshold " +
+             threshold;
+    if (discrepancy > 0.0) {
+      reason += " (it was selected under a smaller spread than the " + format_number(100.0 * discrepancy) +
+                " % the model leaves)";
+    }
+  } else if (!in_model && term.selection_statistic > term.selection_threshold) {
+    reason = "left out, but under the weights reported its statistic " + statistic + " exceeds the threshold " +
+             threshold;
+  } else {
+    reason = "its selection statistic " + statistic + " is within a factor 2 of the threshold " + threshold;
+  }
+  return term.name + " is borderline: " + reason + "; another record may decide otherwise";
+}
+
 void warn_band(const FitResult& fit, std::vector<std::string>* warnings) {
   for (const BandExcursion& excursion : band_excursions(fit.band)) {
     const bool single = excursion.point_count == 1;
@@ -184,11 +207,7 @@ std::vector<std::string> fit_warnings(const FitResult& fit) {
       warnings.push_back(term.name + " is in the model but the data do not constrain it: report its upper bound " +
                          format_number(term.amplitude.upper_bound) + ", not its value");
     }
-    if (term.borderline) {
-      warnings.push_back(term.name + " is borderline: its selection statistic " +
-                         format_number(term.selection_statistic) + " is within a factor 2 of the threshold " +
-                         format_number(term.selection_threshold) + "; another record may decide otherwise");
-    }
+    if (term.borderline) warnings.push_back(borderline_warning(term, fit.quality.discrepancy));
   }
   return warnings;
 }

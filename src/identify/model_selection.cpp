@@ -333,8 +333,9 @@ void removal_statistics(const SelectionContext& context, SelectedModel* current)
 
 }  // namespace
 
-bool is_borderline(double statistic, double threshold) {
-  return std::isfinite(statistic) && statistic > 0.5 * threshold && statistic < 2.0 * threshold;
+bool is_borderline(double statistic, double threshold, bool in_model) {
+  if (!std::isfinite(statistic)) return false;
+  return in_model ? statistic < 2.0 * threshold : statistic > 0.5 * threshold;
 }
 
 std::vector<TermSlot> candidate_slots(const FitOptions& options, const DataSpan& span) {

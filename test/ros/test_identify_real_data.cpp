@@ -8,6 +8,8 @@
 // - no present term whose own partial curve exceeds the band's upper bound (the white rate
 //   noise, the floor of every model, can only do so where the total leaves the band, and that
 //   excursion is named);
+// - every decision its reported statistic contradicts (a term in the model below its threshold,
+//   one left out above it) marked borderline;
 // - unit 4's knocks near 4045 s and 5146 s listed in noise.yaml to within 1 s, none on 5 and 6;
 // - stability: with --points-per-decade 30 the same present terms (borderline ones excepted)
 //   and every value within one sigma of the default grid's.
@@ -51,6 +53,7 @@ struct AxisOutcome {
   double n_sigma = std::nan("");
   double psd_plateau_density = std::nan("");    // sqrt(PSD / 2), SI
   std::vector<std::string> partials_over_band;  // "term at tau"
+  std::vector<std::string> unflagged_contradictions;  // terms on the other side of their threshold
 };
 
 struct UnitOutcome {
@@ -164,6 +167,14 @@ UnitOutcome analyse_unit(int unit) {
     if (white[n_key + "_sigma"]) result.n_sigma = white[n_key + "_sigma"].as<double>();
     result.psd_plateau_density = plateaus[c];
 
+    for (const auto& term : axis["terms"]) {
+      const YAML::Node statistic = term.second["selection_statistic"];
+      if (!statistic || term.second["borderline"].as<bool>()) continue;
+      const bool in_model = term.second["status"].as<std::string>() != "absent";
+      const bool below = statistic.as<double>() < term.second["selection_threshold"].as<double>();
+      if (in_model == below) result.unflagged_contradictions.push_back(term.first.as<std::string>());
+    }
+
     // Present terms' partial curves against the band (noise_partial_<channel>.csv).
     const CsvTable partials = read_csv_table(report + "/noise_partial_" + channel + ".csv");
     const std::vector<double> taus = partials.column("tau_s");
@@ -212,6 +223,9 @@ TEST(IdentifyRealData, ThreeAdisUnitsAsAUserRunsThem) {
       EXPECT_NEAR(axis.n_value / axis.psd_plateau_density, 1.0, 0.10) << where;
       EXPECT_TRUE(axis.partials_over_band.empty())
           << where << ": " << (axis.partials_over_band.empty() ? "" : axis.partials_over_band[0]);
+      EXPECT_TRUE(axis.unflagged_contradictions.empty())
+          << where << ": " << (axis.unflagged_contradictions.empty() ? "" : axis.unflagged_contradictions[0])
+          << " is on the other side of its threshold and not marked borderline";
     }
   }
   EXPECT_GE(pooled_inside, 0.90 * pooled_points) << pooled_inside << " of " << pooled_points;

@@ -27,9 +27,11 @@ struct SelectionStep {
   double threshold = 0.0;     // chi2 quantile it was compared with
 };
 
-// A statistic within a factor 2 of its threshold (either side): the decision could have gone
-// the other way on another record.
-bool is_borderline(double statistic, double threshold);
+// A statistic within a factor 2 of its threshold (either side), or on the other side of it from
+// the decision (`in_model`: the term is in the selected model): the decision could have gone the
+// other way on another record. The other side happens where the selection admitted a term under
+// a smaller spread than the one its statistic is reported under (doc/identification.md).
+bool is_borderline(double statistic, double threshold, bool in_model);
 
 struct SelectedModel {
   ModelStructure structure;  // canonical order
