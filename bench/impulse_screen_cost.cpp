@@ -1,7 +1,8 @@
-// What the impulse screen and the output-step detector cost beside the streaming Allan engine, in
-// one run on the same samples: one hour of six channels at 400 Hz from the emulator (a MEMS-like
-// triad pair at rest, outputs quantised), generated first, then fed (1) to the engine alone with
-// push_block in the allan tool's batches, (2) to the screen alone, (3) to the step detector alone.
+// What the impulse screen, the level-shift screen and the output-step detector cost beside the
+// streaming Allan engine, in one run on the same samples: one hour of six channels at 400 Hz from
+// the emulator (a MEMS-like triad pair at rest, outputs quantised), generated first, then fed (1)
+// to the engine alone with push_block in the allan tool's batches, (2) to the impulse screen
+// alone, (3) to the level-shift screen alone (in those batches), (4) to the step detector alone.
 // Prints the CPU time per sample of each and the ratios to the engine. Not a test.
 //   bench/impulse_screen_cost [seconds=3600] [rate_hz=400]
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "imu_lab/allan/impulse_screen.h"
+#include "imu_lab/allan/level_shift_screen.h"
 #include "imu_lab/allan/output_step.h"
 #include "imu_lab/allan/streaming_allan.h"
 #include "imu_lab/emulator/sensor_channel.h"
@@ -74,18 +76,36 @@ int main(int argc, char** argv) {
   screen.finish(passed);
   const double screen_s = cpu_s() - start;
 
+  imu_lab::allan::LevelShiftScreen shift_screen{imu_lab::allan::LevelShiftScreenOptions()};
+  imu_lab::allan::ScreenedSamples batch;
+  imu_lab::allan::ScreenedSamples unshifted;
+  start = cpu_s();
+  for (std::size_t k = 0; k < count; k += kBatchSamples) {
+    const std::size_t size = std::min(kBatchSamples, count - k);
+    batch.clear();
+    batch.stamps_ns.assign(stamps_ns.begin() + k, stamps_ns.begin() + k + size);
+    batch.values.assign(values.begin() + k * kChannels, values.begin() + (k + size) * kChannels);
+    shift_screen.push(batch, unshifted);
+    unshifted.clear();
+  }
+  shift_screen.finish(unshifted);
+  const double shift_screen_s = cpu_s() - start;
+
   imu_lab::allan::OutputStepDetector steps(kChannels);
   start = cpu_s();
   for (std::size_t k = 0; k < count; ++k) steps.push(&values[k * kChannels]);
   const double steps_s = cpu_s() - start;
 
   const double per_sample_us = 1e6 / static_cast<double>(count);
-  std::printf("%zu samples of %zu channels (%.0f s at %.0f Hz); %lld events, %zu OADEV points on gyro x\n", count,
-              kChannels, seconds, rate_hz, static_cast<long long>(screen.report().event_count),
+  std::printf("%zu samples of %zu channels (%.0f s at %.0f Hz); %lld events, %lld shifts, %zu OADEV points on gyro x\n",
+              count, kChannels, seconds, rate_hz, static_cast<long long>(screen.report().event_count),
+              static_cast<long long>(shift_screen.report().event_count),
               snapshot.curve(imu_lab::allan::Statistic::kOverlappingAllan, 0).size());
   std::printf("engine (push_block)    CPU %7.3f s  %.3f us/sample\n", engine_s, engine_s * per_sample_us);
   std::printf("impulse screen         CPU %7.3f s  %.3f us/sample  = %.3f of the engine\n", screen_s,
               screen_s * per_sample_us, screen_s / engine_s);
+  std::printf("level-shift screen     CPU %7.3f s  %.3f us/sample  = %.3f of the engine\n", shift_screen_s,
+              shift_screen_s * per_sample_us, shift_screen_s / engine_s);
   std::printf("output-step detector   CPU %7.3f s  %.3f us/sample  = %.3f of the engine\n", steps_s,
               steps_s * per_sample_us, steps_s / engine_s);
   return 0;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/robust_statistics.h"
 #include "imu_lab/common/stamps.h"
 #include "imu_lab/common/usable_imu_values.h"
 
@@ -15,14 +16,6 @@ namespace {
 
 void require(bool condition, const char* key, const std::string& problem) {
   if (!condition) throw ConfigError("ImpulseScreenOptions", key, problem);
-}
-
-// E[min(z^2, c^2)] for a standard normal z: the clipped mean square divided by it is a consistent
-// variance (0.99501 at c = 3).
-double clipped_gaussian_second_moment(double c) {
-  const double tail = std::erfc(c / std::sqrt(2.0));  // P(|z| > c)
-  const double density = std::exp(-0.5 * c * c) / std::sqrt(2.0 * M_PI);
-  return (1.0 - tail) - 2.0 * c * density + c * c * tail;
 }
 
 const double kClippedMoment = clipped_gaussian_second_moment(kScaleClipSigma);
@@ -57,7 +50,8 @@ void ImpulseScreenOptions::validate() const {
           "must be above 1 (the engine's, 1.5 is usual)");
 }
 
-ImpulseScreen::ImpulseScreen(const ImpulseScreenOptions& options) : options_(options) {
+ImpulseScreen::ImpulseScreen(const ImpulseScreenOptions& options)
+    : options_(options), counts_(options.enabled, options.threshold_sigma) {
   options_.validate();
   channel_count_ = options_.channel_count;
   guard_before_ns_ = stamp_ns_from_seconds(options_.guard_before_s);
@@ -81,14 +75,7 @@ ImpulseScreen::ImpulseScreen(const ImpulseScreenOptions& options) : options_(opt
 }
 
 void ImpulseScreen::push(std::int64_t stamp_ns, const double* values, ScreenedSamples& passed) {
-  if (input_count_ == 0) first_stamp_ns_ = stamp_ns;
-  ++input_count_;
-  if (!options_.enabled) {
-    passed.stamps_ns.push_back(stamp_ns);
-    passed.values.insert(passed.values.end(), values, values + channel_count_);
-    ++passed_count_;
-    return;
-  }
+  if (passed_unscreened(options_.enabled, stamp_ns, values, channel_count_, counts_, passed)) return;
   level_and_deviation(values, scratch_deviations_.data());
   line_push(stamp_ns, values, scratch_deviations_.data());
   if (!scales_ready_) {
@@ -271,7 +258,7 @@ void ImpulseScreen::open_window(std::size_t i) {
   if (near_last) {
     // One event with the last one: reopen it and drop what lies between.
     if (window_.recorded) events_.pop_back();
-    --event_count_;
+    --counts_.event_count;
     start = static_cast<std::size_t>(window_.last_sequence + 1 - front_sequence_);
   } else {
     window_.event = ImpulseEvent();
@@ -319,7 +306,7 @@ ImpulseEvent ImpulseScreen::window_event() const {
 void ImpulseScreen::close_window() {
   window_.recorded = events_.size() < options_.max_recorded_events;
   if (window_.recorded) events_.push_back(window_event());
-  ++event_count_;
+  ++counts_.event_count;
   window_open_ = false;
 }
 
@@ -334,7 +321,7 @@ void ImpulseScreen::release(bool all, ScreenedSamples& passed) {
       passed.stamps_ns.push_back(line_stamps_ns_[index]);
       passed.values.insert(passed.values.end(), line_values_.begin() + index * channel_count_,
                            line_values_.begin() + (index + 1) * channel_count_);
-      ++passed_count_;
+      ++counts_.passed_sample_count;
     }
     line_head_ = (line_head_ + 1) & (line_capacity_ - 1);
     --line_size_;
@@ -344,21 +331,10 @@ void ImpulseScreen::release(bool all, ScreenedSamples& passed) {
 }
 
 ImpulseScreenReport ImpulseScreen::report() const {
-  ImpulseScreenReport report;
-  report.enabled = options_.enabled;
-  report.threshold_sigma = options_.threshold_sigma;
-  report.input_sample_count = input_count_;
-  report.passed_sample_count = passed_count_;
-  report.dropped_sample_count = dropped_count_;
-  report.event_count = event_count_;
-  report.first_stamp_ns = first_stamp_ns_;
-  report.events = events_;
   // An event still open is reported as it stands (its window may still grow).
-  if (window_open_) {
-    ++report.event_count;
-    if (report.events.size() < options_.max_recorded_events) report.events.push_back(window_event());
-  }
-  for (const ChannelState& channel : channels_) report.channel_scales.push_back(std::sqrt(channel.mean_square));
+  auto report = screen_report<ImpulseScreenReport>(
+      counts_, channels_, events_, window_open_, [this] { return window_event(); }, options_.max_recorded_events);
+  report.dropped_sample_count = dropped_count_;
   return report;
 }
 

@@ -246,6 +246,31 @@ void emit_events(YAML::Emitter& out, const ReportMetadata& metadata) {
   }
   out << YAML::EndMap;
 }
+
+void emit_level_shifts(YAML::Emitter& out, const ReportMetadata& metadata) {
+  out << YAML::Key << "level_shifts" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "screened" << YAML::Value << metadata.level_shifts_screened;
+  if (metadata.level_shifts_screened) {
+    out << YAML::Key << "count" << YAML::Value << metadata.level_shift_count;
+    out << YAML::Key << "effect" << YAML::Value
+        << "the stepping triad's samples around each step were left out and its record split there: the step "
+           "lies between two pooled segments, so the curves and this fit never saw it";
+    out << YAML::Key << "listed" << YAML::Value << YAML::BeginSeq;
+    for (const ReportLevelShift& shift : metadata.level_shifts) {
+      out << YAML::Flow << YAML::BeginMap;
+      emit_number(out, "step_s", shift.step_s);
+      emit_number(out, "window_start_s", shift.window_start_s);
+      emit_number(out, "window_end_s", shift.window_end_s);
+      out << YAML::Key << "peak_channel" << YAML::Value << shift.peak_channel;
+      emit_number(out, "peak_sigma", shift.peak_sigma);
+      for (const auto& step : shift.shifts) emit_number(out, "shift_" + step.first, step.second);
+      out << YAML::Key << "masked_samples" << YAML::Value << shift.masked_samples;
+      out << YAML::EndMap;
+    }
+    out << YAML::EndSeq;
+  }
+  out << YAML::EndMap;
+}
 }  // namespace
 
 std::string format_noise_report(const std::vector<TriadFit>& triads, const ReportMetadata& metadata) {
@@ -263,6 +288,7 @@ std::string format_noise_report(const std::vector<TriadFit>& triads, const Repor
   out << YAML::Key << "source" << YAML::Value << metadata.source;
   emit_number(out, "update_rate_hz", metadata.update_rate_hz);
   emit_events(out, metadata);
+  emit_level_shifts(out, metadata);
   out << YAML::Key << "triads" << YAML::Value << YAML::BeginMap;
   for (const TriadFit& triad : triads) {
     out << YAML::Key << sensor_prefix(triad.sensor) << YAML::Value << YAML::BeginMap;

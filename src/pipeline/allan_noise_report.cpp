@@ -83,6 +83,25 @@ identify::ReportMetadata report_metadata(const AllanRunDescription& run, const a
     listed.dropped_samples = event.dropped_sample_count;
     metadata.events.push_back(listed);
   }
+  const allan::LevelShiftReport& shifts = run.level_shifts;
+  metadata.level_shifts_screened = shifts.enabled;
+  metadata.level_shift_count = shifts.event_count;
+  for (const allan::LevelShiftEvent& shift : shifts.events) {
+    identify::ReportLevelShift listed;
+    listed.step_s = seconds_from(shift.step_stamp_ns, shifts.first_stamp_ns);
+    listed.window_start_s = seconds_from(shift.start_stamp_ns, shifts.first_stamp_ns);
+    listed.window_end_s = seconds_from(shift.end_stamp_ns, shifts.first_stamp_ns);
+    listed.peak_channel = shift.peak_channel < kAllanChannelCount ? kAllanChannelNames[shift.peak_channel] : "";
+    listed.peak_sigma = shift.peak_sigma;
+    for (const allan::LevelShiftChannel& channel : shift.channels) {
+      if (channel.channel >= kAllanChannelCount) continue;
+      listed.shifts.emplace_back(
+          std::string(kAllanChannelNames[channel.channel]) + "_" + allan_value_unit(run.input, channel.channel),
+          channel.shift);
+    }
+    listed.masked_samples = shift.masked_sample_count;
+    metadata.level_shifts.push_back(listed);
+  }
   return metadata;
 }
 

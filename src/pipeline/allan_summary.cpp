@@ -60,11 +60,15 @@ void emit_channels(YAML::Emitter& out, const AllanRunDescription& run, const all
   for (std::size_t c = 0; c < snapshot.channels.size() && c < kAllanChannelCount; ++c) {
     const allan::ChannelReport& report = snapshot.channels[c];
     const std::string unit = kAllanChannelUnits[c];
-    non_finite_total += report.non_finite_count;
+    // The values the level-shift screen set to NaN are its own, not the input's.
+    const std::int64_t masked =
+        c < run.level_shifts.channel_masked_counts.size() ? run.level_shifts.channel_masked_counts[c] : 0;
+    non_finite_total += report.non_finite_count - masked;
     out << YAML::Key << kAllanChannelNames[c] << YAML::Value << YAML::BeginMap;
     out << YAML::Key << "offset_" + unit << YAML::Value << report.offset * offset_scale;
     out << YAML::Key << "finite_samples" << YAML::Value << report.finite_sample_count;
-    out << YAML::Key << "non_finite_samples" << YAML::Value << report.non_finite_count;
+    out << YAML::Key << "non_finite_samples" << YAML::Value << report.non_finite_count - masked;
+    if (masked > 0) out << YAML::Key << "level_shift_masked_samples" << YAML::Value << masked;
     out << YAML::Key << "segments" << YAML::Value << report.segment_count;
     if (c < run.output_steps.size()) {
       // The output's LSB (0: not quantised), in the unit of the values read.
@@ -103,6 +107,58 @@ void emit_impulse_event(YAML::Emitter& out, const allan::ImpulseEvent& event, st
   out << YAML::EndMap;
   out << YAML::Key << "flagged_samples" << YAML::Value << event.flagged_sample_count;
   out << YAML::Key << "dropped_samples" << YAML::Value << event.dropped_sample_count;
+  out << YAML::EndMap;
+}
+
+void emit_level_shift(YAML::Emitter& out, AllanInput input, const allan::LevelShiftEvent& shift,
+                      std::int64_t first_stamp_ns) {
+  const auto from_start_s = [&](std::int64_t stamp_ns) { return seconds_between(first_stamp_ns, stamp_ns); };
+  out << YAML::BeginMap;
+  out << YAML::Key << "step_from_start_s" << YAML::Value << from_start_s(shift.step_stamp_ns);
+  out << YAML::Key << "window_from_start_s" << YAML::Value << YAML::Flow << YAML::BeginSeq
+      << from_start_s(shift.start_stamp_ns) << from_start_s(shift.end_stamp_ns) << YAML::EndSeq;
+  out << YAML::Key << "step_stamp_ns" << YAML::Value << shift.step_stamp_ns;
+  out << YAML::Key << "window_stamps_ns" << YAML::Value << YAML::Flow << YAML::BeginSeq << shift.start_stamp_ns
+      << shift.end_stamp_ns << YAML::EndSeq;
+  out << YAML::Key << "peak_channel" << YAML::Value << kAllanChannelNames.at(shift.peak_channel);
+  out << YAML::Key << "peak_sigma" << YAML::Value << shift.peak_sigma;
+  out << YAML::Key << "shifts" << YAML::Value << YAML::Flow << YAML::BeginMap;
+  for (const allan::LevelShiftChannel& channel : shift.channels) {
+    out << YAML::Key
+        << std::string(kAllanChannelNames.at(channel.channel)) + "_" + allan_value_unit(input, channel.channel)
+        << YAML::Value << channel.shift;
+  }
+  out << YAML::EndMap;
+  out << YAML::Key << "masked_channels" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+  for (std::size_t c : shift.masked_channels) out << kAllanChannelNames.at(c);
+  out << YAML::EndSeq;
+  out << YAML::Key << "masked_samples" << YAML::Value << shift.masked_sample_count;
+  out << YAML::EndMap;
+}
+
+void emit_level_shifts(YAML::Emitter& out, const AllanRunDescription& run) {
+  const allan::LevelShiftReport& screen = run.level_shifts;
+  out << YAML::Key << "level_shift_screen" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "enabled" << YAML::Value << screen.enabled;
+  if (screen.enabled) {
+    out << YAML::Key << "threshold_sigma" << YAML::Value << screen.threshold_sigma;
+    out << YAML::Key << "window_s" << YAML::Value << screen.window_s;
+    out << YAML::Key << "masked_samples" << YAML::Value << screen.masked_sample_count;
+    emit_irregularity(out, "shifts", screen.event_count,
+                      "the stepping triad's values around each step set to NaN: its channels' runs split there, "
+                      "the segments' sums pooled (counted here, not under non_finite_values)");
+    out << YAML::Key << "difference_scales" << YAML::Value << YAML::BeginMap;
+    for (std::size_t c = 0; c < screen.channel_scales.size() && c < kAllanChannelCount; ++c) {
+      out << YAML::Key << std::string(kAllanChannelNames[c]) + "_" + allan_value_unit(run.input, c) << YAML::Value
+          << screen.channel_scales[c];
+    }
+    out << YAML::EndMap;
+    out << YAML::Key << "listed_shifts" << YAML::Value << YAML::BeginSeq;
+    for (const allan::LevelShiftEvent& shift : screen.events) {
+      emit_level_shift(out, run.input, shift, screen.first_stamp_ns);
+    }
+    out << YAML::EndSeq;
+  }
   out << YAML::EndMap;
 }
 
@@ -176,6 +232,7 @@ std::string format_allan_summary(const AllanRunDescription& run, const allan::St
   }
   emit_timing(out, snapshot.timing, run.engine.stamp_policy == allan::StampPolicy::kStop);
   emit_impulses(out, run);
+  emit_level_shifts(out, run);
   emit_channels(out, run, snapshot);
   if (run.warm_up) {
     out << YAML::Key << "warm_up_removed" << YAML::Value
@@ -223,6 +280,37 @@ std::string format_impulse_events(const std::string& prefix, const allan::Impuls
   if (screen.event_count > static_cast<std::int64_t>(screen.events.size())) {
     text += prefix + "  and " + std::to_string(screen.event_count - static_cast<std::int64_t>(screen.events.size())) +
             " more events (counted, not listed)\n";
+  }
+  return text;
+}
+
+std::string format_level_shifts(const std::string& prefix, AllanInput input, const allan::LevelShiftReport& screen) {
+  if (!screen.enabled) return prefix + "level-shift screen off: steps in the level, if any, are in the curves\n";
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "level-shift screen (%.3g s windows, threshold %.3g scales): %lld shifts, %lld samples masked%s\n",
+                screen.window_s, screen.threshold_sigma, static_cast<long long>(screen.event_count),
+                static_cast<long long>(screen.masked_sample_count),
+                screen.event_count > 0 ? "; the stepping triad's runs are split at each" : "");
+  std::string text = prefix + line;
+  const auto from_start_s = [&](std::int64_t stamp_ns) { return seconds_between(screen.first_stamp_ns, stamp_ns); };
+  for (std::size_t i = 0; i < screen.events.size(); ++i) {
+    const allan::LevelShiftEvent& shift = screen.events[i];
+    std::snprintf(line, sizeof line,
+                  "  shift %zu: step at %.2f s from the start (stamp %.9f s), masked %.2f-%.2f s:", i + 1,
+                  from_start_s(shift.step_stamp_ns), seconds_from_stamp_ns(shift.step_stamp_ns),
+                  from_start_s(shift.start_stamp_ns), from_start_s(shift.end_stamp_ns));
+    text += prefix + line;
+    for (const allan::LevelShiftChannel& channel : shift.channels) {
+      std::snprintf(line, sizeof line, " %s %.4g %s (%.1f scales)", kAllanChannelNames.at(channel.channel),
+                    channel.shift, allan_value_unit(input, channel.channel), channel.peak_sigma);
+      text += line;
+    }
+    text += "\n";
+  }
+  if (screen.event_count > static_cast<std::int64_t>(screen.events.size())) {
+    text += prefix + "  and " + std::to_string(screen.event_count - static_cast<std::int64_t>(screen.events.size())) +
+            " more shifts (counted, not listed)\n";
   }
   return text;
 }

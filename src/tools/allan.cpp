@@ -37,6 +37,8 @@ void print_summary(const imu_lab::ros_io::AllanBagPassResult& result, const imu_
   }
   long long non_finite = 0;
   for (const auto& channel : result.snapshot.channels) non_finite += channel.non_finite_count;
+  // The level-shift screen's NaNs are its own, reported with it.
+  for (const std::int64_t masked : result.level_shifts.channel_masked_counts) non_finite -= masked;
   if (timing.gap_count + timing.duplicate_count + timing.out_of_order_count + non_finite > 0) {
     std::printf(
         "allan: irregular input (split and pooled / dropped, see allan_summary.yaml): %lld gaps (%.6g s), "
@@ -55,6 +57,7 @@ void print_summary(const imu_lab::ros_io::AllanBagPassResult& result, const imu_
     }
   }
   std::printf("%s", imu_lab::pipeline::format_impulse_events("allan: ", result.impulses).c_str());
+  std::printf("%s", imu_lab::pipeline::format_level_shifts("allan: ", result.input, result.level_shifts).c_str());
   if (result.warm_up) {
     std::printf("allan: warm-up removed (warm_up.yaml):\n%s",
                 imu_lab::pipeline::format_warm_up_lines("allan:   ", result.input, *result.warm_up).c_str());
@@ -112,6 +115,17 @@ int main(int argc, char** argv) {
   app.add_option("--impulse-threshold", options.screen.threshold_sigma,
                  "a sample deviating from its local level by more than this many robust scales is a knock or spike")
       ->capture_default_str();
+  bool no_level_shift_screen = false;
+  app.add_flag("--no-level-shift-screen", no_level_shift_screen,
+               "keep steps in the level (a tilt, a bias jump) in the curves (by default each is reported and the "
+               "samples around it dropped, which splits the run there)");
+  app.add_option("--level-shift-threshold", options.level_shifts.threshold_sigma,
+                 "a difference of the means of --level-shift-window-s before and after a sample above this many "
+                 "robust scales is a step")
+      ->capture_default_str();
+  app.add_option("--level-shift-window-s", options.level_shifts.window_s,
+                 "each side's window of the level-shift screen [s]")
+      ->capture_default_str();
   app.add_flag("--remove-warm-up", options.warm_up.enabled,
                "fit each channel's power-on warm-up (constant + up to --warm-up-terms exponentials, on block means) "
                "and remove it before the analysis; the models, sigmas and the trend left go to warm_up.yaml");
@@ -142,6 +156,7 @@ int main(int argc, char** argv) {
   options.input = imu_lab::pipeline::parse_allan_input("--input", input);
   identify.enabled = !no_identify;
   options.screen.enabled = !no_impulse_screen;
+  options.level_shifts.enabled = !no_level_shift_screen;
   engine.stamp_policy =
       on_gap == "stop" ? imu_lab::allan::StampPolicy::kStop : imu_lab::allan::StampPolicy::kSplitAndPool;
 
@@ -150,6 +165,12 @@ int main(int argc, char** argv) {
     imu_lab::pipeline::check_warm_up_options(options.warm_up);
     if (!(options.screen.threshold_sigma > imu_lab::allan::kScaleClipSigma)) {
       throw imu_lab::ConfigError("allan", "--impulse-threshold", "must be a number of scales above 3 (default 12)");
+    }
+    if (!(options.level_shifts.threshold_sigma > imu_lab::allan::kLevelShiftClipSigma)) {
+      throw imu_lab::ConfigError("allan", "--level-shift-threshold", "must be a number of scales above 3 (default 10)");
+    }
+    if (!(options.level_shifts.window_s > 0.0 && options.level_shifts.window_s <= 300.0)) {
+      throw imu_lab::ConfigError("allan", "--level-shift-window-s", "must lie above 0 and at most 300 s (default 10)");
     }
     options.on_progress = imu_lab::terminal_progress("allan", "messages", progress);
     const auto result = imu_lab::ros_io::run_allan_bag_pass(recording.recording(), options);
@@ -162,6 +183,7 @@ int main(int argc, char** argv) {
     run.input = result.input;
     run.engine = result.engine;
     run.impulses = result.impulses;
+    run.level_shifts = result.level_shifts;
     run.output_steps = result.output_steps;
     run.warm_up = result.warm_up;
     const auto files = imu_lab::ros_io::write_allan_report(out_directory, run, result.snapshot, !no_plot, identify);

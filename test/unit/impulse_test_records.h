@@ -5,8 +5,12 @@
 // over a record.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <cstdint>
 #include <vector>
 
@@ -63,6 +67,21 @@ inline Record emulate_static_record(double duration_s, double rate_hz, std::uint
     for (int axis = 0; axis < 3; ++axis) record.values.push_back(force[axis]);
   }
   return record;
+}
+
+// The screens' clean records: two hours at 100 Hz (seed 1) and one at 400 Hz (seed 2), each handed
+// to `check` with a description of it.
+template <typename Check>
+void for_each_clean_record(Check check) {
+  struct Case {
+    double rate_hz;
+    double duration_s;
+    std::uint64_t seed;
+  };
+  for (const Case& run : {Case{100.0, 7200.0, 1}, Case{400.0, 3600.0, 2}}) {
+    check(emulate_static_record(run.duration_s, run.rate_hz, run.seed),
+          std::to_string(run.rate_hz) + " Hz, seed " + std::to_string(run.seed));
+  }
 }
 
 // Per channel the standard deviation of one sample's difference from the previous one, over
@@ -130,6 +149,38 @@ inline allan::StreamingSnapshot engine_snapshot(const std::vector<std::int64_t>&
   allan::StreamingAllan engine(engine_options(confidence));
   engine.push_block(stamps_ns.data(), values.data(), stamps_ns.size());
   return engine.snapshot();
+}
+
+// The clean record's OADEV lies within the confidence interval of the screened record's at every
+// tau of every channel (each interval at 1 - 0.01 / points: Bonferroni, 99 % family-wise), checked
+// here; returns at how many points the unscreened record's OADEV leaves the clean curve's interval
+// of the same confidence (same data, same EDF), which shows that the agreement is the screen's.
+inline int expect_screened_curve_like_clean(const Record& clean, const allan::ScreenedSamples& screened,
+                                            const Record& unscreened) {
+  const std::size_t points =
+      kChannels * engine_snapshot(clean.stamps_ns, clean.values).curve(allan::Statistic::kOverlappingAllan, 0).size();
+  const double confidence = 1.0 - 0.01 / static_cast<double>(points);
+  const auto reference_snapshot = engine_snapshot(clean.stamps_ns, clean.values, confidence);
+  const auto screened_snapshot = engine_snapshot(screened.stamps_ns, screened.values, confidence);
+  const auto unscreened_snapshot = engine_snapshot(unscreened.stamps_ns, unscreened.values, confidence);
+  int unscreened_outside = 0;
+  for (std::size_t c = 0; c < kChannels; ++c) {
+    const auto& reference = reference_snapshot.curve(allan::Statistic::kOverlappingAllan, c);
+    const auto& after = screened_snapshot.curve(allan::Statistic::kOverlappingAllan, c);
+    const auto& before = unscreened_snapshot.curve(allan::Statistic::kOverlappingAllan, c);
+    EXPECT_EQ(after.size(), reference.size());
+    EXPECT_EQ(before.size(), reference.size());
+    for (std::size_t i = 0; i < reference.size() && i < after.size() && i < before.size(); ++i) {
+      const auto& point = reference[i];
+      EXPECT_GE(point.deviation, after[i].deviation_lower) << "channel " << c << " tau " << point.tau_s;
+      EXPECT_LE(point.deviation, after[i].deviation_upper) << "channel " << c << " tau " << point.tau_s;
+      if (before[i].deviation < point.deviation_lower || before[i].deviation > point.deviation_upper) {
+        ++unscreened_outside;
+      }
+    }
+  }
+  std::printf("unscreened: %d of %zu OADEV points outside the clean curve's interval\n", unscreened_outside, points);
+  return unscreened_outside;
 }
 
 }  // namespace impulse_test

@@ -53,15 +53,9 @@ std::array<double, kChannels> level_deviation_sigma(const Record& record, std::s
 // about their noise). The scale itself must be that of the deviation, LSB or not: within 2 % of
 // its plain standard deviation (about 20 times the estimate's own sampling error).
 TEST(ImpulseScreen, CleanQuantisedRecordsRaiseNoEventForHours) {
-  struct Case {
-    double rate_hz;
-    double duration_s;
-    std::uint64_t seed;
-  };
-  for (const Case& run : {Case{100.0, 7200.0, 1}, Case{400.0, 3600.0, 2}}) {
-    const Record record = emulate_static_record(run.duration_s, run.rate_hz, run.seed);
+  impulse_test::for_each_clean_record([](const Record& record, const std::string& where) {
     const auto result = screen(record);
-    EXPECT_EQ(result.report.event_count, 0) << run.rate_hz << " Hz, seed " << run.seed;
+    EXPECT_EQ(result.report.event_count, 0) << where;
     EXPECT_EQ(result.report.dropped_sample_count, 0);
     EXPECT_EQ(result.passed.size(), record.size());
     EXPECT_EQ(result.passed.stamps_ns, record.stamps_ns);
@@ -69,10 +63,10 @@ TEST(ImpulseScreen, CleanQuantisedRecordsRaiseNoEventForHours) {
     const auto expected = level_deviation_sigma(record, ImpulseScreenOptions().level_sample_count);
     for (std::size_t c = 0; c < kChannels; ++c) {
       EXPECT_NEAR(result.report.channel_scales[c] / expected[c], 1.0, 0.02)
-          << "channel " << c << " at " << run.rate_hz << " Hz: scale " << result.report.channel_scales[c]
-          << ", deviation sigma " << expected[c];
+          << "channel " << c << ", " << where << ": scale " << result.report.channel_scales[c] << ", deviation sigma "
+          << expected[c];
     }
-  }
+  });
 }
 
 // One hour at 200 Hz with four disturbances: a knock ringing in accelerometer z and gyro x, a
@@ -189,33 +183,7 @@ TEST_F(KnockedRecord, TheEngineStartsASegmentAtEveryEvent) {
 // put the knocked curve outside the clean curve's interval of the same confidence (same data,
 // same EDF) at many taus, so the agreement is the screen's doing.
 TEST_F(KnockedRecord, AllanCurveAfterScreeningAgreesWithTheCleanRecord) {
-  const std::size_t points = kChannels * impulse_test::engine_snapshot(clean_->stamps_ns, clean_->values)
-                                             .curve(allan::Statistic::kOverlappingAllan, 0)
-                                             .size();
-  const double confidence = 1.0 - 0.01 / static_cast<double>(points);
-  const auto clean = impulse_test::engine_snapshot(clean_->stamps_ns, clean_->values, confidence);
-  const auto result = screen(*knocked_);
-  const auto screened = impulse_test::engine_snapshot(result.passed.stamps_ns, result.passed.values, confidence);
-  const auto unscreened = impulse_test::engine_snapshot(knocked_->stamps_ns, knocked_->values, confidence);
-  int unscreened_outside = 0;
-  for (std::size_t c = 0; c < kChannels; ++c) {
-    const auto& reference = clean.curve(allan::Statistic::kOverlappingAllan, c);
-    const auto& after = screened.curve(allan::Statistic::kOverlappingAllan, c);
-    const auto& before = unscreened.curve(allan::Statistic::kOverlappingAllan, c);
-    ASSERT_EQ(after.size(), reference.size());
-    ASSERT_EQ(before.size(), reference.size());
-    for (std::size_t i = 0; i < reference.size(); ++i) {
-      const auto& point = reference[i];
-      EXPECT_GE(point.deviation, after[i].deviation_lower) << "channel " << c << " tau " << point.tau_s;
-      EXPECT_LE(point.deviation, after[i].deviation_upper) << "channel " << c << " tau " << point.tau_s;
-      if (before[i].deviation < point.deviation_lower || before[i].deviation > point.deviation_upper) {
-        ++unscreened_outside;
-      }
-    }
-  }
-  std::printf("knocked record, unscreened: %d of %zu OADEV points outside the clean curve's interval\n",
-              unscreened_outside, points);
-  EXPECT_GT(unscreened_outside, 20);
+  EXPECT_GT(impulse_test::expect_screened_curve_like_clean(*clean_, screen(*knocked_).passed, *knocked_), 20);
 }
 
 TEST_F(KnockedRecord, ThresholdOptionDecidesWhatIsAnEvent) {

@@ -25,6 +25,7 @@
 // and leaves duplicate or out-of-order stamps to the engine.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -88,18 +89,47 @@ struct ImpulseEvent {
   std::vector<ImpulseChannelPeak> channels;  // the channels over the threshold, ascending index
 };
 
-struct ImpulseScreenReport {
+// What a screen before the engine counts of its run (this one and level_shift_screen.h's).
+struct ScreenCounts {
   bool enabled = false;
   double threshold_sigma = 0.0;
   std::int64_t input_sample_count = 0;
-  std::int64_t passed_sample_count = 0;   // handed to the engine
-  std::int64_t dropped_sample_count = 0;  // in event windows
-  std::int64_t event_count = 0;           // all events, also those beyond max_recorded_events
-  std::int64_t first_stamp_ns = 0;        // of the input, for stamps relative to its start
-  std::vector<ImpulseEvent> events;       // the first max_recorded_events, in time order
-  // Per channel the scale of the deviation from the level (the channel's units); 0 until
-  // estimated (and for a channel that has not varied).
+  std::int64_t passed_sample_count = 0;  // handed on
+  std::int64_t event_count = 0;          // closed events (a report adds an open one)
+  std::int64_t first_stamp_ns = 0;       // of the input, for stamps relative to its start
+  // Per channel the scale of the screened statistic (the channel's units); 0 until estimated
+  // (and for a channel that has not varied). Filled by report().
   std::vector<double> channel_scales;
+
+  ScreenCounts() = default;
+  ScreenCounts(bool screen_enabled, double screen_threshold_sigma)
+      : enabled(screen_enabled), threshold_sigma(screen_threshold_sigma) {}
+
+  void count_input(std::int64_t stamp_ns) {
+    if (input_sample_count++ == 0) first_stamp_ns = stamp_ns;
+  }
+};
+
+// A report's common part (Report derives from ScreenCounts and lists `events`): the counts, the
+// scale per channel from each channel state's mean_square, and the recorded events with, while
+// one is open, that one as it stands (counted, and listed while there is room below max_recorded).
+template <typename Report, typename Channels, typename Events, typename AsItStands>
+Report screen_report(const ScreenCounts& counts, const Channels& channels, const Events& events, bool open,
+                     AsItStands as_it_stands, std::size_t max_recorded) {
+  Report report;
+  static_cast<ScreenCounts&>(report) = counts;
+  for (const auto& channel : channels) report.channel_scales.push_back(std::sqrt(channel.mean_square));
+  report.events = events;
+  if (open) {
+    ++report.event_count;
+    if (report.events.size() < max_recorded) report.events.push_back(as_it_stands());
+  }
+  return report;
+}
+
+struct ImpulseScreenReport : ScreenCounts {
+  std::int64_t dropped_sample_count = 0;  // in event windows
+  std::vector<ImpulseEvent> events;       // the first max_recorded_events, in time order
 };
 
 // The samples that passed, in input order, row-major like StreamingAllan::push_block wants.
@@ -113,6 +143,17 @@ struct ScreenedSamples {
     values.clear();
   }
 };
+
+// Counts one input sample; a screen that is off passes it at once and says so (true).
+inline bool passed_unscreened(bool enabled, std::int64_t stamp_ns, const double* values, std::size_t channel_count,
+                              ScreenCounts& counts, ScreenedSamples& passed) {
+  counts.count_input(stamp_ns);
+  if (enabled) return false;
+  passed.stamps_ns.push_back(stamp_ns);
+  passed.values.insert(passed.values.end(), values, values + channel_count);
+  ++counts.passed_sample_count;
+  return true;
+}
 
 class ImpulseScreen {
  public:
@@ -128,7 +169,7 @@ class ImpulseScreen {
 
   ImpulseScreenReport report() const;
   // Events so far, an open one included (cheap; never decreases).
-  std::int64_t event_count() const { return event_count_ + (window_open_ ? 1 : 0); }
+  std::int64_t event_count() const { return counts_.event_count + (window_open_ ? 1 : 0); }
   const ImpulseScreenOptions& options() const { return options_; }
   // Samples pushed but not yet passed or dropped.
   std::size_t delayed_sample_count() const { return line_size_; }
@@ -191,15 +232,12 @@ class ImpulseScreen {
   std::vector<double> scratch_deviations_;
 
   bool scales_ready_ = false;
-  std::int64_t input_count_ = 0;
-  std::int64_t passed_count_ = 0;
+  ScreenCounts counts_;
   std::int64_t dropped_count_ = 0;
-  std::int64_t first_stamp_ns_ = 0;
 
   bool window_open_ = false;
   Window window_;
   std::vector<ImpulseEvent> events_;
-  std::int64_t event_count_ = 0;
 };
 
 }  // namespace allan

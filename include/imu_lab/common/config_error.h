@@ -18,6 +18,12 @@ class ConfigError : public std::runtime_error {
   std::string key_;
 };
 
+// Throws ConfigError(source, key, problem) unless `condition` holds: an options struct's check of
+// one field.
+inline void require_option(bool condition, const std::string& source, const char* key, const std::string& problem) {
+  if (!condition) throw ConfigError(source, key, problem);
+}
+
 // Bad data (as opposed to bad configuration): NaN runs, unordered stamps, truncated files...
 class InputError : public std::runtime_error {
  public:

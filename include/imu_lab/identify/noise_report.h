@@ -23,12 +23,27 @@ struct ReportEvent {
   long long dropped_samples = 0;
 };
 
+// A step in the level with no impulse (a tilt, a bias jump) found before the Allan pass: the
+// stepping triad's record was split there, so the step lies between two pooled segments.
+struct ReportLevelShift {
+  double step_s = 0.0;          // where the largest difference in scales lies, from the first stamp
+  double window_start_s = 0.0;  // the samples left out (of the stepping triad), from the first stamp
+  double window_end_s = 0.0;
+  std::string peak_channel;
+  double peak_sigma = 0.0;
+  std::vector<std::pair<std::string, double>> shifts;  // per channel over the threshold: key with unit, step
+  long long masked_samples = 0;
+};
+
 struct ReportMetadata {
   std::string source;            // bag or file the curves came from
   double update_rate_hz = 0.0;   // measured
   bool events_screened = false;  // whether a screen looked for events at all
   long long event_count = 0;     // all events (the list may be truncated)
   std::vector<ReportEvent> events;
+  bool level_shifts_screened = false;
+  long long level_shift_count = 0;
+  std::vector<ReportLevelShift> level_shifts;
 };
 
 // Key of a parameter in the report: "<symbol>_<unit>" (e.g. "N_deg_per_sqrt_h"), with suffix

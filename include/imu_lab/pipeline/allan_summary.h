@@ -1,6 +1,7 @@
 // The YAML summary of an Allan run (allan_summary.yaml): where the samples came from, the sample
 // period tau0 estimated from the stamps and its jitter, every stamp and value irregularity with
-// what the policy did about it, the impulse screen's events (knocks, spikes) with their stamps,
+// what the policy did about it, the impulse screen's events (knocks, spikes) and the level-shift
+// screen's steps with their stamps,
 // and per channel the offset, the output's step (LSB) and the minimum OADEV with its tau.
 #pragma once
 
@@ -9,6 +10,7 @@
 #include <string>
 
 #include "imu_lab/allan/impulse_screen.h"
+#include "imu_lab/allan/level_shift_screen.h"
 #include "imu_lab/allan/output_step.h"
 #include "imu_lab/allan/streaming_allan.h"
 #include "imu_lab/io/recording_window.h"
@@ -28,6 +30,7 @@ struct AllanRunDescription {
   allan::StreamingOptions engine;
   std::int64_t skipped_before_checkpoint = 0;          // live only: replayed samples a resumed node skipped
   allan::ImpulseScreenReport impulses;                 // the screen before the engine
+  allan::LevelShiftReport level_shifts;                // the screen after it, before the engine
   std::vector<allan::ChannelOutputStep> output_steps;  // per channel (empty: not watched)
   std::optional<AllanWarmUp> warm_up;                  // the transients removed first (allan --remove-warm-up)
 };
@@ -37,6 +40,8 @@ std::string format_allan_summary(const AllanRunDescription& run, const allan::St
 // Lines (each starting with `prefix`) for a person: the screen's verdict and one line per listed
 // event, its stamps from the input's first stamp and absolute, its channels and peaks.
 std::string format_impulse_events(const std::string& prefix, const allan::ImpulseScreenReport& screen);
+// The same for the level-shift screen: one line per listed shift, its step and sizes.
+std::string format_level_shifts(const std::string& prefix, AllanInput input, const allan::LevelShiftReport& screen);
 // "gyro_x 0.000872664626 rad_s, ..., accel_z none" (none: not quantised).
 std::string format_output_steps(AllanInput input, const std::vector<allan::ChannelOutputStep>& steps);
 

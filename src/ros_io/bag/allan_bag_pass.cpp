@@ -92,6 +92,10 @@ AllanBagPassResult run_allan_bag_pass(const BagRecording& recording, const Allan
   screen_options.channel_count = pipeline::kAllanChannelCount;
   screen_options.gap_factor = result.engine.gap_factor;
   allan::ImpulseScreen screen(screen_options);
+  allan::LevelShiftScreenOptions shift_options = options.level_shifts;
+  shift_options.channel_count = pipeline::kAllanChannelCount;
+  shift_options.gap_factor = result.engine.gap_factor;
+  allan::LevelShiftScreen shift_screen(shift_options);
   allan::OutputStepDetector steps(pipeline::kAllanChannelCount);
   if (options.warm_up.enabled) {
     pipeline::check_warm_up_options(options.warm_up);
@@ -113,9 +117,12 @@ AllanBagPassResult run_allan_bag_pass(const BagRecording& recording, const Allan
   // cheaper than sample by sample; it wants stamps and row-major values side by side, as the
   // screen hands them over.
   allan::ScreenedSamples passed;
+  allan::ScreenedSamples unshifted;
   const auto push_passed = [&] {
-    engine.push_block(passed.stamps_ns.data(), passed.values.data(), passed.size());
+    shift_screen.push(passed, unshifted);
     passed.clear();
+    engine.push_block(unshifted.stamps_ns.data(), unshifted.values.data(), unshifted.size());
+    unshifted.clear();
   };
   try {
     while (std::optional<SampleBatch> batch = queue.pop()) {
@@ -129,6 +136,9 @@ AllanBagPassResult run_allan_bag_pass(const BagRecording& recording, const Allan
       if (options.on_progress) options.on_progress(result.message_count, total);
     }
     screen.finish(passed);
+    shift_screen.push(passed, unshifted);
+    passed.clear();
+    shift_screen.finish(unshifted);
     push_passed();
   } catch (const InputError& error) {
     queue.close();
@@ -154,6 +164,7 @@ AllanBagPassResult run_allan_bag_pass(const BagRecording& recording, const Allan
 
   result.snapshot = engine.snapshot();
   result.impulses = screen.report();
+  result.level_shifts = shift_screen.report();
   result.output_steps = steps.channels();
   if (!result.snapshot.warmed_up) {
     throw InputError(where + ": the " + std::to_string(result.message_count) + " messages" +

@@ -48,6 +48,7 @@ AllanMonitorNode::AllanMonitorNode(ros::NodeHandle& node, ros::NodeHandle& priva
     : settings_(load_allan_monitor_settings(private_node)),
       engine_(make_engine(settings_, private_node.resolveName("resume"))),
       screen_(settings_.screen),
+      shift_screen_(settings_.level_shifts),
       output_steps_(pipeline::kAllanChannelCount) {
   if (settings_.resume && engine_->input_sample_count() > 0) {
     resume_after_stamp_ns_ = engine_->last_stamp_ns();
@@ -68,6 +69,8 @@ AllanMonitorNode::AllanMonitorNode(ros::NodeHandle& node, ros::NodeHandle& priva
   impulse_condition_ = health_->define_condition(
       "knocks or spikes (impulse screen events: samples kept from the curves, the run split there)",
       diagnostic_msgs::DiagnosticStatus::WARN);
+  level_shift_condition_ = health_->define_condition("steps in the level (level-shift screen: the run split there)",
+                                                     diagnostic_msgs::DiagnosticStatus::WARN);
   if (settings_.input == pipeline::AllanInput::kRate) {
     input_subscriber_ = node.subscribe("imu/raw", settings_.queue_size, &AllanMonitorNode::on_imu, this);
   } else {
@@ -154,32 +157,47 @@ void AllanMonitorNode::add(const pipeline::AllanSample& sample, const std_msgs::
                       "from the curves (listed in the report, counted in diagnostics)",
                       sample.stamp_ns * 1e-9);
   }
+  for (; counted_level_shifts_ < shift_screen_.event_count(); ++counted_level_shifts_) {
+    health_->count(level_shift_condition_);
+    ROS_WARN_THROTTLE(kLogThrottle_s,
+                      "allan_monitor: a step in the level detected before %.9f s: the run is split there "
+                      "(listed in the report, counted in diagnostics)",
+                      sample.stamp_ns * 1e-9);
+  }
   last_header_ = header;
 }
 
 void AllanMonitorNode::push_screened() {
-  engine_->push_block(screened_.stamps_ns.data(), screened_.values.data(), screened_.size());
+  shift_screen_.push(screened_, unshifted_);
   screened_.clear();
+  engine_->push_block(unshifted_.stamps_ns.data(), unshifted_.values.data(), unshifted_.size());
+  unshifted_.clear();
 }
 
 AllanMonitorNode::Current AllanMonitorNode::current() const {
   Current now;
-  if (screen_.delayed_sample_count() == 0) {
+  if (screen_.delayed_sample_count() == 0 && shift_screen_.delayed_sample_count() == 0) {
     now.warmed_up = engine_->warmed_up();
     now.samples = engine_->input_sample_count();
     if (now.warmed_up) now.snapshot = engine_->snapshot();
     now.impulses = screen_.report();
+    now.level_shifts = shift_screen_.report();
     return now;
   }
   allan::StreamingAllan engine = *engine_;
   allan::ImpulseScreen screen = screen_;
+  allan::LevelShiftScreen shift_screen = shift_screen_;
   allan::ScreenedSamples rest;
+  allan::ScreenedSamples unshifted;
   screen.finish(rest);
-  engine.push_block(rest.stamps_ns.data(), rest.values.data(), rest.size());
+  shift_screen.push(rest, unshifted);
+  shift_screen.finish(unshifted);
+  engine.push_block(unshifted.stamps_ns.data(), unshifted.values.data(), unshifted.size());
   now.warmed_up = engine.warmed_up();
   now.samples = engine.input_sample_count();
   if (now.warmed_up) now.snapshot = engine.snapshot();
   now.impulses = screen.report();
+  now.level_shifts = shift_screen.report();
   return now;
 }
 
@@ -223,6 +241,7 @@ pipeline::AllanRunDescription AllanMonitorNode::run_description(const Current& n
   run.engine = engine_->options();
   run.skipped_before_checkpoint = skipped_before_checkpoint_;
   run.impulses = now.impulses;
+  run.level_shifts = now.level_shifts;
   run.output_steps = output_steps_.channels();
   return run;
 }
@@ -296,8 +315,11 @@ void AllanMonitorNode::finish() {
   publish_timer_.stop();
   checkpoint_timer_.stop();
   diagnostics_timer_.stop();
-  // The samples the screen still holds belong in the last checkpoint and report.
+  // The samples the screens still hold belong in the last checkpoint and report.
   screen_.finish(screened_);
+  shift_screen_.push(screened_, unshifted_);
+  screened_.clear();
+  shift_screen_.finish(unshifted_);
   push_screened();
   try {
     if (!settings_.checkpoint_path.empty()) engine_->save_checkpoint(settings_.checkpoint_path);
@@ -328,6 +350,14 @@ void AllanMonitorNode::report(diagnostic_updater::DiagnosticStatusWrapper& statu
     }
   } else {
     status.add("impulse screen", "off");
+  }
+  if (settings_.level_shifts.enabled) {
+    const allan::LevelShiftReport shifts = shift_screen_.report();
+    status.add("level shifts (steps, the run split there)", shifts.event_count);
+    status.add("level-shift samples masked", shifts.masked_sample_count);
+    if (!shifts.events.empty()) status.add("last level shift [s]", shifts.events.back().step_stamp_ns * 1e-9);
+  } else {
+    status.add("level-shift screen", "off");
   }
 }
 

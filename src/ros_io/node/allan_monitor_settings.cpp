@@ -84,6 +84,21 @@ AllanMonitorSettings load_allan_monitor_settings(const ros::NodeHandle& private_
   screen.channel_count = engine.channel_count;
   screen.gap_factor = engine.gap_factor;
   screen.validate();
+
+  allan::LevelShiftScreenOptions& shifts = settings.level_shifts;
+  shifts.enabled = parameter(private_node, "level_shift_screen", shifts.enabled);
+  shifts.threshold_sigma = parameter(private_node, "level_shift_threshold_sigma", shifts.threshold_sigma);
+  if (!(shifts.threshold_sigma > allan::kLevelShiftClipSigma) || !std::isfinite(shifts.threshold_sigma)) {
+    throw parameter_error(private_node, "level_shift_threshold_sigma",
+                          "must be a number above 3 (robust scales of the difference; 10 is the default)");
+  }
+  shifts.window_s = parameter(private_node, "level_shift_window_s", shifts.window_s);
+  if (!(shifts.window_s > 0.0 && shifts.window_s <= 300.0)) {
+    throw parameter_error(private_node, "level_shift_window_s", "must lie above 0 and at most 300 s (default 10)");
+  }
+  shifts.channel_count = engine.channel_count;
+  shifts.gap_factor = engine.gap_factor;
+  shifts.validate();
   return settings;
 }
 

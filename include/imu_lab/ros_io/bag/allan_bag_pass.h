@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "imu_lab/allan/impulse_screen.h"
+#include "imu_lab/allan/level_shift_screen.h"
 #include "imu_lab/allan/output_step.h"
 #include "imu_lab/allan/streaming_allan.h"
 #include "imu_lab/pipeline/allan_samples.h"
@@ -33,6 +34,7 @@ struct AllanBagPassOptions {
   allan::StreamingOptions engine;
   // channel_count and gap_factor are set from the engine's.
   allan::ImpulseScreenOptions screen;
+  allan::LevelShiftScreenOptions level_shifts;
   pipeline::AllanWarmUpOptions warm_up;  // off by default
   // Called on the computing thread after each batch: messages processed and the topic's total.
   std::function<void(std::size_t processed, std::size_t total)> on_progress;
@@ -53,6 +55,7 @@ struct AllanBagPassResult {
   std::size_t messages_without_specific_force = 0;
   allan::StreamingSnapshot snapshot;
   allan::ImpulseScreenReport impulses;                 // events found (and samples dropped) before the engine
+  allan::LevelShiftReport level_shifts;                // steps found after the impulse screen (samples dropped)
   std::vector<allan::ChannelOutputStep> output_steps;  // per channel, over every message's values
   std::optional<pipeline::AllanWarmUp> warm_up;        // the transients removed (warm_up.enabled only)
 };

@@ -60,7 +60,7 @@ class AllanMonitorNode {
   void on_increment(const imu_lab::ImuIncrement::ConstPtr& message);
   // incomplete: the record when it lacks a triad (covariance[0] = -1), for the diagnostics.
   void add(const pipeline::AllanSample& sample, const std_msgs::Header& header, const ImuRecord* incomplete);
-  void push_screened();  // what the screen passed, into the engine
+  void push_screened();  // what the screens passed, into the engine
   // The curves and the screen's report as they would end if the input ended now: the samples the
   // screen still holds go through a copy of it into a copy of the engine, so that what is
   // published and reported covers every sample received.
@@ -69,6 +69,7 @@ class AllanMonitorNode {
     std::int64_t samples = 0;
     allan::StreamingSnapshot snapshot;
     allan::ImpulseScreenReport impulses;
+    allan::LevelShiftReport level_shifts;
   };
   Current current() const;
   void publish_curves();
@@ -86,9 +87,13 @@ class AllanMonitorNode {
   std::unique_ptr<allan::StreamingAllan> engine_;
   allan::ImpulseScreen screen_;
   allan::ScreenedSamples screened_;
+  allan::LevelShiftScreen shift_screen_;
+  allan::ScreenedSamples unshifted_;
   allan::OutputStepDetector output_steps_;
   std::int64_t counted_impulse_events_ = 0;
   std::size_t impulse_condition_ = 0;
+  std::int64_t counted_level_shifts_ = 0;
+  std::size_t level_shift_condition_ = 0;
   std::optional<std::int64_t> resume_after_stamp_ns_;
   std::int64_t skipped_before_checkpoint_ = 0;
   std::optional<allan::StreamingSnapshot> latest_snapshot_;

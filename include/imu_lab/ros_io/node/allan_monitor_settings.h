@@ -9,7 +9,9 @@
 //   exact_max_averaging_factor (1000), confidence (0.683), warm_up_sample_count (1000),
 //   gap_factor (1.5). Gaps always split and pool: a live node never stops on bad stamps.
 //   impulse_screen (true: knocks and spikes are reported and their samples kept from the engine,
-//   impulse_screen.h), impulse_threshold_sigma (12).
+//   impulse_screen.h), impulse_threshold_sigma (12); level_shift_screen (true: steps in the level
+//   are reported and the run split there, level_shift_screen.h), level_shift_threshold_sigma (10),
+//   level_shift_window_s (10).
 #pragma once
 
 #include <ros/node_handle.h>
@@ -19,6 +21,7 @@
 
 #include "imu_lab/allan/batch.h"
 #include "imu_lab/allan/impulse_screen.h"
+#include "imu_lab/allan/level_shift_screen.h"
 #include "imu_lab/allan/streaming_options.h"
 #include "imu_lab/pipeline/allan_noise_report.h"
 #include "imu_lab/pipeline/allan_samples.h"
@@ -39,7 +42,8 @@ struct AllanMonitorSettings {
   pipeline::AllanIdentifyOptions identify;
   double identify_period_s = 0.0;
   allan::StreamingOptions engine;
-  allan::ImpulseScreenOptions screen;  // channel_count and gap_factor follow the engine's
+  allan::ImpulseScreenOptions screen;           // channel_count and gap_factor follow the engine's
+  allan::LevelShiftScreenOptions level_shifts;  // likewise
 };
 
 // Throws ConfigError naming the parameter that is wrong.
