@@ -1,7 +1,8 @@
-// rostest checker for allan_monitor's impulse screen (launched by allan_monitor_impulses.test): an
-// emulated bag with a knock 30 s in is played into the node with `rosbag play --clock`. The node
-// must warn about it on /diagnostics with its count, list it in its report's summary with the
-// stamps the allan tool finds, split the run there and end with the tool's curves.
+// rostest checker for allan_monitor's impulse and level-shift screens (launched by
+// allan_monitor_impulses.test): an emulated bag with a knock 30 s in and a tilt from 340 s to 380 s
+// is played into the node with `rosbag play --clock`. The node must warn about the knock on
+// /diagnostics with its count, list the knock and the tilt's two steps in its report's summary with
+// the stamps the allan tool finds, split the runs there and end with the tool's curves.
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <rosbag/bag.h>
 #include <std_srvs/Trigger.h>
@@ -14,11 +15,15 @@ namespace {
 
 using namespace imu_lab::replay_check;
 
-constexpr double kDuration_s = 60.0;
+constexpr double kDuration_s = 420.0;
 constexpr double kKnock_s = 30.0;  // from the first stamp
+// A tilt after the level-shift screen's 300 s of scale: accelerometer x and y move by 0.03 and
+// -0.02 m/s^2 (tens of the screen's scales at this noise) and back.
+constexpr double kTiltStart_s = 340.0, kTiltEnd_s = 380.0;
 
 // The emulated tactical MEMS at rest, with a knock: accelerometer z rings at 0.5 m/s^2 (some
-// hundreds of its noise) decaying over 0.1 s, gyro x at 0.01 rad/s, and a bias step of 1 mm/s^2.
+// hundreds of its noise) decaying over 0.1 s, gyro x at 0.01 rad/s, and a bias step of 1 mm/s^2;
+// and the tilt.
 std::size_t write_knocked_bag(const std::string& path) {
   const auto profile =
       imu_lab::emulator::load_sensor_profile(imu_lab::ros_io::resolve_config("sensors", "tactical_mems"));
@@ -39,6 +44,10 @@ std::size_t write_knocked_bag(const std::string& path) {
       const double ringing = std::exp(-t / 0.1) * std::cos(2.0 * M_PI * 12.0 * t);
       message.linear_acceleration.z += 1e-3 + 0.5 * ringing;
       message.angular_velocity.x += 0.01 * ringing;
+    }
+    if (t + kKnock_s >= kTiltStart_s && t + kKnock_s < kTiltEnd_s) {
+      message.linear_acceleration.x += 0.03;
+      message.linear_acceleration.y -= 0.02;
     }
     bag.write("/imu/raw", stamp, message);
   }
@@ -81,7 +90,7 @@ class MonitorDiagnostics {
   bool warned_ = false;
 };
 
-TEST(AllanMonitorImpulses, AKnockIsWarnedAboutListedAndSplitsTheRunAsTheToolDoes) {
+TEST(AllanMonitorImpulses, AKnockAndATiltAreListedAndSplitTheRunsAsTheToolDoes) {
   ros::NodeHandle node;
   std::string report_dir;
   ASSERT_TRUE(ros::param::get("/allan_monitor/report_dir", report_dir));
@@ -92,6 +101,7 @@ TEST(AllanMonitorImpulses, AKnockIsWarnedAboutListedAndSplitsTheRunAsTheToolDoes
   const auto tool = imu_lab::ros_io::run_allan_bag_pass(bag, options);
   ASSERT_EQ(tool.impulses.event_count, 1);
   const auto& expected = tool.impulses.events.front();
+  ASSERT_EQ(tool.level_shifts.event_count, 2);
   LatestCurves curves(node);
   MonitorDiagnostics diagnostics(node);
   ASSERT_TRUE(ros::service::waitForService("/allan_monitor/write_report", ros::Duration(60.0)));
@@ -121,7 +131,18 @@ TEST(AllanMonitorImpulses, AKnockIsWarnedAboutListedAndSplitsTheRunAsTheToolDoes
   EXPECT_EQ(summary["samples"].as<std::int64_t>(), tool.snapshot.timing.input_sample_count);
   EXPECT_EQ(summary["samples"].as<std::int64_t>() + screen["dropped_samples"].as<std::int64_t>(),
             static_cast<std::int64_t>(messages));
-  EXPECT_EQ(summary["channels"]["accel_z"]["segments"].as<int>(), 2);
+  // The knock splits every channel; the tilt's two steps the accelerometer's only.
+  EXPECT_EQ(summary["channels"]["gyro_x"]["segments"].as<int>(), 2);
+  EXPECT_EQ(summary["channels"]["accel_z"]["segments"].as<int>(), 4);
+  const YAML::Node shifts = summary["level_shift_screen"];
+  EXPECT_EQ(shifts["shifts"]["count"].as<int>(), 2);
+  ASSERT_EQ(shifts["listed_shifts"].size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(shifts["listed_shifts"][i]["step_stamp_ns"].as<std::int64_t>(),
+              tool.level_shifts.events[i].step_stamp_ns);
+    EXPECT_NEAR(shifts["listed_shifts"][i]["step_from_start_s"].as<double>(), i == 0 ? kTiltStart_s : kTiltEnd_s, 0.5);
+  }
+  EXPECT_EQ(summary["channels"]["accel_x"]["non_finite_samples"].as<int>(), 0) << "the screen's NaNs are its own";
   const double difference = max_relative_difference(report_dir, tool.snapshot);
   std::printf(
       "allan_monitor vs allan tool on a knocked bag of %zu messages: event at %.3f s, max relative "
