@@ -43,26 +43,9 @@ TEST(CalibrationCorrectorNode, PublishesTheCoreCorrectionOfEverySample) {
   auto subscriber = node.subscribe<sensor_msgs::Imu>(
       "/imu/corrected", 100000,
       [&](const sensor_msgs::Imu::ConstPtr& m) { outputs[static_cast<std::int64_t>(m->header.stamp.toNSec())] = *m; });
-  // The node's output reaches this checker only once their connection exists (registration
-  // comes first): the playback waits for it, not for a pause a busy machine could outlast.
-  ASSERT_TRUE(imu_lab::connection_check::wait_until(
-      [] {
-        return imu_lab::connection_check::sends("/calibration_corrector", "/imu/corrected", ros::this_node::getName());
-      },
-      60.0))
-      << "/calibration_corrector never connected to this checker";
-  const std::string play = "rosbag play --clock --wait-for-subscribers --quiet --queue=100000 " + bag + " " +
-                           private_string("play_arguments") + " > " + directory + "/play.log 2>&1";
-  FILE* player = ::popen(play.c_str(), "r");
-  ASSERT_NE(player, nullptr);
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(200.0);  // generous for loaded CI
-  while (ros::ok() && ros::WallTime::now() < deadline && outputs.size() < inputs.size()) {
-    ros::spinOnce();
-    ros::WallDuration(0.005).sleep();
-  }
-  EXPECT_EQ(::pclose(player), 0) << "rosbag play failed; see " << directory << "/play.log";
-  ros::WallDuration(0.5).sleep();
-  ros::spinOnce();
+  ASSERT_TRUE(imu_lab::connection_check::play_and_collect(
+      bag, private_string("play_arguments"), directory + "/play.log", "/calibration_corrector", "/imu/corrected",
+      [&] { return outputs.size() >= inputs.size(); }, 200.0));
   ASSERT_EQ(outputs.size(), inputs.size()) << "the node did not publish one corrected sample per input in time";
 
   double worst_rate_rad_s = 0.0, worst_force_m_s2 = 0.0, largest_change_m_s2 = 0.0;

@@ -3,12 +3,14 @@
 // registration with the master comes first, the TCP connection some time after it).
 #pragma once
 
+#include <gtest/gtest.h>
 #include <ros/master.h>
 #include <ros/network.h>
 #include <ros/ros.h>
 #include <xmlrpcpp/XmlRpc.h>
 
 #include <cstdint>
+#include <cstdio>
 
 #include <string>
 
@@ -56,6 +58,34 @@ bool wait_until(const Condition& ready, double timeout_s) {
     ros::WallDuration(0.05).sleep();
   }
   return ready();
+}
+
+// Plays `bag` into the graph (`rosbag play --clock --wait-for-subscribers`, then `play_arguments`;
+// the bag comes first because --topics takes every argument after it) once `publisher` sends
+// `topic` to this checker, so none of the node's output is lost, and spins the callbacks until
+// `received_all` holds or timeout_s of wall time pass (a limit for a broken run). Waits for the
+// player to end, then takes what is still queued. rosbag's output goes to `log_path`.
+template <class Condition>
+::testing::AssertionResult play_and_collect(const std::string& bag, const std::string& play_arguments,
+                                            const std::string& log_path, const std::string& publisher,
+                                            const std::string& topic, const Condition& received_all,
+                                            double timeout_s) {
+  if (!wait_until([&] { return sends(publisher, topic, ros::this_node::getName()); }, 60.0)) {
+    return ::testing::AssertionFailure() << publisher << " never connected " << topic << " to this checker";
+  }
+  const std::string play = "rosbag play --clock --wait-for-subscribers --quiet --queue=100000 " + bag + " " +
+                           play_arguments + " > " + log_path + " 2>&1";
+  FILE* player = ::popen(play.c_str(), "r");
+  if (player == nullptr) return ::testing::AssertionFailure() << "could not start: " << play;
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(timeout_s);
+  while (ros::ok() && ros::WallTime::now() < deadline && !received_all()) {
+    ros::spinOnce();
+    ros::WallDuration(0.005).sleep();
+  }
+  const int status = ::pclose(player);
+  ros::spinOnce();
+  if (status != 0) return ::testing::AssertionFailure() << "rosbag play failed; see " << log_path;
+  return ::testing::AssertionSuccess();
 }
 
 }  // namespace connection_check

@@ -58,27 +58,9 @@ TEST(StrapdownNavigatorNode, PublishesTheNavigateToolsSolutionAndTheTransform) {
   tf2_ros::TransformListener listener(buffer);
 
   // The node's input subscription makes --wait-for-subscribers start the playback.
-  // The bag before the options: --topics takes every argument after it.
-  // The node's output reaches this checker only once their connection exists (registration
-  // comes first): the playback waits for it, not for a pause a busy machine could outlast.
-  ASSERT_TRUE(imu_lab::connection_check::wait_until(
-      [] {
-        return imu_lab::connection_check::sends("/strapdown_navigator", "/nav/odometry", ros::this_node::getName());
-      },
-      60.0))
-      << "/strapdown_navigator never connected to this checker";
-  const std::string play = "rosbag play --clock --wait-for-subscribers --quiet --queue=100000 " + bag + " " +
-                           private_string("play_arguments") + " > " + directory + "/play.log 2>&1";
-  FILE* player = ::popen(play.c_str(), "r");
-  ASSERT_NE(player, nullptr);
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(240.0);  // generous for loaded CI
-  while (ros::ok() && ros::WallTime::now() < deadline && odometry.size() < reference.size()) {
-    ros::spinOnce();
-    ros::WallDuration(0.005).sleep();
-  }
-  EXPECT_EQ(::pclose(player), 0) << "rosbag play failed; see " << directory << "/play.log";
-  ros::WallDuration(0.5).sleep();
-  ros::spinOnce();
+  ASSERT_TRUE(imu_lab::connection_check::play_and_collect(
+      bag, private_string("play_arguments"), directory + "/play.log", "/strapdown_navigator", "/nav/odometry",
+      [&] { return odometry.size() >= reference.size(); }, 240.0));
   ASSERT_EQ(odometry.size(), reference.size()) << "the node did not publish one odometry per tool solution in time";
 
   // Same input, same NavigationSession: the same numbers, to round-off.

@@ -71,30 +71,12 @@ TEST(ThermalCompensatorNode, PublishesTheCoreLibrarysCorrectionOfEverySample) {
   std::map<std::int64_t, sensor_msgs::Imu> received;
   auto subscriber = node.subscribe<sensor_msgs::Imu>(
       "imu/thermal", 100000, [&](const sensor_msgs::Imu::ConstPtr& m) { received[m->header.stamp.toNSec()] = *m; });
-  // The node's subscriptions make --wait-for-subscribers start the playback; the bag goes before
-  // the options because --topics takes every argument after it.
-  // The node's output reaches this checker only once their connection exists (registration
-  // comes first): the playback waits for it, not for a pause a busy machine could outlast.
-  ASSERT_TRUE(imu_lab::connection_check::wait_until(
-      [] {
-        return imu_lab::connection_check::sends("/thermal_compensator", "/imu/thermal", ros::this_node::getName());
-      },
-      60.0))
-      << "/thermal_compensator never connected to this checker";
-  const std::string play = "rosbag play --clock --wait-for-subscribers --quiet --queue=100000 " + bag + " " +
-                           private_string("play_arguments") + " > " + directory + "/play.log 2>&1";
-  FILE* player = ::popen(play.c_str(), "r");
-  ASSERT_NE(player, nullptr);
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(240.0);  // generous for loaded CI
+  // The node's subscriptions make --wait-for-subscribers start the playback.
   // The last sample waits for a temperature after it or for 1 s of newer IMU data: there is none,
   // so the node holds it back; every other sample must arrive.
-  while (ros::ok() && ros::WallTime::now() < deadline && received.size() + 1 < reference.size()) {
-    ros::spinOnce();
-    ros::WallDuration(0.005).sleep();
-  }
-  EXPECT_EQ(::pclose(player), 0) << "rosbag play failed; see " << directory << "/play.log";
-  ros::WallDuration(0.5).sleep();
-  ros::spinOnce();
+  ASSERT_TRUE(imu_lab::connection_check::play_and_collect(
+      bag, private_string("play_arguments"), directory + "/play.log", "/thermal_compensator", "/imu/thermal",
+      [&] { return received.size() + 1 >= reference.size(); }, 240.0));
   ASSERT_GE(received.size() + 1, reference.size()) << "the node did not publish every sample in time";
 
   double worst_rate_rad_s = 0.0, worst_force_m_s2 = 0.0;
