@@ -177,8 +177,10 @@ std::vector<BandExcursion> band_excursions(const std::vector<BandPoint>& band) {
     const double excursion = point.fitted_deviation > point.upper
                                  ? (point.fitted_deviation - point.upper) / point.measured_deviation
                                  : -(point.lower - point.fitted_deviation) / point.measured_deviation;
-    if (!open) {
-      excursions.push_back({point.tau_s, point.tau_s, 0, 0.0});
+    // A run is one-sided: where the total crosses the band between neighbours, a new one starts,
+    // so that each range's warning says on which side it lies.
+    if (!open || (excursion > 0.0) != (excursions.back().largest_excursion > 0.0)) {
+      excursions.push_back({point.tau_s, point.tau_s, 0, excursion});
       open = true;
     }
     BandExcursion& current = excursions.back();

@@ -34,14 +34,17 @@ std::string format_term(const identify::TermEstimate& term, const identify::Unit
   return identify::term_status_name(term.status);
 }
 
-// ", T_c 0.0123 s", ", f_n 19.8 Hz, width 1.6 Hz", ", low-pass 31.2 Hz": the fitted shape of a term
-// in the model, so that a line or a Markov term reads as what it is.
+// ", T_c 0.0123 ± 0.002 s", ", f_n 19.8 ± 0.1 Hz, width 1.6 ± 0.3 Hz", ", low-pass 31.2 ± 0.9 Hz":
+// the shape of a term in the model with its sigma where one was estimated, so that a line or a
+// Markov term reads as what it is and the front end's corner carries its precision.
 std::string format_shape(const identify::TermEstimate& term) {
   std::string text;
   const auto append = [&text](const std::string& label, const identify::ParameterEstimate& estimate,
                               const identify::UnitScale& unit) {
     if (!std::isfinite(estimate.value)) return;
-    text += ", " + label + " " + format_table_number(estimate.value * unit.per_si) + " " + unit.key;
+    text += ", " + label + " " + format_table_number(estimate.value * unit.per_si);
+    if (std::isfinite(estimate.sigma)) text += " ± " + format_table_number(estimate.sigma * unit.per_si);
+    text += " " + unit.key;
   };
   if (term.status == identify::TermStatus::kAbsent || !identify::has_shape(term.kind)) return text;
   const auto units = identify::shape_units(term.kind);

@@ -11,6 +11,7 @@
 
 #include "identify_test_records.h"
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/identify/fit_warnings.h"
 #include "imu_lab/identify/kalibr_yaml.h"
 #include "imu_lab/identify/noise_report.h"
 #include "imu_lab/identify/profile_likelihood.h"
@@ -30,6 +31,34 @@ TriadFit exact_triad(SensorKind sensor, double n, double k) {
     curves[axis] = identify_test::exact_octave_curve(model, 0.01, 7200.0);
   }
   return fit_triad(sensor, curves, 0.01, 7200.0);
+}
+
+// noise.yaml's band warnings: a range says on which side of the band the total lies, so where the
+// total crosses the band between neighbouring taus the two sides are two ranges.
+TEST(IdentifyBandExcursions, NeighboursOnOppositeSidesAreTwoRangesEachNamedByItsSide) {
+  const auto point = [](double tau_s, double fitted) {
+    BandPoint band_point;
+    band_point.tau_s = tau_s;
+    band_point.measured_deviation = 1.0;
+    band_point.fitted_deviation = fitted;
+    band_point.lower = 0.99;
+    band_point.upper = 1.01;
+    return band_point;
+  };
+  // above, above, below, below (a crossing between 0.02 and 0.03 s), inside, below
+  const std::vector<BandPoint> band = {point(0.01, 1.03), point(0.02, 1.02), point(0.03, 0.95),
+                                       point(0.04, 0.98), point(0.05, 1.0),  point(0.06, 0.97)};
+  const std::vector<BandExcursion> runs = band_excursions(band);
+  ASSERT_EQ(runs.size(), 3u);
+  EXPECT_DOUBLE_EQ(runs[0].first_tau_s, 0.01);
+  EXPECT_DOUBLE_EQ(runs[0].last_tau_s, 0.02);
+  EXPECT_EQ(runs[0].point_count, 2);
+  EXPECT_NEAR(runs[0].largest_excursion, 0.02, 1e-12);
+  EXPECT_DOUBLE_EQ(runs[1].first_tau_s, 0.03);
+  EXPECT_DOUBLE_EQ(runs[1].last_tau_s, 0.04);
+  EXPECT_NEAR(runs[1].largest_excursion, -0.04, 1e-12);
+  EXPECT_DOUBLE_EQ(runs[2].first_tau_s, 0.06);
+  EXPECT_NEAR(runs[2].largest_excursion, -0.02, 1e-12);
 }
 
 TEST(IdentifyReport, NumbersRoundTripThroughTheYaml) {

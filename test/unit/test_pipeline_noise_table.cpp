@@ -90,6 +90,33 @@ TEST(NoiseTable, AnIntervalFromWeighedStructuresIsShownBesideTheSigma) {
   EXPECT_EQ(bound.find("68 %"), std::string::npos) << bound;
 }
 
+// The front end's corner is a fitted parameter like any other: the table gives its sigma beside it.
+TEST(NoiseTable, TheFittedCornerOfTheFrontEndCarriesItsSigma) {
+  TriadFit triad;
+  triad.sensor = SensorKind::kGyroscope;
+  for (int axis = 0; axis < 3; ++axis) {
+    TermEstimate white;
+    white.name = "white_rate";
+    white.kind = TermKind::kWhiteRate;
+    white.status = TermStatus::kPresent;
+    white.amplitude.value = 7e-4;
+    white.amplitude.log_sigma = 0.002;
+    white.amplitude.sigma = 7e-4 * 0.002;
+    white.shape.value = 53.44;
+    if (axis == 0) {  // fitted; y and z at a given corner have none
+      white.shape.log_sigma = 0.97 / 53.44;
+      white.shape.sigma = 0.97;
+      white.shape_fitted = true;
+    }
+    triad.axes[axis].terms = {white};
+  }
+  const std::string table = format_noise_table({triad});
+  const std::string fitted = line_of(table, "  gyro_x   white_rate");
+  EXPECT_NE(fitted.find(", low-pass 53.44 ± 0.97 hz"), std::string::npos) << fitted;
+  const std::string given = line_of(table, "  gyro_y   white_rate");
+  EXPECT_NE(given.find(", low-pass 53.44 hz"), std::string::npos) << given;
+}
+
 }  // namespace
 }  // namespace pipeline
 }  // namespace imu_lab

@@ -16,9 +16,9 @@ namespace identify {
 // Ratio above which a reading is said to disagree with the fit.
 constexpr double kReadingDisagreementRatio = 1.5;
 
-// Contiguous runs of curve points where the fitted total is outside the band: first and last
-// tau, and the largest excursion beyond the band as a fraction of the measured deviation
-// (positive: above the band).
+// Contiguous runs of curve points where the fitted total is outside the band on one side: first
+// and last tau, and the largest excursion beyond the band as a fraction of the measured deviation
+// (positive: above the band). Neighbouring points on opposite sides make two runs.
 struct BandExcursion {
   double first_tau_s = 0.0;
   double last_tau_s = 0.0;
