@@ -137,9 +137,12 @@ std::vector<Term> spread_start_shapes(const TermSlot& slot, const std::vector<Fi
 }
 
 // A Markov term, sinusoid or resonance the selection left out: absent, with the largest
-// amplitude any shape could carry (shaped_profile_upper_bound); its shape stays unreported.
+// amplitude any shape could carry (shaped_profile_upper_bound); its shape stays unreported. Its
+// selection statistic is the fall of the distance its addition brings, fitted as the selection
+// fits a candidate (the left-out Markov term's fit is fit_left_out_terms'), so that a term the
+// selection nearly took is marked borderline like any other.
 void describe_absent_shaped_term(const SelectedModel& selected, const DataSpan& span, const TermSlot& slot,
-                                 FitResult* fit) {
+                                 const std::vector<TermAddition>& additions, FitResult* fit) {
   TermEstimate estimate;
   estimate.name = term_kind_name(slot.kind);
   estimate.kind = slot.kind;
@@ -147,6 +150,22 @@ void describe_absent_shaped_term(const SelectedModel& selected, const DataSpan& 
   estimate.amplitude.upper_bound = shaped_profile_upper_bound(
       fit->points, fit->structure, fit->log_parameters, selected.cost, spread_start_shapes(slot, fit->points, span),
       span, selected.weights, fit->options.upper_bound_confidence, &estimate.amplitude.upper_bound_one_sigma);
+  const auto fitted = std::find_if(additions.begin(), additions.end(),
+                                   [&](const TermAddition& addition) { return addition.kind == slot.kind; });
+  if (fitted != additions.end()) {
+    estimate.selection_statistic = std::max(0.0, 2.0 * (selected.cost - fitted->outcome.cost));
+  } else if (slot.kind == TermKind::kMarkov) {
+    estimate.selection_statistic = 0.0;  // fitted, but kept only where it lowered the distance
+  } else {
+    ModelStructure extended;
+    const SolveOutcome added = fit_with_new_slot(fit->points, span, fit->options, fit->structure, fit->log_parameters,
+                                                 slot, selected.weights, &extended);
+    if (added.usable) estimate.selection_statistic = std::max(0.0, 2.0 * (selected.cost - added.cost));
+  }
+  if (std::isfinite(estimate.selection_statistic)) {
+    estimate.selection_threshold = slot_lr_threshold(fit->options, slot, static_cast<int>(fit->points.size()));
+    estimate.borderline = is_borderline(estimate.selection_statistic, estimate.selection_threshold, false);
+  }
   fit->terms.push_back(estimate);
 }
 
@@ -254,7 +273,7 @@ void describe_absent_terms(const SelectedModel& selected, const DataSpan& span,
                            const std::vector<TermAddition>& additions, FitResult* fit) {
   for (TermSlot slot : left_out_slots(*fit, span)) {
     if (slot.kind == TermKind::kMarkov || slot.kind == TermKind::kSinusoid || slot.kind == TermKind::kResonance) {
-      describe_absent_shaped_term(selected, span, slot, fit);
+      describe_absent_shaped_term(selected, span, slot, additions, fit);
       continue;
     }
     if (!one_parameter_slot(&slot, fit->tau0_s)) continue;
@@ -490,8 +509,25 @@ FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, doub
           discrepancy = swapped_discrepancy;
         }
       }
-      return select_model(fit.points, span, allowed, covariance, discrepancy,
-                          model_from_log_parameters(exact.structure, exact.log_parameters), &exact);
+      SelectedModel reselected = select_model(fit.points, span, allowed, covariance, discrepancy,
+                                              model_from_log_parameters(exact.structure, exact.log_parameters), &exact);
+      // The spread was measured on the first structure; one the selection changed (a line the
+      // 1 % spread hid, now taken) may describe the curve better, and keeping the old spread
+      // would understate the precision its terms have. Measured again while it falls.
+      constexpr int kMaxRemeasures = 2;
+      for (int remeasure = 0; remeasure < kMaxRemeasures && discrepancy > 0.0 &&
+                              !same_structure(reselected.structure, exact.structure);
+           ++remeasure) {
+        SelectedModel remeasured = reselected;
+        reweigh_selected(fit.points, span, allowed, covariance, 0.0, &remeasured);
+        const double remeasured_discrepancy = spread_left_by(remeasured);
+        if (!(remeasured_discrepancy < discrepancy)) break;
+        exact = remeasured;
+        discrepancy = remeasured_discrepancy;
+        reselected = select_model(fit.points, span, allowed, covariance, discrepancy,
+                                  model_from_log_parameters(exact.structure, exact.log_parameters), &exact);
+      }
+      return reselected;
     }
     discrepancy = spread_left_by(selected);
     if (discrepancy < kInitialDiscrepancy) {

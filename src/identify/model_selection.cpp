@@ -303,6 +303,17 @@ bool swap_pass(const SelectionContext& context, std::vector<TermSlot>* remaining
     const double statistic = 2.0 * (addition.outcome.cost - current->cost);
     const double threshold = slot_lr_threshold(context.options, extra, context.point_count);
     if (!(statistic < threshold)) continue;
+    // The standard term must earn its place in the swapped structure. Where it does not, the swap
+    // is the extra term's removal at a rise of J its threshold does not allow (the backward pass
+    // would keep it): the standard term is then dropped, the extra term added again, and the
+    // passes cycle until the round limit, leaving whichever came last.
+    const TermSlot& standard = (*remaining)[addition.index];
+    const SolveOutcome without_both =
+        refit_structure(context.points, reduced, reduced_parameters, context.span, current->weights);
+    if (without_both.usable && 2.0 * (without_both.cost - addition.outcome.cost) <
+                                   slot_lr_threshold(context.options, standard, context.point_count)) {
+      continue;
+    }
     current->steps.push_back({"swap " + term_kind_name(extra.kind) + " for",
                               term_kind_name((*remaining)[addition.index].kind), statistic, threshold});
     remaining->erase(remaining->begin() + addition.index);

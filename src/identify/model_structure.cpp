@@ -62,6 +62,17 @@ std::vector<double> log_parameters_from_model(const ModelStructure& structure, c
   return log_parameters;
 }
 
+bool same_structure(const ModelStructure& a, const ModelStructure& b) {
+  if (a.slots.size() != b.slots.size()) return false;
+  for (size_t i = 0; i < a.slots.size(); ++i) {
+    if (a.slots[i].kind != b.slots[i].kind || a.slots[i].shape_free != b.slots[i].shape_free ||
+        a.slots[i].fixed_shape != b.slots[i].fixed_shape) {
+      return false;
+    }
+  }
+  return true;
+}
+
 void remove_slot(ModelStructure& structure, std::vector<double>& log_parameters, int slot_index) {
   const int offset = parameter_offset(structure, slot_index);
   const int count = slot_parameter_count(structure.slots[slot_index]);

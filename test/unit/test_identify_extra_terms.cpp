@@ -95,6 +95,49 @@ TEST(IdentifyExtraTerms, UnknownZeroDcNameIsRefusedByName) {
   EXPECT_FALSE(options.allow_zero_dc_family || options.allow_zero_dc_gaussian || options.allow_high_pass_white);
 }
 
+// A left-out Markov term, line or mode reports the fall of the distance its addition would bring,
+// as a left-out K does, so that one the selection nearly took is marked borderline. A 0.5 Hz line
+// on white noise and bias instability, its amplitude stepped across the decision: the statistic
+// grows with it (about as its fourth power) and changes side with the decision; within a factor
+// 2 of the threshold the term is borderline on either side.
+TEST(IdentifyExtraTerms, ALeftOutLineCarriesItsStatisticAndIsBorderlineNearItsThreshold) {
+  double previous_statistic = 0.0;
+  int borderline_absent = 0, clear_absent = 0, clear_present = 0;
+  for (double amplitude = 2.0e-4; amplitude < 6.0e-4; amplitude *= 1.1) {
+    NoiseModel truth;
+    truth.terms = {{TermKind::kWhiteRate, 1e-3, 0.0},
+                   {TermKind::kBiasInstability, 2e-5, 50.0},
+                   {TermKind::kSinusoid, amplitude, 0.5}};
+    const FitResult fit = fit_noise_model(exact_curve(truth), kTau0, kLength);
+    const TermEstimate* absent = fit.find("sinusoid");
+    const TermEstimate* present = fit.find("sinusoid_1");
+    ASSERT_TRUE((absent == nullptr) != (present == nullptr)) << "amplitude " << amplitude;
+    const TermEstimate& line = absent != nullptr ? *absent : *present;
+    ASSERT_TRUE(std::isfinite(line.selection_statistic)) << "amplitude " << amplitude;
+    ASSERT_GT(line.selection_threshold, 0.0);
+    EXPECT_EQ(absent != nullptr, line.selection_statistic < line.selection_threshold)
+        << "amplitude " << amplitude << ": statistic " << line.selection_statistic << " against "
+        << line.selection_threshold;
+    EXPECT_EQ(line.borderline, line.selection_statistic > 0.5 * line.selection_threshold &&
+                                   line.selection_statistic < 2.0 * line.selection_threshold)
+        << "amplitude " << amplitude << ": statistic " << line.selection_statistic;
+    EXPECT_GT(line.selection_statistic, previous_statistic) << "amplitude " << amplitude;
+    previous_statistic = line.selection_statistic;
+    if (absent != nullptr) (line.borderline ? borderline_absent : clear_absent) += 1;
+    if (present != nullptr && !line.borderline) ++clear_present;
+    // The other left-out shaped kinds carry theirs too.
+    for (const char* name : {"markov", "resonance"}) {
+      const TermEstimate* other = fit.find(name);
+      ASSERT_NE(other, nullptr) << name;
+      EXPECT_TRUE(std::isfinite(other->selection_statistic) && other->selection_threshold > 0.0) << name;
+    }
+  }
+  // Statistics 1.3 to 11.8 left out (8.1 and 11.8 borderline), 16 to 170 in the model.
+  EXPECT_GE(borderline_absent, 2);
+  EXPECT_GE(clear_absent, 2);
+  EXPECT_GE(clear_present, 2);
+}
+
 }  // namespace
 }  // namespace identify
 }  // namespace imu_lab

@@ -35,6 +35,9 @@ Term term_from_log_parameters(const TermSlot& slot, const double* log_parameters
 // Inverse of model_from_log_parameters for a model whose terms match the structure's slots.
 std::vector<double> log_parameters_from_model(const ModelStructure& structure, const NoiseModel& model);
 
+// The same slots in the same order (kinds, free shapes, fixed shapes); parameters aside.
+bool same_structure(const ModelStructure& a, const ModelStructure& b);
+
 // The structure and parameters without slot i.
 void remove_slot(ModelStructure& structure, std::vector<double>& log_parameters, int slot_index);
 
