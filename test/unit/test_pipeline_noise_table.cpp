@@ -32,16 +32,20 @@ double mixture_cdf(const std::vector<LogNormalComponent>& mixture, double x) {
   return total;
 }
 
-TermEstimate bias_instability(double value_rad_s, double log_sigma) {
+TermEstimate present_term(TermKind kind, double value_rad_s, double log_sigma) {
   TermEstimate term;
-  term.name = "bias_instability";
-  term.kind = TermKind::kBiasInstability;
+  term.name = identify::term_kind_name(kind);
+  term.kind = kind;
   term.status = TermStatus::kPresent;
   term.amplitude.value = value_rad_s;
   term.amplitude.log_sigma = log_sigma;
   term.amplitude.sigma = value_rad_s * log_sigma;
   term.sigma_source = identify::SigmaSource::kMomentCovariance;
   return term;
+}
+
+TermEstimate bias_instability(double value_rad_s, double log_sigma) {
+  return present_term(TermKind::kBiasInstability, value_rad_s, log_sigma);
 }
 
 std::string line_of(const std::string& table, const std::string& start) {
@@ -95,13 +99,7 @@ TEST(NoiseTable, TheFittedCornerOfTheFrontEndCarriesItsSigma) {
   TriadFit triad;
   triad.sensor = SensorKind::kGyroscope;
   for (int axis = 0; axis < 3; ++axis) {
-    TermEstimate white;
-    white.name = "white_rate";
-    white.kind = TermKind::kWhiteRate;
-    white.status = TermStatus::kPresent;
-    white.amplitude.value = 7e-4;
-    white.amplitude.log_sigma = 0.002;
-    white.amplitude.sigma = 7e-4 * 0.002;
+    TermEstimate white = present_term(TermKind::kWhiteRate, 7e-4, 0.002);
     white.shape.value = 53.44;
     if (axis == 0) {  // fitted; y and z at a given corner have none
       white.shape.log_sigma = 0.97 / 53.44;
