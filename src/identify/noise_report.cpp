@@ -114,7 +114,9 @@ void emit_graphical(YAML::Emitter& out, SensorKind sensor, const GraphicalReadin
   const auto k_units = amplitude_units(sensor, TermKind::kRandomWalk);
   out << YAML::Key << "graphical_readings" << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "note" << YAML::Value
-      << "IEEE 952 graphical readings, correct for a single term only; the fit is the estimate";
+      << "IEEE 952 graphical readings, correct for a single term only; the fit is the estimate. "
+         "N_upper_bound_slope_ray bounds N only where no anti-alias filter pulls the leftmost points "
+         "down: behind a front end (front_end above) it can lie below N";
   for (const UnitScale& unit : n_units) {
     emit_number(out, parameter_key("N_upper_bound_slope_ray", unit.key), readings.white_rate_upper_bound * unit.per_si);
     emit_number(out, parameter_key("N_slope_reading_at_1s", unit.key), readings.white_rate_at_1s * unit.per_si);
