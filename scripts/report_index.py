@@ -5,8 +5,8 @@
 
 Reads what scripts/demo left in REPORT: noise/ (allan: noise.yaml, kalibr_imu.yaml, allan.png;
 spectrum/spectrum.png; attitude_error_budget: attitude_error_budget.txt and .png),
-thermal/ (fit_thermal: thermal.yaml, thermal.png), calibration/ (fit_calibration:
-calibration.yaml, calibration_report.txt), repeatability/ (repeatability: repeatability.yaml,
+thermal/ (fit_thermal: thermal.yaml, thermal.png, fit_thermal.txt), calibration/ (fit_calibration:
+calibration.yaml, calibration_report.txt, fit_calibration.txt; the tools' warnings are listed), repeatability/ (repeatability: repeatability.yaml,
 repeatability.png), navigation/rlg/ and navigation/mems/ (navigate raw,
 corrected and on another power-up; scripts/navigation_budget.py: budget.yaml, budget.png),
 rviz.png, rviz_allan.png or rviz_skipped.txt. A missing part is named in the index, not skipped silently.
@@ -164,7 +164,20 @@ def thermal_section(report):
                      f"{axis.get('fitted_delta_bias_peak_to_peak', float('nan')) * scale:.3g} {shown_unit} | "
                      f"{axis.get('residual_rms', float('nan')) * scale:.3g} {shown_unit} |")
     lines += ["", "Model file (for the `thermal_compensator` node): [thermal/thermal.yaml](thermal/thermal.yaml).", ""]
-    return lines
+    return lines + tool_warnings(report, "thermal/fit_thermal.txt")
+
+
+def tool_warnings(report, log):
+    """The warnings a tool printed into its log (REPORT/log), as a list under the section, so that
+    the index never shows a fit's numbers without what the tool said against them."""
+    path = os.path.join(report, log)
+    if not os.path.exists(path):
+        return []
+    with open(path, errors="replace") as handle:
+        warnings = [line.strip() for line in handle if ": warning: " in line]
+    if not warnings:
+        return []
+    return [f"Warnings in [{log}]({log}):", ""] + [f"- {w.split(': warning: ', 1)[1]}" for w in warnings] + [""]
 
 
 def calibration_section(report):
@@ -192,7 +205,7 @@ def calibration_section(report):
               "[calibration/calibration.yaml](calibration/calibration.yaml), "
               "[calibration/calibration_report.txt](calibration/calibration_report.txt), "
               "[calibration/calibration_kalibr_imu_chain.yaml](calibration/calibration_kalibr_imu_chain.yaml).", ""]
-    return lines
+    return lines + tool_warnings(report, "calibration/fit_calibration.txt")
 
 
 def repeatability_section(report, profile):
