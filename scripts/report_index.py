@@ -5,11 +5,11 @@
 
 Reads what scripts/demo left in REPORT: noise/ (allan: noise.yaml, kalibr_imu.yaml, allan.png;
 spectrum/spectrum.png; attitude_error_budget: attitude_error_budget.txt and .png),
-thermal/ (fit_thermal: thermal.yaml, thermal.png, fit_thermal.txt), calibration/ (fit_calibration:
-calibration.yaml, calibration_report.txt, fit_calibration.txt; the tools' warnings are listed), repeatability/ (repeatability: repeatability.yaml,
-repeatability.png), navigation/rlg/ and navigation/mems/ (navigate raw,
-corrected and on another power-up; scripts/navigation_budget.py: budget.yaml, budget.png),
-rviz.png, rviz_allan.png or rviz_skipped.txt. A missing part is named in the index, not skipped silently.
+thermal/ (fit_thermal: thermal.yaml, thermal.png, fit_thermal.txt), calibration/
+(fit_calibration: calibration.yaml, calibration_report.txt, fit_calibration.txt; the warnings in
+the tools' logs are listed), repeatability/ (repeatability: repeatability.yaml, repeatability.png),
+navigation/rlg/ and navigation/mems/ (navigate raw, corrected and on another power-up;
+scripts/navigation_budget.py: budget.yaml, budget.png), rviz.png, rviz_allan.png or rviz_skipped.txt. A missing part is named in the index, not skipped silently.
 Written beside the target and renamed into place.
 """
 import argparse

@@ -314,8 +314,8 @@ bool swap_pass(const SelectionContext& context, std::vector<TermSlot>* remaining
                                    slot_lr_threshold(context.options, standard, context.point_count)) {
       continue;
     }
-    current->steps.push_back({"swap " + term_kind_name(extra.kind) + " for",
-                              term_kind_name((*remaining)[addition.index].kind), statistic, threshold});
+    current->steps.push_back(
+        {"swap " + term_kind_name(extra.kind) + " for", term_kind_name(standard.kind), statistic, threshold});
     remaining->erase(remaining->begin() + addition.index);
     remaining->push_back(extra);
     accept(context, addition.structure, addition.outcome, current);

@@ -90,6 +90,22 @@ std::array<double, 6> psd_plateaus(const std::string& csv) {
   return plateaus;
 }
 
+// Each value of `a` that has a sigma beside it (key, key_sigma) and moves by more than that sigma
+// in `b`.
+void values_beyond_sigma(const std::string& label, const YAML::Node& a, const YAML::Node& b,
+                         std::vector<std::string>* differences) {
+  for (const auto& entry : a) {
+    const std::string key = entry.first.as<std::string>();
+    const std::string sigma_key = key + "_sigma";
+    if (!a[sigma_key] || !b[key]) continue;
+    const double difference = std::abs(entry.second.as<double>() - b[key].as<double>());
+    if (difference > a[sigma_key].as<double>()) {
+      differences->push_back(label + " " + key + " moves by " + std::to_string(difference / a[sigma_key].as<double>()) +
+                             " sigma");
+    }
+  }
+}
+
 // Present (not borderline) terms that differ between two reports, and values of terms present
 // in both that differ by more than the default report's sigma.
 std::vector<std::string> grid_differences(const YAML::Node& coarse, const YAML::Node& dense) {
@@ -107,30 +123,15 @@ std::vector<std::string> grid_differences(const YAML::Node& coarse, const YAML::
         if (present_a != present_b && !borderline)
           differences.push_back(name + " " + term_name + " present in one grid only");
         if (!present_a || !present_b) continue;
-        for (const auto& entry : a) {
-          const std::string key = entry.first.as<std::string>();
-          const std::string sigma_key = key + "_sigma";
-          if (!a[sigma_key] || !b[key]) continue;
-          const double difference = std::abs(entry.second.as<double>() - b[key].as<double>());
-          if (difference > a[sigma_key].as<double>()) {
-            differences.push_back(name + " " + term_name + " " + key + " moves by " +
-                                  std::to_string(difference / a[sigma_key].as<double>()) + " sigma");
-          }
-        }
+        values_beyond_sigma(name + " " + term_name, a, b, &differences);
       }
       // The front end's corner, a fitted parameter like the terms'.
       const YAML::Node front_a = axis.second["front_end"], front_b = dense["triads"][sensor]["axes"][name]["front_end"];
-      if (front_a["low_pass_corner_hz_sigma"] && front_b["low_pass_corner_hz"]) {
-        const double difference =
-            std::abs(front_a["low_pass_corner_hz"].as<double>() - front_b["low_pass_corner_hz"].as<double>());
-        if (difference > front_a["low_pass_corner_hz_sigma"].as<double>()) {
-          differences.push_back(name + " low-pass corner moves by " +
-                                std::to_string(difference / front_a["low_pass_corner_hz_sigma"].as<double>()) +
-                                " sigma");
-        }
-      } else if (static_cast<bool>(front_a["low_pass_corner_hz_sigma"]) !=
-                 static_cast<bool>(front_b["low_pass_corner_hz_sigma"])) {
+      if (static_cast<bool>(front_a["low_pass_corner_hz_sigma"]) !=
+          static_cast<bool>(front_b["low_pass_corner_hz_sigma"])) {
         differences.push_back(name + " low-pass corner fitted in one grid only");
+      } else {
+        values_beyond_sigma(name + " front end", front_a, front_b, &differences);
       }
       // A term present in the dense grid's report only.
       for (const auto& term : other) {
