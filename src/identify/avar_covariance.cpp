@@ -14,6 +14,7 @@
 #include <tuple>
 #include <utility>
 
+#include "imu_lab/common/cancellation.h"
 #include "imu_lab/noise/analytic_avar.h"
 
 namespace imu_lab {
@@ -568,6 +569,7 @@ struct OavarCovariance::Cache {
   // Fills every missing kernel among `indices` (for every factor pair, or the diagonal only),
   // and with `linear` their linear sums too.
   void compute_missing(const std::vector<int>& indices, bool diagonal_only, bool linear) {
+    throw_if_cancelled();  // before anything is filled in: the cache stays whole
     std::vector<std::pair<int, int>> missing;
     for (size_t a = 0; a < indices.size(); ++a) {
       for (size_t b = a; b < indices.size(); ++b) {

@@ -10,6 +10,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "imu_lab/common/cancellation.h"
 #include "imu_lab/common/ceres_solver_options.h"
 #include "imu_lab/identify/chi_squared.h"
 #include "imu_lab/noise/analytic_avar.h"
@@ -296,6 +297,14 @@ class CostBelow : public ceres::IterationCallback {
   double level_;
 };
 
+// Ends a solve as soon as the computation is cancelled (cancellation.h); the caller then throws.
+class AbortWhenCancelled : public ceres::IterationCallback {
+ public:
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
+    return cancellation_requested() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
+  }
+};
+
 }  // namespace
 
 SolveOutcome solve_model(const std::vector<FitPoint>& points, const ModelStructure& structure,
@@ -324,8 +333,12 @@ SolveOutcome solve_model(const std::vector<FitPoint>& points, const ModelStructu
   ceres::Solver::Options options = small_fit_solver_options({100, 1e-10, 1e-12, 1e-10});
   CostBelow stop(stop_below_cost);
   if (std::isfinite(stop_below_cost)) options.callbacks.push_back(&stop);
+  AbortWhenCancelled cancel;
+  options.callbacks.push_back(&cancel);
+  throw_if_cancelled();
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
+  throw_if_cancelled();
   outcome.log_parameters = parameters;
   outcome.cost = summary.final_cost;
   outcome.usable = summary.IsSolutionUsable() && std::isfinite(summary.final_cost);

@@ -4,6 +4,7 @@
 
 #include <exception>
 
+#include "imu_lab/common/cancellation.h"
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/stamps.h"
 #include "imu_lab/identify/bootstrap.h"
@@ -133,6 +134,8 @@ AllanNoiseReport identify_triads(const AllanRunDescription& run, const allan::St
     const std::string name = identify::sensor_prefix(sensor);
     try {
       report.triads.push_back(fit_sensor(sensor, run, snapshot, options));
+    } catch (const Cancelled&) {
+      throw;  // abandoned, not failed: the caller wanted no result
     } catch (const InputError& error) {
       report.problems.push_back(name + " not identified: record too short or curve unusable (" +
                                 std::to_string(record_length_s(snapshot)) + " s of data): " + error.what());

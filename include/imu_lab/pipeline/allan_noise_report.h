@@ -44,7 +44,8 @@ std::string partial_curves_file_name(const std::string& channel_name);
 // segments hold no more data than that).
 double record_length_s(const allan::StreamingSnapshot& snapshot);
 
-// The fits alone (no files): `triads` and `problems` as below, `written` empty.
+// The fits alone (no files): `triads` and `problems` as below, `written` empty. Throws Cancelled
+// (common/cancellation.h) when the thread's cancellation scope asks for it.
 AllanNoiseReport identify_triads(const AllanRunDescription& run, const allan::StreamingSnapshot& snapshot,
                                  const AllanIdentifyOptions& options);
 
