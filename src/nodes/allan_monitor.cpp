@@ -6,10 +6,14 @@
 #include "imu_lab/ros_io/node/allan_monitor_node.h"
 
 int main(int argc, char** argv) {
-  return imu_lab::ros_io::run_node_main(argc, argv, "allan_monitor",
-                                        [](ros::NodeHandle& node, ros::NodeHandle& private_node) {
-                                          imu_lab::ros_io::AllanMonitorNode monitor(node, private_node);
-                                          ros::spin();
-                                          monitor.finish();
-                                        });
+  // Stopped (Ctrl-C, roslaunch, the end of a replayed bag), it writes and logs its report while
+  // still connected.
+  return imu_lab::ros_io::run_node_main(
+      argc, argv, "allan_monitor",
+      [](ros::NodeHandle& node, ros::NodeHandle& private_node) {
+        imu_lab::ros_io::AllanMonitorNode monitor(node, private_node);
+        imu_lab::ros_io::spin_until_stopped();
+        monitor.finish();
+      },
+      imu_lab::ros_io::NodeStop::kFinishConnected);
 }
