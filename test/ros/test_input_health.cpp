@@ -170,4 +170,25 @@ TEST(InputHealth, ANodesOwnConditionTakesItsLevelAndTheWorstLevelWins) {
   EXPECT_EQ(value_of(status, "stale temperature"), "1");
 }
 
+TEST(InputHealth, AHeldConditionKeepsItsLevelForItsReportsThenTheSummaryIsOk) {
+  Stream stream;
+  const auto knocks = stream.health.define_condition("knocks", DiagnosticStatus::WARN, /*hold_reports=*/3);
+  stream.feed(100);
+  stream.health.count(knocks);
+  auto status = stream.report();
+  EXPECT_EQ(status.level, DiagnosticStatus::WARN);
+  EXPECT_EQ(status.message, "1 knocks");
+  for (int later = 1; later <= 3; ++later) {
+    stream.feed(100);
+    status = stream.report();
+    EXPECT_EQ(status.level, DiagnosticStatus::WARN) << "report " << later << " after the knock";
+    EXPECT_EQ(status.message, "knocks: 1 in all, the last one " + std::to_string(later) + " reports ago");
+  }
+  stream.feed(100);
+  status = stream.report();
+  EXPECT_EQ(status.level, DiagnosticStatus::OK);
+  EXPECT_EQ(status.message, "fine");
+  EXPECT_EQ(value_of(status, "knocks"), "1");
+}
+
 }  // namespace

@@ -44,8 +44,8 @@ InputHealth::InputHealth(std::string input, InputHealthSettings settings)
   if (settings_.expected_rate_hz > 0.0) expected_interval_s_ = 1.0 / settings_.expected_rate_hz;
 }
 
-std::size_t InputHealth::define_condition(const std::string& description, Level level) {
-  conditions_.push_back({description, level, {}});
+std::size_t InputHealth::define_condition(const std::string& description, Level level, int hold_reports) {
+  conditions_.push_back({description, level, {}, hold_reports});
   return conditions_.size() - 1;
 }
 
@@ -145,9 +145,16 @@ void InputHealth::fill(diagnostic_updater::DiagnosticStatusWrapper& status, cons
     note(DiagnosticStatus::WARN,
          "input rate " + format("%.4g", last_rate_hz_) + " Hz, expected " + format("%.4g", expected_rate_hz()) + " Hz");
   }
-  for (const Condition& condition : conditions_) {
-    if (condition.count.fresh() > 0)
+  for (Condition& condition : conditions_) {
+    if (condition.count.fresh() > 0) {
       note(condition.level, std::to_string(condition.count.fresh()) + " " + condition.description);
+      condition.reports_since_last = 0;
+    } else if (condition.reports_since_last >= 0 && condition.reports_since_last < condition.hold_reports) {
+      ++condition.reports_since_last;
+      note(condition.level, condition.description + ": " + std::to_string(condition.count.total) +
+                                " in all, the last one " + std::to_string(condition.reports_since_last) +
+                                " reports ago");
+    }
   }
   status.summary(level, problems.empty() ? ok_message : problems);
 

@@ -59,8 +59,11 @@ class InputHealth {
   // does not provide it), else as check_triads; true when both triads are there and usable.
   bool check_values(const ImuRecord& record);
 
-  // The node's own conditions: define once (returns its id), count per occurrence.
-  std::size_t define_condition(const std::string& description, Level level);
+  // The node's own conditions: define once (returns its id), count per occurrence. A condition
+  // with hold_reports > 0 keeps its level for that many further reports after its last
+  // occurrence ("<description>: M in all, the last one N reports ago"): an event that marks the whole record (a
+  // knock left out of the curves) stays visible to someone who looks a little later.
+  std::size_t define_condition(const std::string& description, Level level, int hold_reports = 0);
   void count(std::size_t condition) { ++conditions_.at(condition).count.total; }
 
   bool rate_known() const { return expected_interval_s_ > 0.0; }
@@ -80,6 +83,8 @@ class InputHealth {
     std::string description;
     Level level;
     Count count;
+    int hold_reports = 0;
+    int reports_since_last = -1;  // -1: never happened
   };
   void learn_interval(double interval_s);
 
