@@ -4,10 +4,14 @@
 #include <cmath>
 #include <fstream>
 
+#include "imu_lab/common/cancellation.h"
 #include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/common/usable_imu_values.h"
 #include "imu_lab/ros_io/msg/allan_messages.h"
 #include "imu_lab/ros_io/bag/allan_report.h"
+#include "imu_lab/ros_io/node/launch_parent.h"
+#include "imu_lab/ros_io/node/node_main.h"
 #include "imu_lab/ros_io/msg/noise_messages.h"
 
 namespace imu_lab {
@@ -66,11 +70,14 @@ AllanMonitorNode::AllanMonitorNode(ros::NodeHandle& node, ros::NodeHandle& priva
                   load_input_health_settings(private_node, settings_.engine.gap_factor));
   snapshot_failed_condition_ = health_->define_condition("snapshots that failed (no curves published)",
                                                          diagnostic_msgs::DiagnosticStatus::ERROR);
+  // Held for 30 reports (30 s): a knock marks the whole record, and a replay passes it in a blink.
+  constexpr int kEventHoldReports = 30;
   impulse_condition_ = health_->define_condition(
-      "knocks or spikes (impulse screen events: samples kept from the curves, the run split there)",
-      diagnostic_msgs::DiagnosticStatus::WARN);
-  level_shift_condition_ = health_->define_condition("steps in the level (level-shift screen: the run split there)",
-                                                     diagnostic_msgs::DiagnosticStatus::WARN);
+      "knocks or spikes (impulse screen events: samples left out of the curves, the run split there)",
+      diagnostic_msgs::DiagnosticStatus::WARN, kEventHoldReports);
+  level_shift_condition_ =
+      health_->define_condition("steps in the level (level-shift screen: the run split there)",
+                                diagnostic_msgs::DiagnosticStatus::WARN, kEventHoldReports);
   if (settings_.input == pipeline::AllanInput::kRate) {
     input_subscriber_ = node.subscribe("imu/raw", settings_.queue_size, &AllanMonitorNode::on_imu, this);
   } else {
@@ -153,8 +160,8 @@ void AllanMonitorNode::add(const pipeline::AllanSample& sample, const std_msgs::
   for (; counted_impulse_events_ < screen_.event_count(); ++counted_impulse_events_) {
     health_->count(impulse_condition_);
     ROS_WARN_THROTTLE(kLogThrottle_s,
-                      "allan_monitor: knock or spike detected at %.9f s: its samples are kept "
-                      "from the curves (listed in the report, counted in diagnostics)",
+                      "allan_monitor: knock or spike detected at %.9f s: its samples are left "
+                      "out of the curves (listed in the report, counted in diagnostics)",
                       sample.stamp_ns * 1e-9);
   }
   for (; counted_level_shifts_ < shift_screen_.event_count(); ++counted_level_shifts_) {
@@ -204,6 +211,7 @@ AllanMonitorNode::Current AllanMonitorNode::current() const {
 void AllanMonitorNode::publish_curves() {
   std::lock_guard<std::mutex> lock(mutex_);
   if (finished_) return;
+  if (settings_.on_input_end != AllanMonitorSettings::InputEnd::kKeepRunning) check_input_end();
   // A node never dies on its input: whatever the curves cannot be computed from is reported.
   Current now;
   try {
@@ -221,6 +229,20 @@ void AllanMonitorNode::publish_curves() {
         to_allan_deviation(*latest_snapshot_, statistic, AllanTriad::kGyro, confidence, last_header_));
     accel_publisher_.publish(
         to_allan_deviation(*latest_snapshot_, statistic, AllanTriad::kAccel, confidence, last_header_));
+  }
+}
+
+void AllanMonitorNode::check_input_end() {
+  // This timer's callback runs on the queue the input's callbacks run on, after every message
+  // read before the publisher left (rosbag play sends them all before it exits).
+  if (input_subscriber_.getNumPublishers() > 0) {
+    input_had_publisher_ = true;
+  } else if (input_had_publisher_ && !input_end_seen_) {
+    input_end_seen_ = true;
+    end_launch_ = settings_.on_input_end == AllanMonitorSettings::InputEnd::kEndLaunch;
+    ROS_INFO("allan_monitor: %s has no publisher left (the replay ended): writing the report and exiting%s",
+             input_subscriber_.getTopic().c_str(), end_launch_ ? ", then ending the launch" : "");
+    request_stop();  // node_main.h: main() then calls finish()
   }
 }
 
@@ -261,9 +283,13 @@ void AllanMonitorNode::start_identification() {
   // The fit takes seconds on a long record: off the thread that publishes the curves, on copies.
   identify_thread_ =
       std::thread([this, run = run_description(now), snapshot = std::move(now.snapshot), header = last_header_] {
+        // finish() abandons it: the report it then writes identifies the whole record anyway.
+        CancellationScope scope(abandon_identification_);
         try {
           noise_publisher_.publish(
               to_noise_parameters(pipeline::identify_triads(run, snapshot, settings_.identify), snapshot, header));
+        } catch (const Cancelled&) {
+          ROS_INFO("allan_monitor: the periodic identification in progress was abandoned for the final report");
         } catch (const std::exception& error) {
           ROS_WARN("allan_monitor: periodic identification: %s", error.what());
         }
@@ -271,7 +297,7 @@ void AllanMonitorNode::start_identification() {
       });
 }
 
-std::string AllanMonitorNode::write_report() {
+std::string AllanMonitorNode::write_report(bool publish_noise) {
   const Current now = current();
   if (!now.warmed_up) {
     throw InputError("no report yet: " + std::to_string(now.samples) + " samples on " + input_subscriber_.getTopic() +
@@ -281,7 +307,9 @@ std::string AllanMonitorNode::write_report() {
   const allan::StreamingSnapshot& snapshot = now.snapshot;
   const AllanReportFiles files =
       write_allan_report(settings_.report_dir, run, snapshot, settings_.plot, settings_.identify);
-  if (settings_.identify.enabled) noise_publisher_.publish(to_noise_parameters(files.noise, snapshot, last_header_));
+  if (settings_.identify.enabled && publish_noise) {
+    noise_publisher_.publish(to_noise_parameters(files.noise, snapshot, last_header_));
+  }
   std::string text = "wrote " + std::to_string(files.written.size()) + " files to " + settings_.report_dir + " (" +
                      std::to_string(now.samples) + " samples)";
   if (!files.plot_problem.empty()) text += "; no plot: " + files.plot_problem;
@@ -292,7 +320,7 @@ std::string AllanMonitorNode::write_report() {
 bool AllanMonitorNode::on_write_report(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
   std::lock_guard<std::mutex> lock(mutex_);
   try {
-    response.message = write_report();
+    response.message = write_report(/*publish_noise=*/true);
     response.success = true;
   } catch (const std::exception& error) {
     response.message = error.what();
@@ -307,7 +335,8 @@ void AllanMonitorNode::finish() {
   if (finished_) return;
   finished_ = true;
   identify_timer_.stop();
-  if (identify_thread_.joinable()) {  // the last report's noise message comes after it
+  if (identify_thread_.joinable()) {
+    abandon_identification_ = true;  // a long record's fit would hold the report past roslaunch's timeout
     lock.unlock();
     identify_thread_.join();
     lock.lock();
@@ -323,9 +352,14 @@ void AllanMonitorNode::finish() {
   push_screened();
   try {
     if (!settings_.checkpoint_path.empty()) engine_->save_checkpoint(settings_.checkpoint_path);
-    ROS_INFO("allan_monitor: on shutdown: %s", write_report().c_str());
+    // No allan/noise message: nobody is left to receive it, and its record-length advice costs.
+    ROS_INFO("allan_monitor: on shutdown: %s", write_report(/*publish_noise=*/false).c_str());
   } catch (const std::exception& error) {
     ROS_WARN("allan_monitor: on shutdown: %s", error.what());
+  }
+  if (end_launch_) {
+    const std::string ended = end_parent_roslaunch();
+    ROS_INFO("allan_monitor: %s", ended.c_str());
   }
 }
 
@@ -346,7 +380,7 @@ void AllanMonitorNode::report(diagnostic_updater::DiagnosticStatusWrapper& statu
     status.add("impulse events (knocks, spikes)", screen.event_count);
     status.add("impulse samples dropped", screen.dropped_sample_count);
     if (!screen.events.empty()) {
-      status.add("last impulse event onset [s]", screen.events.back().onset_stamp_ns * 1e-9);
+      status.add("last impulse event onset (stamp) [s]", format_stamp_s(screen.events.back().onset_stamp_ns));
     }
   } else {
     status.add("impulse screen", "off");
@@ -355,7 +389,9 @@ void AllanMonitorNode::report(diagnostic_updater::DiagnosticStatusWrapper& statu
     const allan::LevelShiftReport shifts = shift_screen_.report();
     status.add("level shifts (steps, the run split there)", shifts.event_count);
     status.add("level-shift samples masked", shifts.masked_sample_count);
-    if (!shifts.events.empty()) status.add("last level shift [s]", shifts.events.back().step_stamp_ns * 1e-9);
+    if (!shifts.events.empty()) {
+      status.add("last level shift (stamp) [s]", format_stamp_s(shifts.events.back().step_stamp_ns));
+    }
   } else {
     status.add("level-shift screen", "off");
   }

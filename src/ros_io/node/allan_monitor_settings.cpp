@@ -53,6 +53,17 @@ AllanMonitorSettings load_allan_monitor_settings(const ros::NodeHandle& private_
   settings.queue_size = positive_parameter(private_node, "queue_size", settings.queue_size);
   settings.identify.enabled = parameter(private_node, "identify", settings.identify.enabled);
   settings.identify_period_s = non_negative_parameter(private_node, "identify_period_s", settings.identify_period_s);
+  const std::string on_input_end = parameter<std::string>(private_node, "on_input_end", "keep_running");
+  if (on_input_end == "keep_running") {
+    settings.on_input_end = AllanMonitorSettings::InputEnd::kKeepRunning;
+  } else if (on_input_end == "exit") {
+    settings.on_input_end = AllanMonitorSettings::InputEnd::kExit;
+  } else if (on_input_end == "end_launch") {
+    settings.on_input_end = AllanMonitorSettings::InputEnd::kEndLaunch;
+  } else {
+    throw parameter_error(private_node, "on_input_end",
+                          "is '" + on_input_end + "': it must be keep_running, exit or end_launch");
+  }
   settings.identify.bootstrap_replicas =
       parameter(private_node, "bootstrap_replicas", settings.identify.bootstrap_replicas);
   const std::string replicas_problem = pipeline::bootstrap_replicas_problem(settings.identify.bootstrap_replicas);

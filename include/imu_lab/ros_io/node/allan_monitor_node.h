@@ -16,7 +16,12 @@
 //   and every identify_period_s (0: only with reports), fitted on a thread of its own.
 // Service: ~write_report (std_srvs/Trigger): the allan tool's report files (allan_report.h) in
 //   report_dir, with the noise identification (allan_noise_report.h) unless identify is false;
-//   written again on shutdown.
+//   written again on shutdown (SIGINT), within a few seconds: a periodic identification still
+//   running is abandoned first (common/cancellation.h), since the report identifies anyway.
+//   With on_input_end: exit or end_launch (a replayed bag) the node also shuts down, and writes
+//   the report, once its input topic has had a publisher and has none left; end_launch then ends
+//   the roslaunch that started it (characterise.launch without rviz), so the launch ends cleanly
+//   with the bag instead of a required player's "has died" banner.
 // Checkpoints: with checkpoint_path set, the engine's whole state is saved there (atomically)
 //   every checkpoint_period_s and on shutdown; with resume: true the node starts from it and
 //   skips every input stamp at or before the checkpoint's last stamp (a replay from before it).
@@ -73,13 +78,17 @@ class AllanMonitorNode {
   };
   Current current() const;
   void publish_curves();
+  // Unless on_input_end is keep_running: once the input has had a publisher and has none, shuts
+  // down (finish() then writes the report), and with end_launch ends the launch too.
+  void check_input_end();
   pipeline::AllanRunDescription run_description(const Current& now) const;
   // Identifies the current curves on identify_thread_ and publishes allan/noise, unless the
   // previous identification is still running.
   void start_identification();
   void save_checkpoint();
   bool on_write_report(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
-  std::string write_report();  // with mutex_ held; returns what was written
+  // With mutex_ held; returns what was written. publish_noise: also allan/noise.
+  std::string write_report(bool publish_noise);
   void report(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   std::mutex mutex_;  // a nodelet may run the callbacks on several threads
@@ -110,6 +119,10 @@ class AllanMonitorNode {
   ros::WallTimer identify_timer_;
   std::thread identify_thread_;
   std::atomic<bool> identifying_{false};
+  std::atomic<bool> abandon_identification_{false};  // set by finish(): the thread stops at once
+  bool input_had_publisher_ = false;
+  bool input_end_seen_ = false;
+  bool end_launch_ = false;  // set when the input ended with on_input_end: end_launch
   diagnostic_updater::Updater diagnostics_;
   ros::WallTimer diagnostics_timer_;
 

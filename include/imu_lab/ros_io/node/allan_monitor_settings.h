@@ -5,6 +5,10 @@
 //   checkpoint_period_s (60), resume (false), queue_size (20000); identify (true: fit the noise
 //   model with every report), identify_period_s (0: with reports only; > 0: also this often, on
 //   its own thread), bootstrap_replicas (0 = off; >= 2: bootstrap sigmas, slow);
+//   on_input_end (keep_running | exit | end_launch; keep_running): what the node does once its
+//   input topic, having had a publisher, has none left (a replayed bag ended): nothing; write the
+//   report and exit, as on shutdown; or that, and end the roslaunch that started it as Ctrl-C
+//   would (only when its parent process is roslaunch);
 //   the engine's (streaming_options.h): points_per_decade (10), max_tau_s (1e4),
 //   exact_max_averaging_factor (1000), confidence (0.683), warm_up_sample_count (1000),
 //   gap_factor (1.5). Gaps always split and pool: a live node never stops on bad stamps.
@@ -41,6 +45,8 @@ struct AllanMonitorSettings {
   int queue_size = 20000;
   pipeline::AllanIdentifyOptions identify;
   double identify_period_s = 0.0;
+  enum class InputEnd { kKeepRunning, kExit, kEndLaunch };
+  InputEnd on_input_end = InputEnd::kKeepRunning;
   allan::StreamingOptions engine;
   allan::ImpulseScreenOptions screen;           // channel_count and gap_factor follow the engine's
   allan::LevelShiftScreenOptions level_shifts;  // likewise
