@@ -55,17 +55,20 @@ AllanReportFiles write_allan_report(const std::string& directory, const pipeline
       staging + "/allan_summary.yaml",
       pipeline::format_allan_summary(run, snapshot) + pipeline::format_identification_summary(identify, files.noise));
   files.written.push_back("allan_summary.yaml");
-  if (plot) {
-    files.plot_problem =
-        run_plot_script("plot_allan.py", {staging, "--statistic", "oadev", "--out", staging + "/allan.png"});
-    if (files.plot_problem.empty())
-      files.written.push_back("allan.png");
-    else
-      files.plot_problem += ", so no plot";
-  }
   for (const std::string& name : report_file_names()) set.remove_at_commit(directory + "/" + name);
   set.commit();
   for (std::string& name : files.written) name = directory + "/" + name;
+  // The picture after the numbers are in: drawing it (a Python interpreter and matplotlib) takes
+  // about as long as the identification, and a node stopped by roslaunch must not lose its
+  // numbers to it. The script writes allan.png atomically itself; the old one went at commit.
+  if (plot) {
+    const std::string picture = directory + "/allan.png";
+    files.plot_problem = run_plot_script("plot_allan.py", {directory, "--statistic", "oadev", "--out", picture});
+    if (files.plot_problem.empty())
+      files.written.push_back(picture);
+    else
+      files.plot_problem += ", so no plot";
+  }
   return files;
 }
 

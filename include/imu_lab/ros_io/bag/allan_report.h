@@ -5,7 +5,8 @@
 //   DIR/allan.png (scripts/plot_allan.py, OADEV, with the fitted model's partial curves), and,
 //   unless identification is off, the noise identification's files (allan_noise_report.h), and,
 //   when the run removed a warm-up first, DIR/warm_up.yaml (allan_warm_up.h).
-//   Each file is written atomically; DIR is created.
+//   The data files are one set, moved in together (atomic_file.h); allan.png is drawn from them
+//   after that, and written atomically on its own. DIR is created.
 #pragma once
 
 #include <string>
