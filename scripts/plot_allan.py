@@ -2,19 +2,24 @@
 """Plots the stability CSV written by imu_lab's `allan` tool: log-log deviation against tau,
 gyro and accelerometer panels, chi-squared confidence bands, and slope guides. Where the noise
 identification wrote noise_partial_<channel>.csv, the fitted total (solid) and each term's
-partial curve (the channel's colour, the term's line style, drawn where it carries 1 % of the
-AVAR) are drawn over the measured points.
+partial curve (the channel's colour, the term family's line style or marker, drawn where it
+carries 10 % of the AVAR) are drawn over the measured points, and a measured point the fitted
+total misses by a factor 3 or more is named on the plot with the factor and whether it lies in
+the point's 95 % band (the longest taus have a few degrees of freedom: a wide band).
 
-usage: plot_allan.py REPORT_DIR [--statistic oadev] [--out REPORT_DIR/allan.png]
+usage: plot_allan.py REPORT_DIR [--statistic oadev] [--out REPORT_DIR/allan.png (or .svg)]
 """
 import argparse
 import csv
+import math
 import os
+import re
 import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
+matplotlib.rcParams["svg.fonttype"] = "none"  # an .svg keeps its text as text
 import matplotlib.lines  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 
@@ -54,33 +59,91 @@ def read_partial_curves(report_dir, channel):
     total_column = next(name for name in columns if name.startswith("fit_total_dev_"))
     unit = total_column[len("fit_total_dev_"):]
     term_columns = [name for name in columns[3:] if name.endswith("_dev_" + unit)]
+    band_low, band_high = f"band95_low_{unit}", f"band95_high_{unit}"
+    has_band = band_low in columns and band_high in columns
     return {
         "tau": [float(row["tau_s"]) for row in rows],
+        "measured": [float(row[f"measured_dev_{unit}"]) for row in rows],
         "total": [float(row[total_column]) for row in rows],
         "terms": {name[: -len("_dev_" + unit)]: [float(row[name]) for row in rows] for name in term_columns},
+        "band": ([float(row[band_low]) for row in rows], [float(row[band_high]) for row in rows]) if has_band
+        else None,
     }
 
 
 # A partial curve is drawn only where it reaches this fraction of the fitted total in deviation,
-# 1 % of the AVAR: a smaller share moves the total by under 0.5 %, inside the band's +-1 % floor
-# (doc/identification.md, "The 95 % band"), and drawing it would squeeze the data into the top.
-PARTIAL_FLOOR = 0.1
-# Line styles of the terms, one per term name in order of first appearance on a panel; the colour
-# is the channel's.
-TERM_STYLES = ("--", "-.", ":", (0, (5, 2, 1, 2)), (0, (1, 1)), (0, (3, 1, 1, 1, 1, 1)), (0, (8, 2)),
-               (0, (2, 2, 6, 2)))
+# 10 % of the AVAR: the curves say which term carries the total where, and a term below a tenth
+# of it carries nothing there (drawn, the small ones crowd the panel and squeeze the data into
+# its top).
+PARTIAL_FLOOR = math.sqrt(0.1)
+# One look per term family (markov_1 and markov_2 are both Markov noise): the five IEEE Std 952
+# terms as line styles, the others as thin lines with a marker, so that no two families look
+# alike; the colour is the channel's.
+FAMILY_STYLES = {
+    "white_rate": {"linestyle": "--"},
+    "bias_instability": {"linestyle": ":"},
+    "random_walk": {"linestyle": "-."},
+    "white_angle": {"linestyle": (0, (8, 3))},
+    "rate_ramp": {"linestyle": (0, (6, 2, 1, 2, 1, 2))},
+    "markov": {"linestyle": "-", "marker": "v"},
+    "sinusoid": {"linestyle": "-", "marker": "^"},
+    "resonance": {"linestyle": "-", "marker": "s"},
+    "output_quantization": {"linestyle": "-", "marker": "x"},
+}
+OTHER_STYLE = {"linestyle": "-", "marker": "d"}  # the zero-at-DC families
+# A measured point the fitted total misses by this factor or more is named on the plot.
+MISS_FACTOR = 3.0
 
 
-def draw_fit(axis, fit, color, term_styles):
-    """The fitted total (solid) and the terms' partial curves where they matter, in the channel's
-    colour and each term's style (term_styles: term -> style, extended here)."""
+def term_family(term):
+    """"markov_1" -> "markov": the numbered terms of one kind share a look."""
+    return re.sub(r"_\d+$", "", term)
+
+
+def family_style(family):
+    style = dict(FAMILY_STYLES.get(family, OTHER_STYLE))
+    if "marker" in style:
+        style.update(markersize=3, markevery=2, linewidth=0.6)
+    else:
+        style.update(linewidth=0.9)
+    return style
+
+
+def draw_fit(axis, channel, fit, color, families):
+    """The fitted total (solid) and the terms' partial curves where they carry 10 % of the AVAR,
+    in the channel's colour and each family's look (families: the set drawn, extended here)."""
     axis.loglog(fit["tau"], fit["total"], color=color, linewidth=1.2)
     for term, devs in fit["terms"].items():
         shown = [d if d >= PARTIAL_FLOOR * total else float("nan") for d, total in zip(devs, fit["total"])]
         if all(d != d for d in shown):
             continue
-        style = term_styles.setdefault(term, TERM_STYLES[len(term_styles) % len(TERM_STYLES)])
-        axis.loglog(fit["tau"], shown, color=color, linewidth=0.8, linestyle=style)
+        family = term_family(term)
+        families.add(family)
+        axis.loglog(fit["tau"], shown, color=color, gid=f"partial:{channel}:{term}", **family_style(family))
+
+
+def note_misses(axis, channel, fit, color):
+    """Names the measured point the fitted total misses most, when by MISS_FACTOR or more: the
+    factor and whether the point's 95 % band holds the total (at the longest taus it is wide)."""
+    worst = None
+    for i, (measured, total) in enumerate(zip(fit["measured"], fit["total"])):
+        if not (measured > 0 and total > 0):
+            continue
+        factor = max(total / measured, measured / total)
+        if factor >= MISS_FACTOR and (worst is None or factor > worst[1]):
+            worst = (i, factor)
+    if worst is None:
+        return
+    i, factor = worst
+    tau, measured, total = fit["tau"][i], fit["measured"][i], fit["total"][i]
+    side = "above" if total > measured else "below"
+    inside = fit["band"] is not None and fit["band"][0][i] <= total <= fit["band"][1][i]
+    where = "inside its 95 % band (few degrees of freedom)" if inside else "outside its 95 % band"
+    axis.plot([tau], [measured], marker="o", markersize=7, markerfacecolor="none", markeredgecolor=color,
+              linestyle="none", gid=f"miss:{channel}")
+    axis.annotate(f"{channel}: fit {factor:.0f}x {side} this point at {tau:.4g} s,\n{where}", (tau, measured),
+                  xytext=(-10, -16), textcoords="offset points", ha="right", va="top", fontsize=6.5, color=color,
+                  bbox={"facecolor": "white", "edgecolor": "none", "alpha": 0.8, "pad": 1})
 
 
 def slope_guides(axis, taus, devs):
@@ -115,7 +178,7 @@ def plot(report_dir, statistic, out_path):
     for axis, sensor in zip(axes[0], sensors):
         members = [c for c in curves if sensor == "all" or c.startswith(sensor)]
         unit = curves[members[0]][0].replace("_", "/").replace("s2", "s^2")
-        term_styles = {}
+        families = set()
         channel_handles = []
         for channel in members:
             _, taus, dev, lo, hi = curves[channel]
@@ -126,7 +189,8 @@ def plot(report_dir, statistic, out_path):
             channel_handles.append(line)
             axis.fill_between(taus, lo, hi, color=line.get_color(), alpha=0.2, linewidth=0)
             if fit:
-                draw_fit(axis, fit, line.get_color(), term_styles)
+                draw_fit(axis, channel, fit, line.get_color(), families)
+                note_misses(axis, channel, fit, line.get_color())
         axis.set_ylim(*data_limits(curves, members))
         _, taus, dev, _, _ = curves[members[0]]
         slope_guides(axis, taus, dev)
@@ -136,15 +200,18 @@ def plot(report_dir, statistic, out_path):
         axis.grid(True, which="both", alpha=0.3)
         # Colour names the channel, line style the term: each is named once.
         channels = axis.legend(handles=channel_handles, fontsize=7, loc="lower left")
-        if term_styles:
+        if families:
             axis.add_artist(channels)
-            term_handles = [matplotlib.lines.Line2D([], [], color="0.3", linewidth=0.8, linestyle=style, label=term)
-                            for term, style in term_styles.items()]
+            ordered = [f for f in FAMILY_STYLES if f in families] + sorted(families - FAMILY_STYLES.keys())
+            term_handles = [matplotlib.lines.Line2D([], [], color="0.3", label=family, **family_style(family))
+                            for family in ordered]
             axis.legend(handles=term_handles, fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.12),
-                        ncol=4, title="partial curves (where >= 1 % of the AVAR)", title_fontsize=7, frameon=False)
+                        ncol=4, title="partial curves (where >= 10 % of the AVAR)", title_fontsize=7, frameon=False)
     figure.tight_layout()
-    figure.savefig(out_path + ".tmp.png", dpi=110)
-    os.replace(out_path + ".tmp.png", out_path)  # atomic: a reader never sees half a picture
+    root, extension = os.path.splitext(out_path)
+    staged = root + ".tmp" + (extension or ".png")  # the extension picks the format
+    figure.savefig(staged, dpi=110)
+    os.replace(staged, out_path)  # atomic: a reader never sees half a picture
 
 
 def main():
@@ -159,8 +226,7 @@ def main():
     except (OSError, ValueError, KeyError) as error:
         print(f"plot_allan: {error}", file=sys.stderr)
         return 1
-    print(f"plot_allan: wrote {out}")
-    return 0
+    return 0  # quiet: the caller (allan, allan_monitor) names the files it wrote
 
 
 if __name__ == "__main__":

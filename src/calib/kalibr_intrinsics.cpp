@@ -6,17 +6,6 @@
 
 namespace imu_lab {
 namespace calib {
-namespace {
-
-void write_matrix(std::ostream& out, const std::string& key, const Eigen::Matrix3d& m) {
-  out << "  " << key << ":\n";
-  for (int row = 0; row < 3; ++row) {
-    out << "    - [" << m(row, 0) << ", " << m(row, 1) << ", " << m(row, 2) << "]\n";
-  }
-}
-
-}  // namespace
-
 void lower_triangular_times_rotation(const Eigen::Matrix3d& m, Eigen::Matrix3d& lower, Eigen::Matrix3d& rotation) {
   // M^T = Q R  =>  M = R^T Q^T; signs moved so that the diagonal is positive.
   const Eigen::HouseholderQR<Eigen::Matrix3d> qr(m.transpose());
@@ -50,20 +39,13 @@ std::string kalibr_imu_chain_yaml(const CalibrationResult& result, const std::st
       << result.calibration.gyro.bias.transpose() << " rad/s, accelerometer "
       << result.calibration.accelerometer.bias.transpose() << " m/s^2 (OpenVINS estimates its own).\n"
       << "# Random walks are not measured by a calibration run: replace them with the allan tool's values.\n";
-  out << "imu0:\n";
-  out << "  T_i_b:\n    - [1.0, 0.0, 0.0, 0.0]\n    - [0.0, 1.0, 0.0, 0.0]\n    - [0.0, 0.0, 1.0, 0.0]\n"
-      << "    - [0.0, 0.0, 0.0, 1.0]\n";
-  out << "  accelerometer_noise_density: " << result.noise.force_density_m_s2_per_sqrt_hz.mean() << "\n";
-  out << "  accelerometer_random_walk: 0.0\n";
-  out << "  gyroscope_noise_density: " << result.noise.rate_density_rad_s_per_sqrt_hz.mean() << "\n";
-  out << "  gyroscope_random_walk: 0.0\n";
-  out << "  rostopic: " << topic << "\n  time_offset: 0.0\n  update_rate: " << rate_hz << "\n";
-  out << "  model: \"kalibr\"\n";
-  write_matrix(out, "Tw", k.Tw);
-  write_matrix(out, "R_IMUtoGYRO", k.R_IMUtoGYRO);
-  write_matrix(out, "Ta", k.Ta);
-  write_matrix(out, "R_IMUtoACC", k.R_IMUtoACC);
-  write_matrix(out, "Tg", k.Tg);
+  identify::ImuChainNode node;
+  node.accelerometer_noise_density = result.noise.force_density_m_s2_per_sqrt_hz.mean();
+  node.gyroscope_noise_density = result.noise.rate_density_rad_s_per_sqrt_hz.mean();
+  node.rostopic = topic;
+  node.update_rate_hz = rate_hz;
+  node.intrinsics = k;
+  identify::write_imu_chain_node(out, node);
   return out.str();
 }
 

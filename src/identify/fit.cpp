@@ -573,7 +573,8 @@ FitResult fit_noise_model(const std::vector<allan::StabilityPoint>& points, doub
   describe_model_terms(selected, span, selected_log_covariance, &fit);
   describe_absent_terms(selected, span, additions, &fit);
   fit.band = band_check(evaluable, fit.model, span);
-  fit.warnings = fit_warnings(fit);
+  fit.findings = fit_findings(fit);
+  fit.warnings = fit_warnings(fit.findings);
   return fit;
 }
 

@@ -91,13 +91,65 @@ std::string format_kalibr_imu_yaml(const KalibrImuNoise& noise) {
              noise.update_rate_hz);
   write_pair(out, "gyroscope", "rad/s", noise.gyroscope_noise_density, noise.gyroscope_random_walk,
              noise.update_rate_hz);
-  out << "rostopic: " << noise.rostopic << "\n";
+  out << "rostopic: " << noise.rostopic << "  # " << rostopic_reminder(noise.rostopic) << "\n";
   out << "update_rate: " << noise.update_rate_hz << "  # [Hz] measured\n";
   return out.str();
 }
 
 void write_kalibr_imu_yaml(const std::string& path, const KalibrImuNoise& noise) {
   write_file_atomically(path, format_kalibr_imu_yaml(noise));
+}
+
+std::string rostopic_reminder(const std::string& rostopic) {
+  return "the recording's topic" + std::string(rostopic.empty() ? "" : " (" + rostopic + ")") +
+         ": set it to the one your IMU publishes on";
+}
+
+void write_imu_chain_node(std::ostream& out, const ImuChainNode& node) {
+  const auto matrix = [&out](const char* key, const Eigen::Matrix3d& m) {
+    out << "  " << key << ":\n";
+    for (int row = 0; row < 3; ++row) out << "    - [" << m(row, 0) << ", " << m(row, 1) << ", " << m(row, 2) << "]\n";
+  };
+  out << "imu0:\n";
+  out << "  T_i_b:\n    - [1.0, 0.0, 0.0, 0.0]\n    - [0.0, 1.0, 0.0, 0.0]\n    - [0.0, 0.0, 1.0, 0.0]\n"
+      << "    - [0.0, 0.0, 0.0, 1.0]\n";
+  out << "  accelerometer_noise_density: " << node.accelerometer_noise_density << "\n";
+  out << "  accelerometer_random_walk: " << node.accelerometer_random_walk << "\n";
+  out << "  gyroscope_noise_density: " << node.gyroscope_noise_density << "\n";
+  out << "  gyroscope_random_walk: " << node.gyroscope_random_walk << "\n";
+  out << "  rostopic: " << node.rostopic << (node.rostopic_comment.empty() ? "" : "  # " + node.rostopic_comment)
+      << "\n";
+  out << "  time_offset: 0.0\n  update_rate: " << node.update_rate_hz << "\n";
+  out << "  model: \"kalibr\"\n";
+  matrix("Tw", node.intrinsics.Tw);
+  matrix("R_IMUtoGYRO", node.intrinsics.R_IMUtoGYRO);
+  matrix("Ta", node.intrinsics.Ta);
+  matrix("R_IMUtoACC", node.intrinsics.R_IMUtoACC);
+  matrix("Tg", node.intrinsics.Tg);
+}
+
+std::string format_kalibr_imu_chain_yaml(const KalibrImuNoise& noise) {
+  std::ostringstream out;
+  out.precision(17);
+  out << "%YAML:1.0\n"
+         "# IMU noise model for OpenVINS (its relative_config_imu file), identified by imu_lab's allan:\n"
+         "# the values of kalibr_imu.yaml beside it (continuous time, the largest over each sensor's axes;\n"
+         "# that file says which are upper bounds). No intrinsics were calibrated: Tw, Ta and the\n"
+         "# rotations are identity (fit_calibration's <name>_kalibr_imu_chain.yaml has them).\n";
+  ImuChainNode node;
+  node.accelerometer_noise_density = noise.accelerometer_noise_density.value;
+  node.accelerometer_random_walk = noise.accelerometer_random_walk.value;
+  node.gyroscope_noise_density = noise.gyroscope_noise_density.value;
+  node.gyroscope_random_walk = noise.gyroscope_random_walk.value;
+  node.rostopic = noise.rostopic;
+  node.rostopic_comment = rostopic_reminder(noise.rostopic);
+  node.update_rate_hz = noise.update_rate_hz;
+  write_imu_chain_node(out, node);
+  return out.str();
+}
+
+void write_kalibr_imu_chain_yaml(const std::string& path, const KalibrImuNoise& noise) {
+  write_file_atomically(path, format_kalibr_imu_chain_yaml(noise));
 }
 
 }  // namespace identify

@@ -158,12 +158,16 @@ AllanNoiseReport write_allan_noise_report(const std::string& directory, const Al
   report.written.push_back(noise_path);
 
   if (report.triads.size() == kSensors.size()) {
+    report.kalibr = identify::kalibr_noise(report.triads[0], report.triads[1], metadata.update_rate_hz, run.topic);
     const std::string kalibr_path = directory + "/kalibr_imu.yaml";
-    identify::write_kalibr_imu_yaml(
-        kalibr_path, identify::kalibr_noise(report.triads[0], report.triads[1], metadata.update_rate_hz, run.topic));
+    identify::write_kalibr_imu_yaml(kalibr_path, *report.kalibr);
     report.written.push_back(kalibr_path);
+    const std::string chain_path = directory + "/kalibr_imu_chain.yaml";
+    identify::write_kalibr_imu_chain_yaml(chain_path, *report.kalibr);
+    report.written.push_back(chain_path);
   } else {
-    report.problems.push_back("no kalibr_imu.yaml: it needs both the gyro and the accelerometer identified");
+    report.problems.push_back(
+        "no kalibr_imu.yaml or kalibr_imu_chain.yaml: they need both the gyro and the accelerometer identified");
   }
 
   for (const identify::TriadFit& triad : report.triads) {

@@ -31,7 +31,8 @@ void emit_irregularity(YAML::Emitter& out, const char* key, std::int64_t count, 
   out << YAML::EndMap;
 }
 
-void emit_timing(YAML::Emitter& out, const allan::TimingReport& timing, bool stop_policy) {
+void emit_timing(YAML::Emitter& out, const AllanRunDescription& run, const allan::TimingReport& timing) {
+  const bool stop_policy = run.engine.stamp_policy == allan::StampPolicy::kStop;
   out << YAML::Key << "tau0_s" << YAML::Value << timing.tau0_s;
   out << YAML::Key << "sample_rate_hz" << YAML::Value << (timing.tau0_s > 0.0 ? 1.0 / timing.tau0_s : 0.0);
   out << YAML::Key << "interval_rms_deviation_s" << YAML::Value << timing.interval_rms_deviation_s;
@@ -39,6 +40,9 @@ void emit_timing(YAML::Emitter& out, const allan::TimingReport& timing, bool sto
   out << YAML::Key << "stamp_policy" << YAML::Value << (stop_policy ? "stop" : "split_and_pool");
   emit_irregularity(out, "gaps", timing.gap_count, "run split at each gap, the segments' sums pooled");
   out << YAML::Key << "gap_time_s" << YAML::Value << timing.gap_time_s;
+  // Of those, the holes the impulse screen left where it took a knock out: not the input's.
+  const ScreenMadeGaps screen_gaps = impulse_screen_gaps(timing, run.impulses, run.engine.gap_factor);
+  out << YAML::Key << "gaps_made_by_impulse_screen" << YAML::Value << screen_gaps.count;
   emit_irregularity(out, "duplicates", timing.duplicate_count, "samples dropped");
   emit_irregularity(out, "out_of_order", timing.out_of_order_count, "samples dropped");
   out << YAML::Key << "first_stamp_events" << YAML::Value << YAML::BeginSeq;
@@ -202,6 +206,32 @@ void emit_split_files(YAML::Emitter& out, const AllanRunDescription& run) {
 
 }  // namespace
 
+ScreenMadeGaps impulse_screen_gaps(const allan::TimingReport& timing, const allan::ImpulseScreenReport& screen,
+                                   double gap_factor) {
+  ScreenMadeGaps made;
+  const double largest_regular_ns = gap_factor * timing.tau0_s * 1e9;
+  for (const allan::StampEvent& gap : timing.events) {
+    if (gap.kind != allan::StampEventKind::kGap) continue;
+    // The holes between the samples the input had there: from the last accepted stamp to each
+    // dropped window, between windows, and from the last window to the gap's stamp.
+    std::int64_t hole_start_ns = gap.previous_stamp_ns;
+    std::int64_t largest_hole_ns = 0;
+    bool holds_a_window = false;
+    for (const allan::ImpulseEvent& window : screen.events) {
+      if (window.start_stamp_ns <= gap.previous_stamp_ns || window.end_stamp_ns >= gap.stamp_ns) continue;
+      holds_a_window = true;
+      largest_hole_ns = std::max(largest_hole_ns, window.start_stamp_ns - hole_start_ns);
+      hole_start_ns = window.end_stamp_ns;
+    }
+    largest_hole_ns = std::max(largest_hole_ns, gap.stamp_ns - hole_start_ns);
+    if (holds_a_window && static_cast<double>(largest_hole_ns) <= largest_regular_ns) {
+      ++made.count;
+      made.time_s += seconds_between(gap.previous_stamp_ns, gap.stamp_ns) - timing.tau0_s;
+    }
+  }
+  return made;
+}
+
 const allan::StabilityPoint* minimum_point(const std::vector<allan::StabilityPoint>& curve) {
   const auto smallest = std::min_element(curve.begin(), curve.end(),
                                          [](const auto& a, const auto& b) { return a.deviation < b.deviation; });
@@ -230,7 +260,7 @@ std::string format_allan_summary(const AllanRunDescription& run, const allan::St
   if (run.skipped_before_checkpoint > 0) {
     out << YAML::Key << "skipped_before_checkpoint" << YAML::Value << run.skipped_before_checkpoint;
   }
-  emit_timing(out, snapshot.timing, run.engine.stamp_policy == allan::StampPolicy::kStop);
+  emit_timing(out, run, snapshot.timing);
   emit_impulses(out, run);
   emit_level_shifts(out, run);
   emit_channels(out, run, snapshot);
@@ -256,10 +286,10 @@ namespace pipeline {
 std::string format_impulse_events(const std::string& prefix, const allan::ImpulseScreenReport& screen) {
   if (!screen.enabled) return prefix + "impulse screen off: knocks and spikes, if any, are in the curves\n";
   char line[512];
-  std::snprintf(line, sizeof line, "impulse screen (threshold %.3g scales): %lld events, %lld samples dropped%s\n",
-                screen.threshold_sigma, static_cast<long long>(screen.event_count),
-                static_cast<long long>(screen.dropped_sample_count),
-                screen.event_count > 0 ? "; the run is split at each" : "");
+  std::snprintf(
+      line, sizeof line, "impulse screen (threshold %.3g scales): %lld events, %lld samples left out of the curves%s\n",
+      screen.threshold_sigma, static_cast<long long>(screen.event_count),
+      static_cast<long long>(screen.dropped_sample_count), screen.event_count > 0 ? "; the run is split at each" : "");
   std::string text = prefix + line;
   const auto from_start_s = [&](std::int64_t stamp_ns) { return seconds_between(screen.first_stamp_ns, stamp_ns); };
   for (std::size_t i = 0; i < screen.events.size(); ++i) {

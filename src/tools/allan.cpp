@@ -1,7 +1,8 @@
 // allan: bag -> the nine Allan-family stability curves (CSV per statistic), a YAML summary of the
-// stamps and channels, the identified noise model (noise.yaml, kalibr_imu.yaml, partial curves)
-// and a plot, in one streaming pass (see include/imu_lab/ros_io/bag/allan_bag_pass.h, allan_report.h and
-// allan_noise_report.h). Nothing is written unless the whole pass succeeds.
+// stamps and channels, the identified noise model (noise.yaml; kalibr_imu.yaml for Kalibr,
+// kalibr_imu_chain.yaml for OpenVINS; partial curves) and a plot, in one streaming pass (see
+// include/imu_lab/ros_io/bag/allan_bag_pass.h, allan_report.h and allan_noise_report.h). Nothing
+// is written unless the whole pass succeeds.
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -23,7 +24,41 @@
 
 namespace {
 
-void print_summary(const imu_lab::ros_io::AllanBagPassResult& result, const imu_lab::ros_io::AllanReportFiles& files) {
+// What a user came for first: the Kalibr numbers, the IEEE terms per axis and the warnings in
+// plain words (pipeline/noise_table.h); --verbose adds the full table with every warning.
+void print_noise(const imu_lab::pipeline::AllanNoiseReport& noise, bool verbose) {
+  if (noise.kalibr) {
+    std::printf("allan: Kalibr / OpenVINS noise model (the largest over each sensor's axes):\n%s",
+                imu_lab::pipeline::format_kalibr_lines(*noise.kalibr).c_str());
+  }
+  if (noise.triads.empty()) return;
+  std::printf("allan: noise terms per axis (IEEE Std 952; value ± 1 sigma, \"< x\": not found, at most x):\n%s",
+              imu_lab::pipeline::format_ieee_table(noise.triads).c_str());
+  const std::size_t warnings = imu_lab::pipeline::warning_count(noise.triads);
+  if (verbose) {
+    std::printf("allan: identified noise in full (noise.yaml has SI values, bounds and warnings):\n%s",
+                imu_lab::pipeline::format_noise_table(noise.triads).c_str());
+  } else if (warnings > 0) {
+    std::printf("allan: %zu warnings, grouped (noise.yaml words each in full; --verbose prints them):\n%s", warnings,
+                imu_lab::pipeline::format_grouped_findings(noise.triads).c_str());
+  }
+}
+
+// "allan: wrote DIR/: a.csv b.csv ..." (every file of the report is in one directory).
+void print_written(const std::vector<std::string>& paths) {
+  if (paths.empty()) return;
+  const std::string& first = paths.front();
+  const std::size_t slash = first.rfind('/');
+  const std::string directory = slash == std::string::npos ? "." : first.substr(0, slash);
+  std::string names;
+  for (const std::string& path : paths) names += " " + path.substr(path.rfind('/') + 1);
+  std::printf("allan: wrote %s/:%s\n", directory.c_str(), names.c_str());
+}
+
+void print_summary(const imu_lab::ros_io::AllanBagPassResult& result, const imu_lab::ros_io::AllanReportFiles& files,
+                   bool verbose) {
+  print_noise(files.noise, verbose);
+  for (const auto& problem : files.noise.problems) std::fprintf(stderr, "allan: identification: %s\n", problem.c_str());
   const auto& timing = result.snapshot.timing;
   std::printf("allan: %s, topic %s: %lld samples, tau0 %.9g s (%.6g Hz), interval jitter rms %.3g s, max %.3g s\n",
               result.bag_path.c_str(), result.topic.c_str(), static_cast<long long>(timing.input_sample_count),
@@ -39,11 +74,14 @@ void print_summary(const imu_lab::ros_io::AllanBagPassResult& result, const imu_
   for (const auto& channel : result.snapshot.channels) non_finite += channel.non_finite_count;
   // The level-shift screen's NaNs are its own, reported with it.
   for (const std::int64_t masked : result.level_shifts.channel_masked_counts) non_finite -= masked;
-  if (timing.gap_count + timing.duplicate_count + timing.out_of_order_count + non_finite > 0) {
+  // So are the holes the impulse screen leaves: gaps to the engine, not in the input.
+  const auto screen_gaps = imu_lab::pipeline::impulse_screen_gaps(timing, result.impulses, result.engine.gap_factor);
+  const long long input_gaps = timing.gap_count - screen_gaps.count;
+  if (input_gaps + timing.duplicate_count + timing.out_of_order_count + non_finite > 0) {
     std::printf(
         "allan: irregular input (split and pooled / dropped, see allan_summary.yaml): %lld gaps (%.6g s), "
         "%lld duplicate and %lld out-of-order stamps, %lld NaN/Inf or unusable values\n",
-        static_cast<long long>(timing.gap_count), timing.gap_time_s, static_cast<long long>(timing.duplicate_count),
+        input_gaps, timing.gap_time_s - screen_gaps.time_s, static_cast<long long>(timing.duplicate_count),
         static_cast<long long>(timing.out_of_order_count), non_finite);
   }
   for (const auto& [count, field, triad] :
@@ -64,13 +102,14 @@ void print_summary(const imu_lab::ros_io::AllanBagPassResult& result, const imu_
   }
   std::printf("allan: output steps (LSB; none: not quantised): %s\n",
               imu_lab::pipeline::format_output_steps(result.input, result.output_steps).c_str());
-  for (const auto& path : files.written) std::printf("allan: wrote %s\n", path.c_str());
-  if (!files.plot_problem.empty()) std::fprintf(stderr, "allan: warning: %s\n", files.plot_problem.c_str());
-  for (const auto& problem : files.noise.problems) std::fprintf(stderr, "allan: identification: %s\n", problem.c_str());
-  if (!files.noise.triads.empty()) {
-    std::printf("allan: identified noise (noise.yaml has SI values, bounds and warnings):\n%s",
-                imu_lab::pipeline::format_noise_table(files.noise.triads).c_str());
+  print_written(files.written);
+  if (files.noise.kalibr) {
+    std::printf(
+        "allan: kalibr_imu.yaml and kalibr_imu_chain.yaml (OpenVINS) hold rostopic %s, the recording's: set "
+        "it to the topic your IMU publishes on\n",
+        files.noise.kalibr->rostopic.c_str());
   }
+  if (!files.plot_problem.empty()) std::fprintf(stderr, "allan: warning: %s\n", files.plot_problem.c_str());
 }
 
 }  // namespace
@@ -84,6 +123,7 @@ int main(int argc, char** argv) {
   bool progress = false;
   bool no_plot = false;
   bool no_identify = false;
+  bool verbose = false;
   imu_lab::pipeline::AllanIdentifyOptions identify;
   imu_lab::ros_io::AllanBagPassOptions options;
   auto& engine = options.engine;
@@ -137,7 +177,11 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 3));
   app.add_flag("--progress", progress, "progress bar on stderr even when it is not a terminal");
   app.add_flag("--no-plot", no_plot, "do not write allan.png");
-  app.add_flag("--no-identify", no_identify, "do not fit the noise model (no noise.yaml, kalibr_imu.yaml)");
+  app.add_flag("--no-identify", no_identify,
+               "do not fit the noise model (no noise.yaml, kalibr_imu.yaml, kalibr_imu_chain.yaml)");
+  app.add_flag("--verbose", verbose,
+               "print every identified term with its interval and shape, and every warning as noise.yaml words it "
+               "(by default: the Kalibr numbers, the IEEE terms per axis and the warnings grouped)");
   app.add_option("--bootstrap-replicas", identify.bootstrap_replicas,
                  "sigmas from a parametric bootstrap with N replicas per axis (slow; 0 = the fit's moment covariance)")
       ->capture_default_str()
@@ -187,7 +231,7 @@ int main(int argc, char** argv) {
     run.output_steps = result.output_steps;
     run.warm_up = result.warm_up;
     const auto files = imu_lab::ros_io::write_allan_report(out_directory, run, result.snapshot, !no_plot, identify);
-    print_summary(result, files);
+    print_summary(result, files, verbose);
     return 0;
   });
 }

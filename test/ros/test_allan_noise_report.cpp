@@ -95,8 +95,84 @@ TEST_F(AllanNoiseReport, KalibrDensityIsTheProfilesWithinThreeSigmaOfTheFit) {
   }
   ASSERT_GT(sigma, 0.0) << "no gyro axis has the Kalibr density";
   EXPECT_NEAR(density, kGyroWhite_rad_s_per_sqrt_hz, 3.0 * sigma);
-  EXPECT_NE(output_.find("deg_per_sqrt_h"), std::string::npos) << output_;
-  EXPECT_NE(output_.find("worst gyro axis"), std::string::npos) << output_;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream stream(text);
+  for (std::string line; std::getline(stream, line);) lines.push_back(line);
+  return lines;
+}
+
+// What a VIO user came for leads the output: Kalibr's four numbers as kalibr_imu.yaml has them,
+// then one row per axis of the IEEE terms; the files in one line; the topic to set.
+TEST_F(AllanNoiseReport, TheConsoleLeadsWithTheKalibrNumbersAndOneRowPerAxis) {
+  const std::vector<std::string> lines = lines_of(output_);
+  ASSERT_GE(lines.size(), 5u) << output_;
+  EXPECT_EQ(lines[0].rfind("allan: Kalibr / OpenVINS noise model", 0), 0u) << output_;
+  const YAML::Node kalibr = YAML::LoadFile(report_ + "/kalibr_imu.yaml");
+  const char* const keys[] = {"gyroscope_noise_density", "gyroscope_random_walk", "accelerometer_noise_density",
+                              "accelerometer_random_walk"};
+  for (int i = 0; i < 4; ++i) {
+    std::istringstream line(lines[1 + i]);
+    std::string key;
+    double value = 0.0;
+    line >> key >> value;
+    EXPECT_EQ(key, keys[i]) << output_;
+    EXPECT_NEAR(value, kalibr[keys[i]].as<double>(), 5e-4 * value) << lines[1 + i];  // 4 digits
+  }
+  for (const char* axis : {"gyro_x", "gyro_y", "gyro_z", "accel_x", "accel_y", "accel_z"}) {
+    std::size_t rows = 0;
+    for (const std::string& line : lines) rows += line.rfind(std::string("  ") + axis + " ", 0) == 0 ? 1 : 0;
+    EXPECT_EQ(rows, 1u) << axis << "\n" << output_;
+  }
+  EXPECT_NE(output_.find("K [deg_h_per_sqrt_h]"), std::string::npos) << output_;
+  std::size_t wrote = 0;
+  for (const std::string& line : lines) wrote += line.rfind("allan: wrote ", 0) == 0 ? 1 : 0;
+  EXPECT_EQ(wrote, 1u) << output_;
+  EXPECT_NE(output_.find("allan: wrote " + report_ + "/: "), std::string::npos) << output_;
+  EXPECT_NE(output_.find(" kalibr_imu_chain.yaml"), std::string::npos) << output_;
+  EXPECT_NE(output_.find("hold rostopic /imu/raw, the recording's: set it to the topic your IMU publishes on"),
+            std::string::npos)
+      << output_;
+  // The estimator's vocabulary stays in noise.yaml and --verbose.
+  for (const char* jargon : {"moment_covariance", "Akaike", "q_c_T_c", "worst gyro axis"})
+    EXPECT_EQ(output_.find(jargon), std::string::npos) << jargon << "\n" << output_;
+}
+
+TEST_F(AllanNoiseReport, VerbosePrintsTheFullTableAndEveryWarning) {
+  const std::string report = scratch_directory() + "/report";
+  const auto run = run_tool("allan", bag_ + " --topic /imu/raw --no-plot --verbose --out " + report);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("worst gyro axis"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("(moment_covariance)"), std::string::npos) << run.output;
+  const YAML::Node noise = YAML::LoadFile(report + "/noise.yaml");
+  for (const char* triad : {"gyro", "accel"}) {
+    for (const auto& axis : noise["triads"][triad]["axes"]) {
+      for (const auto& warning : axis.second["warnings"]) {
+        EXPECT_NE(run.output.find(warning.as<std::string>()), std::string::npos) << warning.as<std::string>();
+      }
+    }
+  }
+}
+
+// OpenVINS's file beside Kalibr's, with the same numbers under imu0.
+TEST_F(AllanNoiseReport, TheOpenVinsFileHasKalibrsNumbersUnderImu0) {
+  const std::string path = report_ + "/kalibr_imu_chain.yaml";
+  ASSERT_TRUE(file_exists(path)) << output_;
+  const std::string text = read_file(path);
+  const YAML::Node chain = YAML::Load(text.substr(text.find('\n') + 1));  // after OpenCV's %YAML:1.0
+  const YAML::Node kalibr = YAML::LoadFile(report_ + "/kalibr_imu.yaml");
+  for (const char* key : {"gyroscope_noise_density", "gyroscope_random_walk", "accelerometer_noise_density",
+                          "accelerometer_random_walk", "update_rate"}) {
+    EXPECT_EQ(chain["imu0"][key].as<double>(), kalibr[key].as<double>()) << key;
+  }
+  EXPECT_EQ(chain["imu0"]["rostopic"].as<std::string>(), "/imu/raw");
+  const std::string no_identify = scratch_directory() + "/report";
+  const auto run = run_tool("allan", bag_ + " --no-plot --no-identify --out " + no_identify);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_FALSE(file_exists(no_identify + "/kalibr_imu_chain.yaml"));
+  EXPECT_EQ(run.output.find("rostopic"), std::string::npos) << run.output;
 }
 
 TEST_F(AllanNoiseReport, PartialCurvesAddUpToTheFittedTotal) {

@@ -109,6 +109,9 @@ TEST_F(AllanTool, CsvsEqualTheStreamingEngineOnTheSameSamples) {
   if (file_exists("/usr/bin/python3")) {
     EXPECT_TRUE(file_exists(report + "/allan.png")) << run.output;
   }
+  // The report is staged and moved in whole: no staging path reaches the user.
+  EXPECT_EQ(run.output.find(".staging"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("plot_allan:"), std::string::npos) << run.output;
 }
 
 TEST_F(AllanTool, IncrementInputGivesTheEngineCurvesInRateUnits) {

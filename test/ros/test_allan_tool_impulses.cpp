@@ -1,5 +1,6 @@
 // The allan tool's impulse screen as a user meets it: a knock in a bag is printed with its stamps
-// and listed in allan_summary.yaml, and the run is split there; --no-impulse-screen keeps it in;
+// and listed in allan_summary.yaml, and the run is split there (a gap to the engine, not one of
+// the input's); --no-impulse-screen keeps it in;
 // --impulse-threshold decides; the output steps are in the summary.
 #include <gtest/gtest.h>
 
@@ -39,6 +40,10 @@ TEST(AllanToolImpulses, AKnockIsPrintedListedAndSplitsTheRun) {
   const auto run = run_tool("allan", bag + " --no-plot --no-identify --out " + report);
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_NE(run.output.find("impulse screen (threshold 12 scales): 1 events"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("samples left out of the curves; the run is split at each"), std::string::npos)
+      << run.output;
+  // The stamps are regular: the hole the screen left is no irregularity of the input.
+  EXPECT_EQ(run.output.find("irregular input"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("event 1: onset 30.00 s from the start"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("output steps"), std::string::npos) << run.output;
   const YAML::Node summary = read_allan_summary(report);
@@ -57,6 +62,7 @@ TEST(AllanToolImpulses, AKnockIsPrintedListedAndSplitsTheRun) {
   EXPECT_EQ(summary["samples"].as<int>() + screen["dropped_samples"].as<int>(), static_cast<int>(kCount));
   // The hole is a gap to the engine: two segments, on every channel.
   EXPECT_EQ(summary["gaps"]["count"].as<int>(), 1);
+  EXPECT_EQ(summary["gaps_made_by_impulse_screen"].as<int>(), 1);
   EXPECT_EQ(summary["channels"]["gyro_x"]["segments"].as<int>(), 2);
   EXPECT_EQ(summary["channels"]["accel_z"]["segments"].as<int>(), 2);
   // White noise in double precision: no step.

@@ -195,6 +195,38 @@ TEST(IdentifyKalibr, KeysAndConversionsForAKnownModel) {
   EXPECT_EQ(noise.gyroscope_noise_density.axis, 1);
 }
 
+// OpenVINS reads the four numbers key by key under imu0 (its config/*/kalibr_imu_chain.yaml), and
+// its parser wants the IMU model and intrinsics there too; both files say to set the topic.
+TEST(IdentifyKalibr, TheOpenVinsFileHoldsKalibrsNumbersUnderImu0) {
+  const TriadFit gyro = hand_triad(SensorKind::kGyroscope, {1e-4, 3e-4, 2e-4}, {1e-6, 4e-6, 2e-6}, false);
+  const TriadFit accel = hand_triad(SensorKind::kAccelerometer, {2e-3, 1e-3, 1.5e-3}, {3e-5, 1e-5, 2e-5}, true);
+  const KalibrImuNoise noise = kalibr_noise(gyro, accel, 400.0, "/imu/raw");
+  const std::string text = format_kalibr_imu_chain_yaml(noise);
+  // OpenCV's FileStorage header; yaml-cpp reads the rest.
+  ASSERT_EQ(text.rfind("%YAML:1.0\n", 0), 0u) << text;
+  const YAML::Node chain = YAML::Load(text.substr(text.find('\n') + 1));
+  const YAML::Node kalibr = YAML::Load(format_kalibr_imu_yaml(noise));
+  ASSERT_TRUE(chain["imu0"].IsMap()) << text;
+  for (const char* key : {"accelerometer_noise_density", "accelerometer_random_walk", "gyroscope_noise_density",
+                          "gyroscope_random_walk", "update_rate"}) {
+    EXPECT_DOUBLE_EQ(chain["imu0"][key].as<double>(), kalibr[key].as<double>()) << key;
+  }
+  EXPECT_EQ(chain["imu0"]["rostopic"].as<std::string>(), "/imu/raw");
+  EXPECT_EQ(chain["imu0"]["model"].as<std::string>(), "kalibr");
+  for (const char* matrix : {"Tw", "R_IMUtoGYRO", "Ta", "R_IMUtoACC"}) {
+    const auto rows = chain["imu0"][matrix].as<std::vector<std::vector<double>>>();
+    ASSERT_EQ(rows.size(), 3u) << matrix;
+    for (int row = 0; row < 3; ++row) {
+      for (int column = 0; column < 3; ++column) EXPECT_EQ(rows[row][column], row == column ? 1.0 : 0.0) << matrix;
+    }
+  }
+  EXPECT_EQ(chain["imu0"]["Tg"].as<std::vector<std::vector<double>>>()[1][1], 0.0);
+  EXPECT_EQ(chain["imu0"]["T_i_b"].size(), 4u);
+  const std::string reminder = "rostopic: /imu/raw  # the recording's topic (/imu/raw): set it to the one your IMU";
+  EXPECT_NE(text.find("  " + reminder), std::string::npos) << text;
+  EXPECT_NE(format_kalibr_imu_yaml(noise).find("\n" + reminder), std::string::npos) << format_kalibr_imu_yaml(noise);
+}
+
 // An anti-alias filter makes part of the white noise a Markov term with T_c below twice tau0:
 // Kalibr's density adds it back in power; a slow Markov term (a real hump) stays out.
 TEST(IdentifyKalibr, NoiseDensityAddsMarkovTermsFasterThanTau0InPower) {

@@ -1,6 +1,8 @@
-// The allan tool's console table (pipeline/noise_table.h): a present term reads value ± sigma, and
-// where alternative structures were weighed also the 68.3 % interval of their mixture, which can
-// sit off-centre; an absent term reads as its bound.
+// The allan tool's console report (pipeline/noise_table.h). The full table (--verbose): a present
+// term reads value ± sigma, and where alternative structures were weighed also the 68.3 %
+// interval of their mixture, which can sit off-centre; an absent term reads as its bound. The
+// default report: the Kalibr numbers with their upper bounds named, one row per axis of the IEEE
+// terms in the table's units, and the warnings grouped by kind in those units.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "imu_lab/common/format_number.h"
 #include "imu_lab/pipeline/noise_table.h"
 
 namespace imu_lab {
@@ -22,6 +25,8 @@ using identify::TermStatus;
 using identify::TriadFit;
 
 constexpr double kDegHPerRadS = 180.0 / 3.14159265358979323846 * 3600.0;
+// deg/h/sqrt(h) per rad/s/sqrt(s): deg/h per rad/s times 60 sqrt(s) per sqrt(h).
+constexpr double kDegHPerSqrtHPerRadSPerSqrtS = kDegHPerRadS * 60.0;
 
 // P(ln(theta / value) < x) under the mixture, written here apart from the library's.
 double mixture_cdf(const std::vector<LogNormalComponent>& mixture, double x) {
@@ -113,6 +118,121 @@ TEST(NoiseTable, TheFittedCornerOfTheFrontEndCarriesItsSigma) {
   EXPECT_NE(fitted.find(", low-pass 53.44 ± 0.97 hz"), std::string::npos) << fitted;
   const std::string given = line_of(table, "  gyro_y   white_rate");
   EXPECT_NE(given.find(", low-pass 53.44 hz"), std::string::npos) << given;
+}
+
+TermEstimate absent_term(TermKind kind, double bound_si) {
+  TermEstimate term;
+  term.name = identify::term_kind_name(kind);
+  term.kind = kind;
+  term.status = TermStatus::kAbsent;
+  term.amplitude.upper_bound = bound_si;
+  return term;
+}
+
+std::size_t count_of(const std::string& text, const std::string& part) {
+  std::size_t count = 0;
+  for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++count;
+  return count;
+}
+
+// A slope reading of K on two axes, as the fit finds it (SI values).
+identify::FitFinding k_slope_reading(double reading_si, double bound_si) {
+  identify::FitFinding finding;
+  finding.kind = identify::FindingKind::kSlopeReading;
+  finding.term = "random_walk";
+  finding.term_kind = TermKind::kRandomWalk;
+  finding.first_tau_s = 3.0;
+  finding.value = reading_si;
+  finding.fitted = bound_si;
+  finding.fitted_is_bound = true;
+  finding.text = "slope reading of K at tau = 3 s ... (the sentence noise.yaml keeps)";
+  return finding;
+}
+
+TriadFit gyro_with_absent_k() {
+  TriadFit triad;
+  triad.sensor = SensorKind::kGyroscope;
+  for (int axis = 0; axis < 3; ++axis) {
+    triad.axes[axis].terms = {present_term(TermKind::kWhiteRate, 7.25e-4, 0.0026),
+                              absent_term(TermKind::kRandomWalk, 1.95e-5 * (axis + 1))};
+  }
+  return triad;
+}
+
+TEST(NoiseTable, TheIeeeTableHasOneRowPerAxisInTheFieldsUnits) {
+  TriadFit triad = gyro_with_absent_k();
+  TermEstimate resonance = present_term(TermKind::kResonance, 5.05e-3, 0.0128);
+  resonance.name = "resonance_1";
+  resonance.shape.value = 20.11;
+  triad.axes[2].terms.push_back(resonance);
+  const std::string table = format_ieee_table({triad});
+  const std::string head = line_of(table, "  gyro ");
+  for (const char* column :
+       {"N [deg_per_sqrt_h]", "B [deg_h]", "K [deg_h_per_sqrt_h]", "Q [arcsec]", "R [deg_h_per_h]"})
+    EXPECT_NE(head.find(column), std::string::npos) << column << "\n" << table;
+  // N = 7.25e-4 rad/s/sqrt(Hz) = 2.492 deg/sqrt(h), its sigma to two digits; K absent: its bound,
+  // 1.95e-5 rad/s/sqrt(s) = 241.3 deg/h/sqrt(h); B not a candidate here: "-".
+  const std::string x = line_of(table, "  gyro_x ");
+  EXPECT_NE(x.find("2.492 ± 0.0065"), std::string::npos) << x;
+  EXPECT_NE(x.find("< " + format_number(1.95e-5 * kDegHPerSqrtHPerRadSPerSqrtS, 4)), std::string::npos) << x;
+  EXPECT_NE(x.find(" - "), std::string::npos) << x;
+  EXPECT_EQ(x.find("moment_covariance"), std::string::npos) << x;
+  EXPECT_EQ(count_of(table, "  gyro_"), 3u) << table;
+  // The other terms of the model go under their axis's row, one line.
+  const std::size_t z = table.find("  gyro_z ");
+  ASSERT_NE(z, std::string::npos);
+  EXPECT_NE(table.find("also in the model: resonance_1 1042 ± 13 deg_h, f_n 20.11 hz", z), std::string::npos) << table;
+  EXPECT_EQ(table.find("also in the model"), table.find("also in the model", z)) << "only gyro_z has one";
+}
+
+TEST(NoiseTable, WarningsAreGroupedByKindInTheTablesUnits) {
+  TriadFit triad = gyro_with_absent_k();
+  triad.axes[0].findings = {k_slope_reading(4.31e-4, 1.95e-5)};
+  triad.axes[1].findings = {k_slope_reading(4.56e-4, 2.09e-5)};
+  identify::FitFinding borderline;
+  borderline.kind = identify::FindingKind::kBorderline;
+  borderline.term = "random_walk";
+  borderline.term_kind = TermKind::kRandomWalk;
+  identify::FitFinding markov_borderline = borderline;
+  markov_borderline.term = "markov_1";
+  markov_borderline.term_kind = TermKind::kMarkov;
+  triad.axes[0].findings.push_back(borderline);
+  triad.axes[0].findings.push_back(markov_borderline);
+  triad.axes[2].findings = {borderline};
+
+  std::string grouped = format_grouped_findings({triad});
+  // One line per kind (long ones wrap onto indented lines), each axis once on it, values in the
+  // table's unit (deg/h/sqrt(h) for K).
+  for (std::size_t at = grouped.find("\n      "); at != std::string::npos; at = grouped.find("\n      "))
+    grouped.replace(at, 7, " ");
+  std::istringstream lines(grouped);
+  std::vector<std::string> all;
+  for (std::string line; std::getline(lines, line);) all.push_back(line);
+  ASSERT_EQ(all.size(), 2u) << grouped;
+  const std::string reading = "gyro_x K " + format_number(4.31e-4 * kDegHPerSqrtHPerRadSPerSqrtS, 4) +
+                              " deg_h_per_sqrt_h at 3 s, fit < " +
+                              format_number(1.95e-5 * kDegHPerSqrtHPerRadSPerSqrtS, 4) + "; gyro_y K ";
+  EXPECT_NE(grouped.find(reading), std::string::npos) << grouped;
+  EXPECT_NE(grouped.find("threshold: another recording may decide otherwise: gyro_x K, markov_1; gyro_z K"),
+            std::string::npos)
+      << grouped;
+  for (const char* jargon : {"Akaike", "statistic", "1.95e-05", "(the sentence noise.yaml keeps)"})
+    EXPECT_EQ(grouped.find(jargon), std::string::npos) << jargon << "\n" << grouped;
+  EXPECT_EQ(format_grouped_findings({gyro_with_absent_k()}), "");
+}
+
+TEST(NoiseTable, TheKalibrLinesNameWhereAnUpperBoundCameFrom) {
+  identify::KalibrImuNoise noise;
+  noise.gyroscope_noise_density = {4.413e-4, false, 2};
+  noise.gyroscope_random_walk = {2.09e-5, true, 1};
+  noise.accelerometer_noise_density = {4.749e-3, false, 0};
+  noise.accelerometer_random_walk = {7.08e-4, false, 0};
+  const std::string lines = format_kalibr_lines(noise);
+  EXPECT_EQ(lines,
+            "  gyroscope_noise_density      0.0004413 rad/s/sqrt(Hz)\n"
+            "  gyroscope_random_walk        2.09e-05 rad/s^2/sqrt(Hz) (an upper bound: K not found on gyro_y)\n"
+            "  accelerometer_noise_density  0.004749 m/s^2/sqrt(Hz)\n"
+            "  accelerometer_random_walk    0.000708 m/s^3/sqrt(Hz)\n");
 }
 
 }  // namespace

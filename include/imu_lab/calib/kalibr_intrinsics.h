@@ -12,16 +12,12 @@
 #include <string>
 
 #include "imu_lab/calib/bench_calibration.h"
+#include "imu_lab/identify/kalibr_yaml.h"
 
 namespace imu_lab {
 namespace calib {
 
-struct KalibrIntrinsics {
-  Eigen::Matrix3d Tw = Eigen::Matrix3d::Identity();
-  Eigen::Matrix3d R_IMUtoGYRO = Eigen::Matrix3d::Identity();
-  Eigen::Matrix3d Ta = Eigen::Matrix3d::Identity();
-  Eigen::Matrix3d R_IMUtoACC = Eigen::Matrix3d::Identity();
-  Eigen::Matrix3d Tg = Eigen::Matrix3d::Zero();
+struct KalibrIntrinsics : identify::KalibrImuIntrinsics {
   Eigen::Matrix3d body_to_imu = Eigen::Matrix3d::Identity();  // Q: our frame -> Kalibr's IMU frame
 };
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "imu_lab/identify/fit_finding.h"
 #include "imu_lab/identify/fit_options.h"
 #include "imu_lab/identify/fit_points.h"
 #include "imu_lab/identify/fit_problem.h"
@@ -112,7 +113,8 @@ struct FitResult {
   std::vector<BandPoint> band;      // every point of the curve
   FitQuality quality;
   GraphicalReadings graphical;
-  std::vector<std::string> warnings;
+  std::vector<std::string> warnings;  // the findings' sentences
+  std::vector<FitFinding> findings;
   std::vector<SelectionStep> selection_steps;
   // The other description of each line or resonance, and its weight in the sigmas
   // (structure_doubt.h).

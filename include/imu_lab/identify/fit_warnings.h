@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "imu_lab/identify/fit_finding.h"
 #include "imu_lab/identify/fit_result.h"
 
 namespace imu_lab {
@@ -27,7 +28,10 @@ struct BandExcursion {
 };
 std::vector<BandExcursion> band_excursions(const std::vector<BandPoint>& band);
 
-std::vector<std::string> fit_warnings(const FitResult& fit);
+// Every warning about the fit, in the order noise.yaml lists them.
+std::vector<FitFinding> fit_findings(const FitResult& fit);
+// Their sentences.
+std::vector<std::string> fit_warnings(const std::vector<FitFinding>& findings);
 
 }  // namespace identify
 }  // namespace imu_lab

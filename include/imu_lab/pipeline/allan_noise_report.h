@@ -1,18 +1,21 @@
 // Noise identification at the end of an Allan run, shared by the allan tool and the allan_monitor
 // node (through allan_report.h): each triad fitted on the snapshot's OADEV curves (gyro channels
-// 0-2, accel 3-5), then DIR/noise.yaml (identify/noise_report.h), DIR/kalibr_imu.yaml
-// (identify/kalibr_yaml.h; update rate 1 / tau0, the run's topic) and one partial-curve CSV per
+// 0-2, accel 3-5), then DIR/noise.yaml (identify/noise_report.h), DIR/kalibr_imu.yaml and
+// DIR/kalibr_imu_chain.yaml for OpenVINS (identify/kalibr_yaml.h; update rate 1 / tau0, the run's
+// topic) and one partial-curve CSV per
 // channel, DIR/noise_partial_<channel>.csv (identify/partial_curves.h), for the plot.
 // A triad whose fit fails (a record too short, unusable points) is reported in `problems` and
 // left out; the other triad is still written, and the Allan curves never depend on the fit.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "imu_lab/allan/streaming_snapshot.h"
 #include "imu_lab/identify/fit_options.h"
+#include "imu_lab/identify/kalibr_yaml.h"
 #include "imu_lab/identify/triad_fit.h"
 #include "imu_lab/pipeline/allan_summary.h"
 
@@ -30,6 +33,7 @@ struct AllanIdentifyOptions {
 
 struct AllanNoiseReport {
   std::vector<identify::TriadFit> triads;  // the triads that were identified
+  std::optional<identify::KalibrImuNoise> kalibr;  // the Kalibr / OpenVINS numbers (both triads identified)
   std::vector<std::string> written;        // paths, in the order written
   std::vector<std::string> problems;       // why a triad or a file is missing; empty when all went well
 };

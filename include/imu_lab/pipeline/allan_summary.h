@@ -37,6 +37,19 @@ struct AllanRunDescription {
 
 std::string format_allan_summary(const AllanRunDescription& run, const allan::StreamingSnapshot& snapshot);
 
+// The engine's gaps that the impulse screen made by leaving a knock's samples out (the engine
+// sees the hole as a gap and splits the run there; impulse_screen.h), and their time (interval -
+// tau0 each): a gap whose interval holds dropped windows, and which would be no gap with their
+// samples back, is the screen's (an input gap inside a dropped window is taken with it). Only
+// the engine's listed stamp events
+// (allan::kMaxRecordedStampEvents) can be matched: gaps past them are counted as the input's.
+struct ScreenMadeGaps {
+  std::int64_t count = 0;
+  double time_s = 0.0;
+};
+ScreenMadeGaps impulse_screen_gaps(const allan::TimingReport& timing, const allan::ImpulseScreenReport& screen,
+                                   double gap_factor);
+
 // Lines (each starting with `prefix`) for a person: the screen's verdict and one line per listed
 // event, its stamps from the input's first stamp and absolute, its channels and peaks.
 std::string format_impulse_events(const std::string& prefix, const allan::ImpulseScreenReport& screen);

@@ -16,7 +16,8 @@ std::vector<std::string> report_file_names() {
   for (const allan::Statistic statistic : allan::kStreamingStatistics) {
     names.push_back(std::string(allan::statistic_name(statistic)) + ".csv");
   }
-  for (const char* name : {"allan_summary.yaml", "allan.png", "noise.yaml", "kalibr_imu.yaml", "warm_up.yaml"})
+  for (const char* name :
+       {"allan_summary.yaml", "allan.png", "noise.yaml", "kalibr_imu.yaml", "kalibr_imu_chain.yaml", "warm_up.yaml"})
     names.push_back(name);
   for (const char* channel : pipeline::kAllanChannelNames) names.push_back(pipeline::partial_curves_file_name(channel));
   return names;

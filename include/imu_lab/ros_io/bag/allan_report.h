@@ -3,7 +3,8 @@
 //   hdev.csv, tdev.csv, totdev.csv, akdev.csv, hkdev.csv; io/stability_table.h's format,
 //   channels gyro_x..accel_z in rad_s and m_s2), DIR/allan_summary.yaml (allan_summary.h) and
 //   DIR/allan.png (scripts/plot_allan.py, OADEV, with the fitted model's partial curves), and,
-//   unless identification is off, the noise identification's files (allan_noise_report.h), and,
+//   unless identification is off, the noise identification's files (allan_noise_report.h: noise.yaml,
+//   kalibr_imu.yaml, kalibr_imu_chain.yaml, the partial curves), and,
 //   when the run removed a warm-up first, DIR/warm_up.yaml (allan_warm_up.h).
 //   The data files are one set, moved in together (atomic_file.h); allan.png is drawn from them
 //   after that, and written atomically on its own. DIR is created.
