@@ -38,7 +38,7 @@ PART_START_S = 100.0
 PART_DURATION_S = 600.0
 REPORT_FILES = (
     ["%s.csv" % name for name in ("adev", "oadev", "mdev", "ohdev", "hdev", "tdev", "totdev", "akdev", "hkdev")]
-    + ["allan_summary.yaml", "noise.yaml", "kalibr_imu.yaml", "allan.png"]
+    + ["allan_summary.yaml", "noise.yaml", "kalibr_imu.yaml", "kalibr_imu_chain.yaml", "allan.png"]
     + ["noise_partial_%s_%s.csv" % (sensor, axis) for sensor in ("gyro", "accel") for axis in "xyz"])
 
 
