@@ -162,6 +162,16 @@ TEST_F(NavigateTool, AlignmentAndNavigationErrorsStayWithinTheNavCorePrediction)
   EXPECT_NEAR(errors.back().at("attitude_error_up_rad"), measured.z(), 5.0 / kArcsecPerRad);
 }
 
+// -o into a folder that does not exist yet (issue 46: "cannot create nav/u4_traj.csv.new.tmp"):
+// the folder is made and the trajectory and its errors written there.
+TEST_F(NavigateTool, CreatesTheOutputFolder) {
+  const std::string out = *directory_ + "/new_folder/nav/trajectory.csv";
+  const auto run = run_tool("navigate", bag() + " --alignment-duration-s 300 --every-s 100 --out " + out);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_FALSE(imu_lab::pipeline::read_trajectory_csv(out).empty());
+  EXPECT_TRUE(imu_lab::test_support::file_exists(*directory_ + "/new_folder/nav/trajectory_errors.csv"));
+}
+
 // Bad input: a clear message naming the bag and the problem, a non-zero exit, and no CSV at all.
 void expect_refused(const std::string& arguments, const std::string& out, const std::string& expected_text) {
   const auto run = run_tool("navigate", arguments + " --out " + out);
