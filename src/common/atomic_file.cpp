@@ -40,6 +40,21 @@ std::string temporary_beside(const std::string& path, const char* role) {
 
 bool exists(const std::string& path, struct stat* status) { return ::lstat(path.c_str(), status) == 0; }
 
+// Creates `directory` with any missing parents (a report's folder need not exist yet); returns
+// the ones it made, deepest first, so that a discarded set can remove them again.
+std::vector<std::string> create_missing_directories(const std::string& directory) {
+  std::vector<std::string> missing;
+  struct stat status {};
+  for (std::string level = directory; !exists(level, &status); level = directory_of(level)) {
+    missing.push_back(level);
+    if (level == directory_of(level)) break;
+  }
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error) throw OutputError("cannot create the directory " + directory + ": " + error.message());
+  return missing;
+}
+
 std::vector<std::string> regular_files_in(const std::string& directory) {
   std::vector<std::string> names;
   DIR* listing = ::opendir(directory.c_str());
@@ -103,6 +118,7 @@ OutputSet::~OutputSet() {
 }
 
 std::string OutputSet::stage(const std::string& target) {
+  for (std::string& made : create_missing_directories(directory_of(target))) created_directories_.push_back(made);
   const std::string staged = temporary_beside(target, "new");
   members_.push_back({staged, target});
   return staged;
@@ -113,10 +129,7 @@ void OutputSet::write(const std::string& target, const std::string& content) {
 }
 
 std::string OutputSet::stage_directory(const std::string& directory) {
-  std::error_code error;
-  const bool created = std::filesystem::create_directories(directory, error);
-  if (error) throw OutputError("cannot create the directory " + directory + ": " + error.message());
-  if (created) created_directories_.push_back(directory);
+  for (std::string& made : create_missing_directories(directory)) created_directories_.push_back(made);
   const std::string staging = temporary_beside(directory + "/.staging", "set");
   if (::mkdir(staging.c_str(), 0777) != 0) {
     throw OutputError("cannot write into " + directory + ": cannot create " + staging + ": " + std::strerror(errno));
@@ -216,7 +229,11 @@ void OutputSet::discard() {
     for (const std::string& name : regular_files_in(staging.first)) ::unlink((staging.first + "/" + name).c_str());
     ::rmdir(staging.first.c_str());
   }
-  for (const std::string& directory : created_directories_) ::rmdir(directory.c_str());  // only if left empty
+  // Deepest first (longest path first: a child is longer than its parent); each only if left empty.
+  std::vector<std::string> created = created_directories_;
+  std::sort(created.begin(), created.end(),
+            [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
+  for (const std::string& directory : created) ::rmdir(directory.c_str());
 }
 
 }  // namespace imu_lab

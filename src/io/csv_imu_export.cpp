@@ -5,6 +5,9 @@
 #include <cstdio>
 #include <string_view>
 
+#include "imu_lab/common/config_error.h"
+#include "imu_lab/common/stamps.h"
+
 namespace imu_lab {
 namespace io {
 namespace {
@@ -40,10 +43,15 @@ std::string imu_csv_header(const CsvExportOptions& options) {
 }
 
 void write_imu_csv_row(std::ostream& out, const ImuCsvSample& sample, const CsvExportOptions& options) {
-  const std::int64_t seconds = sample.stamp_ns / 1000000000;
-  const std::int64_t nanoseconds = sample.stamp_ns % 1000000000;
+  std::int64_t time_ns = 0;
+  if (__builtin_sub_overflow(sample.stamp_ns, options.time_offset_ns, &time_ns)) {
+    throw InputError("stamp " + format_stamp_s(sample.stamp_ns) + " s minus the time offset " +
+                     format_stamp_s(options.time_offset_ns) + " s is beyond +-9.2e9 s (stamps are int64 ns)");
+  }
+  const std::int64_t seconds = time_ns / 1000000000;
+  const std::int64_t nanoseconds = time_ns % 1000000000;
   char stamp[48];
-  if (sample.stamp_ns < 0) {
+  if (time_ns < 0) {
     std::snprintf(stamp, sizeof stamp, "-%" PRId64 ".%09" PRId64, -seconds, -nanoseconds);
   } else {
     std::snprintf(stamp, sizeof stamp, "%" PRId64 ".%09" PRId64, seconds, nanoseconds);

@@ -52,6 +52,11 @@ AlignmentResult given_attitude(const NavigationSettings& settings) {
 
 }  // namespace
 
+bool heading_unobservable(const AlignmentResult& alignment) {
+  const double sigma_rad = alignment.predicted_error_sigma_rad.z();
+  return std::isfinite(sigma_rad) && sigma_rad > kUnobservableHeadingSigma_rad;
+}
+
 bool is_skipped(SampleOutcome outcome) {
   return outcome == SampleOutcome::kSkippedInvalid || outcome == SampleOutcome::kSkippedUnordered ||
          outcome == SampleOutcome::kSkippedGap;

@@ -1,13 +1,43 @@
 #include "imu_lab/pipeline/navigation_settings.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "imu_lab/common/config_error.h"
 #include "imu_lab/common/format_number.h"
 #include "imu_lab/common/site_limits.h"
+#include "imu_lab/identify/noise_report.h"
 
 namespace imu_lab {
 namespace pipeline {
+
+namespace {
+
+// The largest white noise density and bias instability over a triad's axes.
+void largest_of_triad(const std::string& path, identify::SensorKind sensor, double& white_density,
+                      double& bias_instability) {
+  white_density = bias_instability = 0.0;
+  for (const identify::ReportedAxisModel& axis : identify::load_reported_axis_models(path, sensor)) {
+    double white_squared = axis.model.output_quantization_density * axis.model.output_quantization_density;
+    for (const identify::Term& term : axis.model.terms) {
+      if (term.kind == identify::TermKind::kWhiteRate) white_squared += term.amplitude * term.amplitude;
+      if (term.kind == identify::TermKind::kBiasInstability)
+        bias_instability = std::max(bias_instability, term.amplitude);
+    }
+    white_density = std::max(white_density, std::sqrt(white_squared));
+  }
+}
+
+}  // namespace
+
+ExpectedSensorErrors expected_errors_from_noise_report(const std::string& path) {
+  ExpectedSensorErrors expected;
+  largest_of_triad(path, identify::SensorKind::kGyroscope, expected.gyro_noise_density_rad_s_per_sqrt_hz,
+                   expected.gyro_bias_rad_s);
+  largest_of_triad(path, identify::SensorKind::kAccelerometer, expected.accel_noise_density_m_s2_per_sqrt_hz,
+                   expected.accel_bias_m_s2);
+  return expected;
+}
 
 nav::HeadingSource parse_heading_source(const std::string& key, const std::string& value) {
   if (value == "gyrocompass") return nav::HeadingSource::kGyrocompass;

@@ -3,6 +3,7 @@
 #include <boost/math/distributions/normal.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -58,18 +59,30 @@ AxisCorrelation axis_correlation(const std::vector<Eigen::Vector3d>& samples, do
           covariance(a, b) / std::sqrt(covariance(a, a) * covariance(b, b));
     }
   }
-  const double half_width =
-      boost::math::quantile(boost::math::normal_distribution<double>(), 0.5 * (1.0 + confidence)) / std::sqrt(n - 3.0);
+  // Each axis's autocorrelation of the block means up to n / 5 lags (Pyper & Peterman's cut-off).
+  const std::size_t max_lag = std::max<std::size_t>(1, result.block_count / 5);
+  std::array<std::vector<double>, 3> axis_autocorrelation;
   for (int a = 0; a < 3; ++a) {
-    for (int b = 0; b < 3; ++b) {
-      if (a == b) continue;
-      const double z = std::atanh(std::min(1.0, std::max(-1.0, result.correlation(a, b))));
-      result.lower(a, b) = std::tanh(z - half_width);
-      result.upper(a, b) = std::tanh(z + half_width);
-    }
     std::vector<double> axis(result.block_count);
     for (std::size_t b = 0; b < result.block_count; ++b) axis[b] = blocks[b][a];
-    result.block_lag1_autocorrelation[a] = autocorrelation(axis, 1)[1];
+    axis_autocorrelation[a] = autocorrelation(axis, max_lag);
+    result.block_lag1_autocorrelation[a] = axis_autocorrelation[a][1];
+  }
+  const double z_quantile = boost::math::quantile(boost::math::normal_distribution<double>(), 0.5 * (1.0 + confidence));
+  result.effective_block_count.diagonal().setConstant(n);
+  for (int a = 0; a < 3; ++a) {
+    for (int b = a + 1; b < 3; ++b) {
+      double lag_sum = 0.0;
+      for (std::size_t j = 1; j <= max_lag; ++j) lag_sum += axis_autocorrelation[a][j] * axis_autocorrelation[b][j];
+      const double inverse = (1.0 + 2.0 * lag_sum) / n;
+      const double effective = inverse > 1.0 / n ? 1.0 / inverse : n;
+      result.effective_block_count(a, b) = result.effective_block_count(b, a) = effective;
+      const double z = std::atanh(std::min(1.0, std::max(-1.0, result.correlation(a, b))));
+      const bool informative = effective > 3.0;
+      const double half_width = informative ? z_quantile / std::sqrt(effective - 3.0) : 0.0;
+      result.lower(a, b) = result.lower(b, a) = informative ? std::tanh(z - half_width) : -1.0;
+      result.upper(a, b) = result.upper(b, a) = informative ? std::tanh(z + half_width) : 1.0;
+    }
   }
   result.white_band = white_noise_band(result.block_count, confidence);
   return result;

@@ -187,6 +187,7 @@ std::string correlation_yaml(const SpectrumAnalysis& analysis, const std::string
       emit_matrix(out, "correlation", c.correlation);
       emit_matrix(out, "lower", c.lower);
       emit_matrix(out, "upper", c.upper);
+      emit_matrix(out, "effective_block_count", c.effective_block_count);
       out << YAML::Key << "block_lag1_autocorrelation" << YAML::Value << YAML::Flow << YAML::BeginSeq
           << c.block_lag1_autocorrelation.x() << c.block_lag1_autocorrelation.y() << c.block_lag1_autocorrelation.z()
           << YAML::EndSeq;
@@ -200,6 +201,19 @@ std::string correlation_yaml(const SpectrumAnalysis& analysis, const std::string
   out << YAML::EndMap;
   return std::string(out.c_str()) + "\n";
 }
+
+namespace {
+
+// The interval of block means that follow each other is widened to their effective count
+// (axis_correlation.h); the line says so, with the smallest count of the three pairs.
+std::string correlated_in_time_note(const AxisCorrelation& c) {
+  const double fewest =
+      std::min({c.effective_block_count(0, 1), c.effective_block_count(0, 2), c.effective_block_count(1, 2)});
+  return ", widened: the block means are correlated in time, ~" + format_printf(fewest, "%.4g") + " independent of " +
+         std::to_string(c.block_count) + ")";
+}
+
+}  // namespace
 
 std::string spectrum_summary(const SpectrumAnalysis& analysis) {
   const PowerSpectrum& first = analysis.channels.front().psd;
@@ -226,8 +240,8 @@ std::string spectrum_summary(const SpectrumAnalysis& analysis) {
               format_printf(c.correlation(0, 1), "%+.3f") + " xz " + format_printf(c.correlation(0, 2), "%+.3f") +
               " yz " + format_printf(c.correlation(1, 2), "%+.3f") + " (" +
               format_printf(100.0 * analysis.confidence, "%.3g") + " % half-width ~" +
-              format_printf(0.5 * (c.upper(0, 1) - c.lower(0, 1)), "%.2g") + ")" +
-              (c.blocks_look_independent() ? "" : ", block means correlated in time: interval too narrow") + "\n";
+              format_printf(0.5 * (c.upper(0, 1) - c.lower(0, 1)), "%.2g") +
+              (c.blocks_look_independent() ? std::string(")") : correlated_in_time_note(c)) + "\n";
     }
   }
   return text;

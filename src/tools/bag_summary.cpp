@@ -1,6 +1,7 @@
 // bag_summary: what an IMU bag holds (samples, rate, per-axis mean and standard deviation) and
 // its overlapping Allan deviation at a few taus from the batch reference, beside the analytic
-// values of a sensor profile when one is given (e.g. the profile the bag was emulated with).
+// values of a sensor profile when one is given (e.g. the profile the bag was emulated with). Every
+// sample is in it: where allan's screens would leave knocks or steps out, a note says so.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -17,6 +18,7 @@
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
 #include "imu_lab/emulator/analytic_profile_avar.h"
+#include "imu_lab/pipeline/unscreened_disturbances.h"
 #include "imu_lab/ros_io/node/config_paths.h"
 #include "imu_lab/ros_io/bag/imu_bag_reader.h"
 #include "imu_lab/ros_io/bag/recording_arguments.h"
@@ -89,9 +91,11 @@ int main(int argc, char** argv) {
     std::vector<std::int64_t> stamps_ns;
     // A triad no message carries (covariance[0] = -1) is left out; one that some lack is refused.
     imu_lab::ros_io::StrictImuCheck check(imu_lab::ros_io::ImuTriadsNeeded{false, false});
+    imu_lab::pipeline::DisturbanceFinder disturbances;  // what allan would leave out, to say so
     imu_lab::ros_io::for_each_imu_strictly(
         bag, topic,
         [&](const imu_lab::io::ImuRecord& record) {
+          disturbances.push(record);
           stamps_ns.push_back(record.stamp_ns);
           for (int axis = 0; axis < 3; ++axis) {
             channels[axis].push_back(record.angular_rate_rad_s[axis]);
@@ -146,6 +150,9 @@ int main(int argc, char** argv) {
       const int m = static_cast<int>(std::lround(tau / tau0_s));
       if (m >= 1 && 2 * static_cast<std::size_t>(m) < count) factors.push_back(m);
     }
+    const std::string disturbance_note = imu_lab::pipeline::unscreened_disturbance_note(
+        "bag_summary", disturbances.finish(), "the means, deviations and Allan deviations of this summary");
+    if (!disturbance_note.empty()) std::printf("\n%s", disturbance_note.c_str());
     std::printf("\nOverlapping Allan deviation (batch reference, 68.3 %% chi-squared bounds)%s\n",
                 profile ? " beside the profile's analytic value;\n'in 95 %' says whether the analytic value lies in "
                           "the measured point's 95 % chi-squared interval (about 1 point in 20 will not)"

@@ -1,6 +1,7 @@
 // export_csv: a bag's sensor_msgs/Imu topic (with the temperature readings at the same stamps)
 // -> CSV with a header naming each column's unit, SI by default; --gyro-unit deg_s and
-// --accel-unit g for people who think in those. Written atomically. import_csv reads it back.
+// --accel-unit g for people who think in those; --time-offset-s takes off the offset import_csv
+// added. Written atomically. import_csv reads it back.
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -16,6 +17,7 @@ int main(int argc, char** argv) {
   constexpr const char* kCommandLine = "command line";
   imu_lab::ros_io::RecordingArguments recording;
   std::string out_path, delimiter = ",", gyro_unit = "rad_s", accel_unit = "m_s2", temperature_topic;
+  std::string time_offset_s = "0";
   bool no_temperature = false;
   imu_lab::ros_io::CsvExportRequest request;
   imu_lab::ros_io::add_recording_arguments(app, recording, "bag to read", false);
@@ -28,6 +30,10 @@ int main(int argc, char** argv) {
   app.add_option("--gyro-unit", gyro_unit, "rad_s or deg_s")->capture_default_str();
   app.add_option("--accel-unit", accel_unit, "m_s2 or g (9.80665 m/s^2)")->capture_default_str();
   app.add_option("--delimiter", delimiter, "',' ';' or tab")->capture_default_str();
+  app.add_option("--time-offset-s", time_offset_s,
+                 "taken off every stamp: the offset import_csv added (its --time-offset-s, or the 1000000000 s it "
+                 "adds to a time column that starts near 0); the same number gives the file's times back")
+      ->capture_default_str();
   if (const auto status = imu_lab::parse_tool_options("export_csv", app, argc, argv)) return *status;
 
   imu_lab::ToolInput input = recording.tool_input(request.imu_topic);
@@ -36,6 +42,7 @@ int main(int argc, char** argv) {
     request.format.delimiter = parse_delimiter(delimiter, kCommandLine, "--delimiter");
     request.format.gyro_unit = parse_angular_rate_unit(gyro_unit, kCommandLine, "--gyro-unit");
     request.format.accel_unit = parse_specific_force_unit(accel_unit, kCommandLine, "--accel-unit");
+    request.format.time_offset_ns = parse_time_offset_ns(time_offset_s, kCommandLine, "--time-offset-s");
     if (!temperature_topic.empty()) {
       request.temperature_topic = temperature_topic;
       request.temperature_required = true;

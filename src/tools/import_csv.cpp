@@ -63,6 +63,15 @@ imu_lab::io::CsvImportOptions import_options(const CommandLine& c) {
   return options;
 }
 
+// What --time-offset-s can be instead for a file starting at file_start_ns: ROS time starts after
+// 0 s, so 0 keeps the file's times only when they start above 0 (issue 46).
+std::string other_offset_hint(std::int64_t file_start_ns) {
+  if (file_start_ns > 0) return "--time-offset-s gives another offset, 0 keeps the file's times";
+  const std::int64_t smallest_whole_s = -file_start_ns / 1000000000 + 1;  // the first whole second above -start
+  return "--time-offset-s gives another offset, above " + imu_lab::format_stamp_s(-file_start_ns) +
+         " s since ROS time starts after 0 s, e.g. --time-offset-s " + std::to_string(smallest_whole_s);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -103,10 +112,12 @@ int main(int argc, char** argv) {
     if (!summary.recognised.empty()) std::printf("%s: %s: %s\n", kTool, c.csv_path.c_str(), summary.recognised.c_str());
     if (summary.relative_time_offset_ns != 0) {
       using imu_lab::format_stamp_s;
+      const std::int64_t file_start_ns = summary.first_stamp_ns - summary.relative_time_offset_ns;
       std::printf(
           "%s: %s: the time column is relative (it starts at %s s, before any epoch ROS time can hold): "
-          "%s s added to every stamp (--time-offset-s gives another offset, 0 keeps it)\n",
-          kTool, c.csv_path.c_str(), format_stamp_s(summary.first_stamp_ns - summary.relative_time_offset_ns).c_str(),
+          "%s s added to every stamp (%s; export_csv --time-offset-s %s takes it off again)\n",
+          kTool, c.csv_path.c_str(), format_stamp_s(file_start_ns).c_str(),
+          format_stamp_s(summary.relative_time_offset_ns).c_str(), other_offset_hint(file_start_ns).c_str(),
           format_stamp_s(summary.relative_time_offset_ns).c_str());
     }
     std::printf("%s: wrote %s: %zu samples on %s (%s), %.3f s", kTool, c.out_path.c_str(), summary.accepted_rows,

@@ -12,7 +12,9 @@
 #include <cstdlib>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "imu_lab/common/atomic_file.h"
@@ -22,6 +24,7 @@
 #include "imu_lab/common/stamps.h"
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
+#include "imu_lab/nav/earth_model.h"
 #include "imu_lab/pipeline/navigation_csv.h"
 #include "imu_lab/ros_io/bag/bag_navigation.h"
 #include "imu_lab/ros_io/bag/recording_arguments.h"
@@ -35,15 +38,17 @@ constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
 
 struct CommandLine {
   imu_lab::ros_io::RecordingArguments recording;
-  std::string out_path, errors_path, plot_path;
+  std::string out_path, errors_path, plot_path, noise_path;
   std::string input_type = "imu", heading_source = "gyrocompass", earth_model = "wgs84", vertical = "held";
   std::string initial_velocity;  // "east,north,up"
   double alignment_duration_s = 300.0, initial_roll_deg = 0.0, initial_pitch_deg = 0.0, initial_yaw_deg = 0.0;
   double latitude_deg = kUnset, longitude_deg = kUnset, height_m = kUnset, reference_height_m = kUnset;
   bool no_align = false, skip_bad_samples = false, no_coning_correction = false, no_sculling_correction = false;
   imu_lab::pipeline::ExpectedSensorErrors expected;
-  // Options whose absence means something (take the truth's value, predict nothing).
-  std::vector<CLI::Option*> attitude_options, expected_options;
+  // Options whose absence means something (take the truth's value, predict nothing); each
+  // expected error with the field it sets, so that a given one wins over --noise's.
+  std::vector<CLI::Option*> attitude_options;
+  std::vector<std::pair<CLI::Option*, double imu_lab::pipeline::ExpectedSensorErrors::*>> expected_options;
   imu_lab::ros_io::BagNavigationOptions bag;
   imu_lab::pipeline::NavigationSettings settings;
   std::string initial_state_source;  // printed: where the start state came from
@@ -51,6 +56,20 @@ struct CommandLine {
 
 bool any_given(const std::vector<CLI::Option*>& options) {
   return std::any_of(options.begin(), options.end(), [](const CLI::Option* option) { return option->count() > 0; });
+}
+
+// The expected sensor errors: --noise's report first, then each one given on the command line over
+// it; none at all without either.
+std::optional<imu_lab::pipeline::ExpectedSensorErrors> expected_errors(const CommandLine& c) {
+  const bool any_option = std::any_of(c.expected_options.begin(), c.expected_options.end(),
+                                      [](const auto& option) { return option.first->count() > 0; });
+  if (c.noise_path.empty() && !any_option) return std::nullopt;
+  imu_lab::pipeline::ExpectedSensorErrors expected;
+  if (!c.noise_path.empty()) expected = imu_lab::pipeline::expected_errors_from_noise_report(c.noise_path);
+  for (const auto& [option, field] : c.expected_options) {
+    if (option->count() > 0) expected.*field = c.expected.*field;
+  }
+  return expected;
 }
 
 // "east,north,up" in m/s: three finite numbers.
@@ -110,15 +129,24 @@ void add_options(CLI::App& app, CommandLine& c) {
       ->capture_default_str();
   app.add_flag("--no-coning-correction", c.no_coning_correction, "leave the coning term out");
   app.add_flag("--no-sculling-correction", c.no_sculling_correction, "leave the sculling term out");
+  using Expected = imu_lab::pipeline::ExpectedSensorErrors;
+  app.add_option("--noise", c.noise_path,
+                 "noise report (noise.yaml, as allan writes it) for the expected errors below: per triad the largest "
+                 "axis's white noise density and, as the bias, its bias instability (a lower bound: no Allan curve "
+                 "shows the turn-on bias); each option below given overrides its value");
   c.expected_options = {
-      app.add_option("--expected-gyro-bias-rad-s", c.expected.gyro_bias_rad_s,
-                     "a priori gyro bias, 1 sigma per axis (for the predicted alignment error)"),
-      app.add_option("--expected-accel-bias-m-s2", c.expected.accel_bias_m_s2,
-                     "a priori accelerometer bias, 1 sigma per axis"),
-      app.add_option("--gyro-noise-density-rad-s-per-sqrt-hz", c.expected.gyro_noise_density_rad_s_per_sqrt_hz,
-                     "gyro white noise (angle random walk)"),
-      app.add_option("--accel-noise-density-m-s2-per-sqrt-hz", c.expected.accel_noise_density_m_s2_per_sqrt_hz,
-                     "accelerometer white noise (velocity random walk)")};
+      {app.add_option("--expected-gyro-bias-rad-s", c.expected.gyro_bias_rad_s,
+                      "a priori gyro bias, 1 sigma per axis (for the predicted alignment error)"),
+       &Expected::gyro_bias_rad_s},
+      {app.add_option("--expected-accel-bias-m-s2", c.expected.accel_bias_m_s2,
+                      "a priori accelerometer bias, 1 sigma per axis"),
+       &Expected::accel_bias_m_s2},
+      {app.add_option("--gyro-noise-density-rad-s-per-sqrt-hz", c.expected.gyro_noise_density_rad_s_per_sqrt_hz,
+                      "gyro white noise (angle random walk)"),
+       &Expected::gyro_noise_density_rad_s_per_sqrt_hz},
+      {app.add_option("--accel-noise-density-m-s2-per-sqrt-hz", c.expected.accel_noise_density_m_s2_per_sqrt_hz,
+                      "accelerometer white noise (velocity random walk)"),
+       &Expected::accel_noise_density_m_s2_per_sqrt_hz}};
   app.add_option("--every-s", c.bag.output_interval_s, "write a row at most this often [s] (0: every sample)")
       ->capture_default_str()
       ->check(imu_lab::option_range::non_negative());
@@ -176,7 +204,7 @@ void fill_settings(CommandLine& c) {
   s.navigator.vertical.fixed_reference_height_m = std::isnan(c.reference_height_m) ? s.height_m : c.reference_height_m;
   s.navigator.corrections.coning_correction = !c.no_coning_correction;
   s.navigator.corrections.sculling_correction = !c.no_sculling_correction;
-  if (any_given(c.expected_options)) s.expected_errors = c.expected;
+  s.expected_errors = expected_errors(c);
   validate(s, "navigate");
 }
 
@@ -185,8 +213,8 @@ std::string predicted_error_text(const imu_lab::pipeline::AlignmentResult& a, bo
   const Eigen::Vector3d arcsec = a.predicted_error_sigma_rad * kArcsecPerRad;
   if (a.method == "given_attitude") return "no predicted error (attitude given, not estimated)";
   if (!expected_given) {
-    return "no predicted error (give the expected sensor errors: --expected-gyro-bias-rad-s, "
-           "--expected-accel-bias-m-s2, --gyro-noise-density-rad-s-per-sqrt-hz, "
+    return "no predicted error (give allan's noise report, --noise noise.yaml, or the expected sensor errors: "
+           "--expected-gyro-bias-rad-s, --expected-accel-bias-m-s2, --gyro-noise-density-rad-s-per-sqrt-hz, "
            "--accel-noise-density-m-s2-per-sqrt-hz)";
   }
   const std::string tilts = imu_lab::format_number(arcsec.x(), 3) + " " + imu_lab::format_number(arcsec.y(), 3);
@@ -207,6 +235,16 @@ void print_summary(const CommandLine& c, const imu_lab::ros_io::BagNavigationRes
               a.duration_s, imu_lab::format_stamp_s(a.stamp_ns).c_str(), a.roll_pitch_yaw_rad.x() / kDegToRad,
               a.roll_pitch_yaw_rad.y() / kDegToRad, a.roll_pitch_yaw_rad.z() / kDegToRad,
               predicted_error_text(a, c.settings.expected_errors.has_value()).c_str());
+  if (imu_lab::pipeline::heading_unobservable(a)) {
+    const double horizontal_earth_rate_deg_h = imu_lab::nav::EarthModel(c.settings.navigator.earth).earth_rate_rad_s() *
+                                               std::cos(c.settings.latitude_rad) / kDegToRad * 3600.0;
+    std::printf(
+        "navigate: heading not observable: its predicted 1-sigma error, %s deg, exceeds %.0f deg: gyrocompassing "
+        "needs gyro errors well below the Earth rate's horizontal part (%.3g deg/h here), so the yaw above and every "
+        "heading and position after it are not referenced to north\n",
+        imu_lab::format_number(a.predicted_error_sigma_rad.z() / kDegToRad, 3).c_str(),
+        imu_lab::pipeline::kUnobservableHeadingSigma_rad / kDegToRad, horizontal_earth_rate_deg_h);
+  }
   if (!c.initial_state_source.empty()) {
     const Eigen::Vector3d& v = c.settings.initial_velocity_enu_m_s;
     std::printf("start without alignment (%s): velocity ENU %.6f %.6f %.6f m/s\n", c.initial_state_source.c_str(),

@@ -1,7 +1,8 @@
 // spectrum: a static recording in; per channel Welch's PSD with its chi-squared interval and the
 // autocorrelation, per triad the axes' correlation matrix at tau0 and after averaging, out as
 // DIR/spectrum_psd.csv, DIR/spectrum_autocorrelation.csv, DIR/spectrum.yaml and a plot
-// DIR/spectrum.png (one set: all new, or all as they were). See
+// DIR/spectrum.png (one set: all new, or all as they were). Every sample is in them: where allan's
+// screens would leave knocks or steps out, a note says so. See
 // include/imu_lab/spectrum/spectrum_report.h and doc/spectrum.md.
 #include <CLI/CLI.hpp>
 
@@ -13,6 +14,7 @@
 #include "imu_lab/common/tool_main.h"
 #include "imu_lab/common/tool_options.h"
 #include "imu_lab/identify/noise_report.h"
+#include "imu_lab/pipeline/unscreened_disturbances.h"
 #include "imu_lab/spectrum/spectrum_report.h"
 #include "imu_lab/ros_io/node/config_paths.h"
 #include "imu_lab/ros_io/bag/imu_bag_reader.h"
@@ -54,8 +56,11 @@ int main(int argc, char** argv) {
     const imu_lab::ros_io::BagRecording bag = recording.recording();
     input.topic = topic = imu_lab::ros_io::choose_imu_topic(bag, topic);
     std::vector<imu_lab::io::ImuRecord> samples;
-    imu_lab::ros_io::for_each_imu_strictly(bag, topic,
-                                           [&](const imu_lab::io::ImuRecord& record) { samples.push_back(record); });
+    imu_lab::pipeline::DisturbanceFinder disturbances;  // what allan would leave out, to say so
+    imu_lab::ros_io::for_each_imu_strictly(bag, topic, [&](const imu_lab::io::ImuRecord& record) {
+      disturbances.push(record);
+      samples.push_back(record);
+    });
     imu_lab::spectrum::SpectrumAnalysis analysis = imu_lab::spectrum::analyse_spectra(samples, options);
     if (!model_path.empty()) {
       const auto drawn =
@@ -87,8 +92,10 @@ int main(int argc, char** argv) {
     }
     outputs.commit();
     std::cout << "spectrum: " << bag.name() << ", " << imu_lab::io::describe_time_window(bag.window) << "\n"
-              << imu_lab::spectrum::spectrum_summary(analysis) << "wrote " << written << " in " << out_directory
-              << "\n";
+              << imu_lab::spectrum::spectrum_summary(analysis)
+              << imu_lab::pipeline::unscreened_disturbance_note("spectrum", disturbances.finish(),
+                                                                "the spectra, autocorrelations and correlations")
+              << "wrote " << written << " in " << out_directory << "\n";
     return 0;
   });
 }

@@ -28,6 +28,13 @@ std::vector<pipeline::AllanSample> white_noise_samples(std::size_t count, std::i
   return samples;
 }
 
+void add_knock(std::vector<pipeline::AllanSample>& samples, std::size_t knock_index) {
+  for (std::size_t k = knock_index; k < samples.size(); ++k) {
+    const double t = 1e-9 * static_cast<double>(samples[k].stamp_ns - samples[knock_index].stamp_ns);
+    samples[k].values[5] += 0.005 + 2.0 * std::exp(-t / 0.1) * std::cos(2.0 * M_PI * 12.0 * t);
+  }
+}
+
 void write_imu_bag(const std::string& path, const std::vector<pipeline::AllanSample>& samples,
                    const std::string& topic) {
   ImuBagLayout layout;

@@ -17,6 +17,11 @@ namespace test_support {
 std::vector<pipeline::AllanSample> white_noise_samples(std::size_t count, std::int64_t interval_ns, unsigned seed,
                                                        std::int64_t start_ns = 1'000'000'000'000'000'000LL);
 
+// A knock at sample `knock_index` of white_noise_samples: accelerometer z rings at 200 times its
+// noise (2 m/s^2 against 0.01), decaying over a tenth of a second at 12 Hz, and keeps a bias step of
+// 0.005 m/s^2 after it.
+void add_knock(std::vector<pipeline::AllanSample>& samples, std::size_t knock_index);
+
 // Writes the samples as sensor_msgs/Imu messages on `topic`, each recorded at its stamp.
 void write_imu_bag(const std::string& path, const std::vector<pipeline::AllanSample>& samples,
                    const std::string& topic = "/imu/raw");

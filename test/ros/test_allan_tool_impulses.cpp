@@ -11,6 +11,7 @@
 
 namespace {
 
+using imu_lab::test_support::add_knock;
 using imu_lab::test_support::read_allan_summary;
 using imu_lab::test_support::run_tool;
 using imu_lab::test_support::scratch_directory;
@@ -21,14 +22,10 @@ constexpr std::int64_t kInterval_ns = 5'000'000;  // 200 Hz
 constexpr std::size_t kCount = 12000;             // 60 s
 constexpr std::size_t kKnockSample = 6000;        // 30 s from the first stamp
 
-// White noise with a knock at 30 s: accelerometer z rings at 200 times its noise (0.01 m/s^2),
-// decaying over a tenth of a second, and keeps a bias step of 0.005 m/s^2.
+// White noise with a knock at 30 s (add_knock).
 std::string knocked_bag() {
   auto samples = white_noise_samples(kCount, kInterval_ns, 3);
-  for (std::size_t k = kKnockSample; k < kCount; ++k) {
-    const double t = (k - kKnockSample) * kInterval_ns * 1e-9;
-    samples[k].values[5] += 0.005 + 2.0 * std::exp(-t / 0.1) * std::cos(2.0 * M_PI * 12.0 * t);
-  }
+  add_knock(samples, kKnockSample);
   const std::string bag = scratch_directory() + "/knocked.bag";
   write_imu_bag(bag, samples);
   return bag;

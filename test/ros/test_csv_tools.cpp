@@ -222,6 +222,48 @@ TEST(CsvTools, EmulatedBagExportsImportsAndExportsAgainUnchanged) {
   }
 }
 
+// Issue 46: a relative time column gets import_csv's 1e9 s; export_csv --time-offset-s takes the
+// same number off again, so the file's own times come back. The import's hint says which offsets
+// work: for a file starting at 0, "0 keeps it" was a refusal (ROS time starts after 0 s); the
+// offset it suggests now imports, and for a file starting later 0 does keep the times.
+TEST(CsvTools, TheImportsTimeOffsetComesOffAgainAndItsHintWorks) {
+  const std::string directory = scratch_directory();
+  const std::string rows = "0.25,0,0,0,0,0,9.8\n0.5,0,0,0,0,0,9.8\n";
+  write(directory + "/from_zero.csv", "t,gx,gy,gz,ax,ay,az\n0,0,0,0,0,0,9.8\n" + rows);
+  const auto imported = run_tool("import_csv", directory + "/from_zero.csv -o " + directory + "/from_zero.bag");
+  ASSERT_EQ(imported.exit_code, 0) << imported.output;
+  EXPECT_TRUE(contains(imported.output, "1000000000.000000000 s added to every stamp")) << imported.output;
+  EXPECT_FALSE(contains(imported.output, "0 keeps")) << imported.output;
+  const std::string suggestion = "e.g. --time-offset-s ";
+  const auto at = imported.output.find(suggestion);
+  ASSERT_NE(at, std::string::npos) << imported.output;
+  const std::string suggested = imported.output.substr(at + suggestion.size(), 1);
+  EXPECT_EQ(suggested, "1");
+  const auto as_suggested = run_tool(
+      "import_csv", directory + "/from_zero.csv --time-offset-s " + suggested + " -o " + directory + "/suggested.bag");
+  EXPECT_EQ(as_suggested.exit_code, 0) << as_suggested.output;
+  EXPECT_EQ(read_imu(directory + "/suggested.bag").front().stamp_ns, 1000000000);
+
+  const auto exported =
+      run_tool("export_csv", directory + "/from_zero.bag --time-offset-s 1000000000 -o " + directory + "/back.csv");
+  ASSERT_EQ(exported.exit_code, 0) << exported.output;
+  EXPECT_TRUE(contains(read_file(directory + "/back.csv"), "\n0.000000000,0,0,0,0,0,9.8\n0.250000000,"))
+      << read_file(directory + "/back.csv");
+  const auto bad_offset =
+      run_tool("export_csv", directory + "/from_zero.bag --time-offset-s 1e9x -o " + directory + "/x.csv");
+  EXPECT_EQ(bad_offset.exit_code, 2) << bad_offset.output;
+  EXPECT_TRUE(contains(bad_offset.output, "--time-offset-s")) << bad_offset.output;
+  EXPECT_FALSE(file_exists(directory + "/x.csv"));
+
+  write(directory + "/later.csv", "t,gx,gy,gz,ax,ay,az\n" + rows);
+  const auto later = run_tool("import_csv", directory + "/later.csv -o " + directory + "/later.bag");
+  ASSERT_EQ(later.exit_code, 0) << later.output;
+  EXPECT_TRUE(contains(later.output, "0 keeps the file's times")) << later.output;
+  const auto kept = run_tool("import_csv", directory + "/later.csv --time-offset-s 0 -o " + directory + "/kept.bag");
+  ASSERT_EQ(kept.exit_code, 0) << kept.output;
+  EXPECT_EQ(read_imu(directory + "/kept.bag").front().stamp_ns, 250000000);
+}
+
 TEST(ExportCsvTool, RefusesAMissingTopicOrUnitAndWritesNothing) {
   const std::string directory = scratch_directory();
   write(directory + "/log.csv", "t,gx,gy,gz,ax,ay,az\n1,0,0,0,0,0,9.8\n2,0,0,0,0,0,9.8\n");

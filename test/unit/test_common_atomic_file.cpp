@@ -128,6 +128,28 @@ TEST(OutputSet, AMemberNeverWrittenLeavesTheOldSet) {
   EXPECT_EQ(listing_of(directory), before);
 }
 
+// A member's folder that does not exist yet (e.g. navigate -o nav/trajectory.csv, issue 46) is
+// created with its missing parents; a set given up removes the folders it made, none other.
+TEST(OutputSet, CreatesAMembersMissingFolderAndRemovesItIfDiscarded) {
+  const std::string directory = scratch_directory();
+  {
+    imu_lab::OutputSet set;
+    set.write(directory + "/nav/run/trajectory.csv", "rows\n");
+    set.write(directory + "/nav/errors.csv", "errors\n");
+    set.commit();
+  }
+  EXPECT_EQ(read_all(directory + "/nav/run/trajectory.csv"), "rows\n");
+  EXPECT_EQ(listing_of(directory + "/nav"), "errors.csv\nrun\n");
+  {
+    imu_lab::OutputSet discarded;
+    discarded.write(directory + "/other/deeper/trajectory.csv", "rows\n");
+    discarded.write(directory + "/other/plot.png", "png\n");
+  }
+  struct stat status {};
+  EXPECT_NE(::stat((directory + "/other").c_str(), &status), 0) << "the folders the discarded set made are gone";
+  EXPECT_EQ(::stat((directory + "/nav").c_str(), &status), 0);
+}
+
 TEST(OutputSet, AStagingDirectoryBecomesTheDirectorysFilesAndIsRemoved) {
   const std::string directory = scratch_directory() + "/report";
   imu_lab::OutputSet set;

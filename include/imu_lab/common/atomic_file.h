@@ -40,7 +40,8 @@ class OutputSet {
   OutputSet(const OutputSet&) = delete;
   OutputSet& operator=(const OutputSet&) = delete;
 
-  // The path to write `target`'s new content to (a temporary in the target's directory).
+  // The path to write `target`'s new content to (a temporary in the target's directory, created with
+  // its missing parents if need be: removed again if the set is discarded).
   std::string stage(const std::string& target);
   // Stages and writes `target` (write_file_atomically into its temporary).
   void write(const std::string& target, const std::string& content);

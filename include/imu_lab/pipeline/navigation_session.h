@@ -85,6 +85,16 @@ struct AlignmentResult {
   Eigen::Vector3d predicted_error_sigma_rad = Eigen::Vector3d::Zero();
 };
 
+// A predicted 1-sigma heading error beyond this makes a gyrocompassed heading no better than a
+// guess: the first-order budget (alignment_error_budget.h) no longer holds there, and a heading
+// spread evenly over the circle has a sigma of 1.8 rad. A MEMS gyro's bias is typically far above
+// the Earth rate's horizontal part (15 deg/h cos L), which is what gyrocompassing measures.
+constexpr double kUnobservableHeadingSigma_rad = 1.0;
+
+// Whether the alignment's predicted heading sigma exceeds kUnobservableHeadingSigma_rad (false
+// where it was not predicted: no expected errors, or a given heading).
+bool heading_unobservable(const AlignmentResult& alignment);
+
 class NavigationSession {
  public:
   // Throws ConfigError (validate()) for settings that cannot work.

@@ -27,6 +27,15 @@ struct ExpectedSensorErrors {
   double accel_noise_density_m_s2_per_sqrt_hz = 0.0;  // velocity random walk (m/s/sqrt(s))
 };
 
+// The expected errors from a noise report as `allan` writes it (noise.yaml, doc/formats.md), for
+// the largest axis of each triad: the white noise density N of the white_rate term (with the
+// output's quantisation density, which adds to it), and as the bias the bias instability B (0
+// where the report has none). B is the bias's wander within the run; the turn-on bias, which no
+// Allan curve shows, is not in it, so the bias is a lower bound (give it explicitly where known).
+// Throws InputError naming the file (identify::load_reported_axis_models) when it cannot be read
+// or lacks a triad.
+ExpectedSensorErrors expected_errors_from_noise_report(const std::string& path);
+
 struct NavigationSettings {
   // Static alignment first (levelling, heading from gyrocompassing or given), starting at rest;
   // or (align = false) start from a given state at the first sample's stamp: attitude (initial

@@ -19,13 +19,20 @@ struct AxisCorrelation {
   std::size_t block_count = 0;       // n = floor(samples / m)
   double confidence = 0.0;
   Eigen::Matrix3d correlation = Eigen::Matrix3d::Identity();
-  // Fisher's z interval of each off-diagonal entry: tanh(atanh(r) -+ z_q / sqrt(n - 3)), q =
-  // (1 + confidence) / 2 (Fisher 1921). It assumes the n block means are independent in time and
-  // jointly normal; the diagonal is exactly 1.
+  // Fisher's z interval of each off-diagonal entry: tanh(atanh(r) -+ z_q / sqrt(n_eff - 3)), q =
+  // (1 + confidence) / 2 (Fisher 1921), for jointly normal block means. Block means that follow
+  // each other in time (a sensor's front-end filter, bias instability, a spectral line) carry
+  // fewer independent values than n; the pair's effective count replaces n (Pyper & Peterman
+  // 1998 eq. 1, after Bartlett 1935):
+  //   1 / n_eff = 1 / n + (2 / n) sum_{j=1}^{n/5} r_a(j) r_b(j),
+  // r_a, r_b the two axes' sample autocorrelations of the block means (autocorrelation.h: the
+  // biased estimator, whose taper stands for their (n - j) / n weight); n_eff is kept within
+  // at most n, and an n_eff of 3 or less gives the whole [-1, 1]. The diagonal is exactly 1.
   Eigen::Matrix3d lower = Eigen::Matrix3d::Identity();
   Eigen::Matrix3d upper = Eigen::Matrix3d::Identity();
-  // The check of that assumption: each axis's lag-1 autocorrelation of the block means, and the
-  // band white noise keeps it in (autocorrelation.h). Outside the band the interval is too narrow.
+  Eigen::Matrix3d effective_block_count = Eigen::Matrix3d::Zero();  // n_eff per pair; n on the diagonal
+  // Each axis's lag-1 autocorrelation of the block means, and the band white noise keeps it in
+  // (autocorrelation.h): outside it the block means are correlated in time and n_eff < n.
   Eigen::Vector3d block_lag1_autocorrelation = Eigen::Vector3d::Zero();
   double white_band = 0.0;
   bool blocks_look_independent() const;
