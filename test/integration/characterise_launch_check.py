@@ -8,7 +8,7 @@ roslaunch started by this checker, fed an emulated bag, ended as a user ends it.
   identification runs (identify_period_s is 1 ms, so one is always under way once the first has
   published): the node abandons it, writes its report and exits within roslaunch's SIGINT timeout
   (no "escalating to SIGTERM"); the report is complete (every file, no staging folder left) and
-  covers at least the samples the node had published before the interrupt.
+  covers at least the samples the node's engine held before the interrupt.
 - Bag mode: `bag:= start:= duration:= rviz:=false` on roslaunch's own master (as from a terminal):
   the replay of the given part ends, the node writes its report of every sample of that part and
   the launch ends by itself with status 0 and no "REQUIRED process has died" banner.
@@ -29,7 +29,11 @@ import rosbag
 import rospy
 import rostest
 import yaml
-from imu_lab.msg import AllanDeviation, NoiseParameters
+from diagnostic_msgs.msg import DiagnosticArray
+
+# The package's own message classes are not imported: under `catkin_make run_tests` in a fresh
+# workspace the environment is the one cached when cmake first ran, before the Python messages
+# existed. The waits take any message; the sample count comes from /diagnostics.
 
 EVENT_LIMIT_S = 240.0
 BAG_DURATION_S = 1800.0
@@ -77,6 +81,16 @@ class Launch:
             self.process.wait()
 
 
+def engine_samples():
+    """The samples allan_monitor's engine holds, from its next diagnostics report."""
+    while True:
+        array = rospy.wait_for_message("/diagnostics", DiagnosticArray, timeout=EVENT_LIMIT_S)
+        for status in array.status:
+            for pair in status.values:
+                if pair.key.startswith("engine samples"):
+                    return int(pair.value)
+
+
 def free_port():
     with socket.socket() as probe:
         probe.bind(("localhost", 0))
@@ -120,7 +134,7 @@ class CharacteriseLaunch(unittest.TestCase):
             rospy.wait_for_service("/allan_monitor/write_report", timeout=EVENT_LIMIT_S)
             player = subprocess.Popen(["rosbag", "play", "--quiet", "--rate=20", self.bag],
                                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-            rospy.wait_for_message("/allan/gyro", AllanDeviation, timeout=EVENT_LIMIT_S)
+            rospy.wait_for_message("/allan/gyro", rospy.AnyMsg, timeout=EVENT_LIMIT_S)
 
             # The documented service, from a shell.
             call = subprocess.run(["rosservice", "call", "/allan_monitor/write_report"], capture_output=True,
@@ -130,8 +144,8 @@ class CharacteriseLaunch(unittest.TestCase):
             self.assert_complete_report(report, launch.output())
 
             # A periodic identification has finished; with a 1 ms period the next one is running.
-            rospy.wait_for_message("/allan/noise", NoiseParameters, timeout=EVENT_LIMIT_S)
-            published = rospy.wait_for_message("/allan/gyro", AllanDeviation, timeout=EVENT_LIMIT_S).samples
+            rospy.wait_for_message("/allan/noise", rospy.AnyMsg, timeout=EVENT_LIMIT_S)
+            counted = engine_samples()
             launch.interrupt()
             self.assertEqual(launch.wait(), 0, launch.output())
         finally:
@@ -143,7 +157,7 @@ class CharacteriseLaunch(unittest.TestCase):
         self.assert_clean_end(output)
         self.assertIn("periodic identification in progress was abandoned", output)
         summary = self.assert_complete_report(report, output)
-        self.assertGreaterEqual(summary["samples"], published)
+        self.assertGreaterEqual(summary["samples"], counted)
 
     def test_bag_part_replayed_then_the_launch_ends_by_itself(self):
         report = os.path.join(self.work, "bag_report")
