@@ -192,12 +192,6 @@ std::string format_noise_table(const std::vector<identify::TriadFit>& triads) {
   return table;
 }
 
-}  // namespace pipeline
-}  // namespace imu_lab
-
-namespace imu_lab {
-namespace pipeline {
-
 std::string format_kalibr_lines(const identify::KalibrImuNoise& noise) {
   struct Row {
     const char* key;

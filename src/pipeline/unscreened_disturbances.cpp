@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "imu_lab/common/format_number.h"
+#include "imu_lab/common/stamps.h"
 #include "imu_lab/pipeline/allan_samples.h"
 
 namespace imu_lab {
@@ -22,10 +23,6 @@ allan::LevelShiftScreenOptions level_shift_options() {
   options.channel_count = kAllanChannelCount;
   options.gap_factor = allan::StreamingOptions().gap_factor;
   return options;
-}
-
-double seconds_from(std::int64_t first_stamp_ns, std::int64_t stamp_ns) {
-  return 1e-9 * static_cast<double>(stamp_ns - first_stamp_ns);
 }
 
 }  // namespace
@@ -62,10 +59,10 @@ std::string unscreened_disturbance_note(const std::string& tool, const Unscreene
         if (std::abs(event.peak_sigma) > std::abs(largest->peak_sigma)) largest = &event;
       }
       text += " (first at " +
-              format_printf(seconds_from(impulses.first_stamp_ns, impulses.events.front().onset_stamp_ns), "%.1f") +
+              format_printf(seconds_between(impulses.first_stamp_ns, impulses.events.front().onset_stamp_ns), "%.1f") +
               " s from the start, largest " + format_printf(largest->peak_sigma, "%+.0f") + " scales in " +
               kAllanChannelNames[largest->peak_channel] + " at " +
-              format_printf(seconds_from(impulses.first_stamp_ns, largest->peak_stamp_ns), "%.1f") + " s)";
+              format_printf(seconds_between(impulses.first_stamp_ns, largest->peak_stamp_ns), "%.1f") + " s)";
     }
   }
   const allan::LevelShiftReport& shifts = found.level_shifts;
@@ -74,7 +71,7 @@ std::string unscreened_disturbance_note(const std::string& tool, const Unscreene
         std::string(impulses.event_count > 0 ? " and " : " ") + std::to_string(shifts.event_count) + " level shift(s)";
     if (!shifts.events.empty()) {
       const allan::LevelShiftEvent& first = shifts.events.front();
-      text += " (first at " + format_printf(seconds_from(impulses.first_stamp_ns, first.step_stamp_ns), "%.1f") +
+      text += " (first at " + format_printf(seconds_between(impulses.first_stamp_ns, first.step_stamp_ns), "%.1f") +
               " s, in " + kAllanChannelNames[first.peak_channel] + ")";
     }
   }

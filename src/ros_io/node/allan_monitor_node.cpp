@@ -239,9 +239,9 @@ void AllanMonitorNode::check_input_end() {
     input_had_publisher_ = true;
   } else if (input_had_publisher_ && !input_end_seen_) {
     input_end_seen_ = true;
-    end_launch_ = settings_.on_input_end == AllanMonitorSettings::InputEnd::kEndLaunch;
     ROS_INFO("allan_monitor: %s has no publisher left (the replay ended): writing the report and exiting%s",
-             input_subscriber_.getTopic().c_str(), end_launch_ ? ", then ending the launch" : "");
+             input_subscriber_.getTopic().c_str(),
+             settings_.on_input_end == AllanMonitorSettings::InputEnd::kEndLaunch ? ", then ending the launch" : "");
     request_stop();  // node_main.h: main() then calls finish()
   }
 }
@@ -357,7 +357,7 @@ void AllanMonitorNode::finish() {
   } catch (const std::exception& error) {
     ROS_WARN("allan_monitor: on shutdown: %s", error.what());
   }
-  if (end_launch_) {
+  if (input_end_seen_ && settings_.on_input_end == AllanMonitorSettings::InputEnd::kEndLaunch) {
     const std::string ended = end_parent_roslaunch();
     ROS_INFO("allan_monitor: %s", ended.c_str());
   }

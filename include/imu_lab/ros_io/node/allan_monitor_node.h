@@ -122,7 +122,6 @@ class AllanMonitorNode {
   std::atomic<bool> abandon_identification_{false};  // set by finish(): the thread stops at once
   bool input_had_publisher_ = false;
   bool input_end_seen_ = false;
-  bool end_launch_ = false;  // set when the input ended with on_input_end: end_launch
   diagnostic_updater::Updater diagnostics_;
   ros::WallTimer diagnostics_timer_;
 
